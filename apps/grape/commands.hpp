@@ -1,0 +1,31 @@
+// The commands of the `grape` tool. Each register_* adds a subcommand to the app; each
+// demo_* adds its section to `grape demo`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+
+namespace grape::tool {
+
+/// Where `grape demo` writes: the summary stream and the output folder.
+struct DemoContext {
+    std::ostream& out;
+    std::filesystem::path dir;  ///< created before the sections run
+};
+
+void register_path_commands(CLI::App& app);
+void register_ease_command(CLI::App& app);
+void demo_paths(const DemoContext& context);
+void demo_curves(const DemoContext& context);
+
+#ifdef GRAPE_TOOL_DYNAMICS
+void register_simulate_command(CLI::App& app);
+void demo_dynamics(const DemoContext& context);
+#endif
+
+void register_demo_command(CLI::App& app);
+
+}  // namespace grape::tool

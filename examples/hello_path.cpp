@@ -1,0 +1,2 @@
+#include <grape/path.hpp>
+int main() { return 0; }

@@ -1,0 +1,178 @@
+// grape — math: Vec2, Gauss–Legendre quadrature and a safeguarded scalar root finder.
+// Header-only templates so the integrand and the function inline; no allocation.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+
+namespace grape {
+
+inline constexpr double pi = 3.141592653589793238462643383279502884;
+
+/// A 2-D vector or point in world units (screen convention: y points down).
+struct Vec2 {
+    double x = 0.0;
+    double y = 0.0;
+
+    constexpr Vec2& operator+=(Vec2 o) noexcept { x += o.x; y += o.y; return *this; }
+    constexpr Vec2& operator-=(Vec2 o) noexcept { x -= o.x; y -= o.y; return *this; }
+    constexpr Vec2& operator*=(double s) noexcept { x *= s; y *= s; return *this; }
+    constexpr Vec2& operator/=(double s) noexcept { x /= s; y /= s; return *this; }
+    friend constexpr bool operator==(Vec2, Vec2) noexcept = default;
+};
+
+constexpr Vec2 operator+(Vec2 a, Vec2 b) noexcept { return {a.x + b.x, a.y + b.y}; }
+constexpr Vec2 operator-(Vec2 a, Vec2 b) noexcept { return {a.x - b.x, a.y - b.y}; }
+constexpr Vec2 operator-(Vec2 a) noexcept { return {-a.x, -a.y}; }
+constexpr Vec2 operator*(Vec2 a, double s) noexcept { return {a.x * s, a.y * s}; }
+constexpr Vec2 operator*(double s, Vec2 a) noexcept { return {a.x * s, a.y * s}; }
+constexpr Vec2 operator/(Vec2 a, double s) noexcept { return {a.x / s, a.y / s}; }
+
+/// Dot product.
+constexpr double dot(Vec2 a, Vec2 b) noexcept { return a.x * b.x + a.y * b.y; }
+/// z of the 3-D cross product: positive when b turns counter-clockwise from a (in y-up axes).
+constexpr double cross(Vec2 a, Vec2 b) noexcept { return a.x * b.y - a.y * b.x; }
+/// |a|², exact for exact inputs (no square root).
+constexpr double length_squared(Vec2 a) noexcept { return dot(a, a); }
+/// |a|, without overflow or underflow for huge or tiny components.
+inline double length(Vec2 a) noexcept { return std::hypot(a.x, a.y); }
+/// |a − b|.
+inline double distance(Vec2 a, Vec2 b) noexcept { return length(a - b); }
+/// a / |a|; the zero vector stays zero (no NaN).
+inline Vec2 normalized(Vec2 a) noexcept {
+    const double l = length(a);
+    return l > 0.0 ? a / l : Vec2{};
+}
+/// a turned a quarter turn: (−y, x).
+constexpr Vec2 perpendicular(Vec2 a) noexcept { return {-a.y, a.x}; }
+/// a + (b − a)·t; t outside [0, 1] extrapolates.
+constexpr Vec2 lerp(Vec2 a, Vec2 b, double t) noexcept { return a + (b - a) * t; }
+/// a + (b − a)·t for scalars.
+constexpr double lerp(double a, double b, double t) noexcept { return a + (b - a) * t; }
+/// |a − b| ≤ tolerance in both components.
+constexpr bool approx_equal(Vec2 a, Vec2 b, double tolerance = 1e-12) noexcept {
+    const Vec2 d = a - b;
+    return (d.x <= tolerance && -d.x <= tolerance) && (d.y <= tolerance && -d.y <= tolerance);
+}
+/// Both components finite (not NaN, not ±inf).
+inline bool is_finite(Vec2 a) noexcept { return std::isfinite(a.x) && std::isfinite(a.y); }
+
+/// An axis-aligned box; `min` ≤ `max` componentwise once anything has been added.
+struct Bounds {
+    Vec2 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    Vec2 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+
+    /// Grows the box to hold p.
+    constexpr void add(Vec2 p) noexcept {
+        min = {p.x < min.x ? p.x : min.x, p.y < min.y ? p.y : min.y};
+        max = {p.x > max.x ? p.x : max.x, p.y > max.y ? p.y : max.y};
+    }
+    /// Grows the box to hold b.
+    constexpr void add(const Bounds& b) noexcept { add(b.min); add(b.max); }
+    /// p inside or on the box, within tolerance.
+    constexpr bool contains(Vec2 p, double tolerance = 0.0) const noexcept {
+        return p.x >= min.x - tolerance && p.x <= max.x + tolerance && p.y >= min.y - tolerance &&
+               p.y <= max.y + tolerance;
+    }
+    constexpr Vec2 size() const noexcept { return max - min; }
+};
+
+namespace detail {
+// 10-point Gauss–Legendre rule on [−1, 1] (symmetric: the nodes ±x_i share weight w_i),
+// computed to 20 digits from the roots of P_10.
+inline constexpr std::array<double, 5> gl10_x{0.97390652851717172008, 0.86506336668898451073,
+                                              0.67940956829902440623, 0.43339539412924719080,
+                                              0.14887433898163121088};
+inline constexpr std::array<double, 5> gl10_w{0.066671344308688137594, 0.14945134915058059315,
+                                              0.21908636251598204400, 0.26926671930999635509,
+                                              0.29552422471475287017};
+}  // namespace detail
+
+/// ∫ f over [a, b] with one 10-point Gauss–Legendre rule: exact for polynomials of degree ≤ 19.
+template <class F>
+constexpr double gauss_legendre(F&& f, double a, double b) noexcept(noexcept(f(a))) {
+    const double half = 0.5 * (b - a);
+    const double mid = 0.5 * (a + b);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < detail::gl10_x.size(); ++i) {
+        const double dx = half * detail::gl10_x[i];
+        sum += detail::gl10_w[i] * (f(mid - dx) + f(mid + dx));
+    }
+    return sum * half;
+}
+
+/// ∫ f over [a, b], adaptive: an interval is accepted when one rule and the sum over its two
+/// halves agree within its share of `tolerance` (absolute), or at `max_depth` bisections.
+/// Allocation-free (recursion depth ≤ max_depth).
+template <class F>
+double integrate(F&& f, double a, double b, double tolerance = 1e-13, int max_depth = 30) noexcept(
+    noexcept(f(a))) {
+    struct Step {
+        F& f;
+        double operator()(double lo, double hi, double whole, double tol, int depth) const {
+            const double mid = 0.5 * (lo + hi);
+            const double left = gauss_legendre(f, lo, mid);
+            const double right = gauss_legendre(f, mid, hi);
+            const double both = left + right;
+            if (depth <= 0 || std::abs(both - whole) <= tol) return both;
+            return (*this)(lo, mid, left, 0.5 * tol, depth - 1) + (*this)(mid, hi, right, 0.5 * tol, depth - 1);
+        }
+    };
+    if (a == b) return 0.0;
+    return Step{f}(a, b, gauss_legendre(f, a, b), tolerance, max_depth);
+}
+
+/// Result of find_root.
+struct Root {
+    double x = 0.0;        ///< the root (best estimate)
+    int iterations = 0;    ///< Newton or bisection steps taken
+    bool converged = false;  ///< |bracket| ≤ tolerance or f(x) == 0 reached
+};
+
+/// Root of f in [lo, hi] where f(lo) and f(hi) have opposite signs (or one is zero).
+/// `fd(x)` returns {f(x), f'(x)}. Newton steps from `guess`, replaced by bisection whenever
+/// Newton would leave the bracket or shrink it too slowly, so it always converges.
+/// Stops when the bracket is narrower than `tolerance`. If the signs do not bracket a root,
+/// returns the end with the smaller |f| and converged = false.
+template <class FD>
+Root find_root(FD&& fd, double lo, double hi, double guess, double tolerance = 1e-15,
+               int max_iterations = 200) noexcept(noexcept(fd(lo))) {
+    auto [flo, dlo] = fd(lo);
+    auto [fhi, dhi] = fd(hi);
+    (void)dlo;
+    (void)dhi;
+    if (flo == 0.0) return {lo, 0, true};
+    if (fhi == 0.0) return {hi, 0, true};
+    if ((flo > 0.0) == (fhi > 0.0)) return {std::abs(flo) < std::abs(fhi) ? lo : hi, 0, false};
+    if (flo > 0.0) {  // orient so that f(lo) < 0 < f(hi)
+        std::swap(lo, hi);
+    }
+    double x = (guess > std::min(lo, hi) && guess < std::max(lo, hi)) ? guess : 0.5 * (lo + hi);
+    double step_before = std::abs(hi - lo);
+    double step = step_before;
+    for (int i = 1; i <= max_iterations; ++i) {
+        auto [fx, dfx] = fd(x);
+        if (fx == 0.0) return {x, i, true};
+        if (fx < 0.0) lo = x; else hi = x;
+        const double newton = x - fx / dfx;
+        const bool newton_inside = dfx != 0.0 && std::isfinite(newton) &&
+                                   (newton - lo) * (newton - hi) < 0.0;
+        if (newton_inside && std::abs(2.0 * fx) < std::abs(step_before * dfx)) {
+            step_before = step;
+            step = newton - x;
+            x = newton;
+        } else {
+            step_before = step;
+            step = 0.5 * (hi - lo);
+            x = lo + step;
+        }
+        if (std::abs(hi - lo) <= tolerance || std::abs(step) <= 0.5 * tolerance) return {x, i, true};
+    }
+    return {x, max_iterations, false};
+}
+
+}  // namespace grape

@@ -1,0 +1,265 @@
+// grape — paths: where an animation goes. A path maps u in [0, 1] to a point.
+//
+// `Path` is a cheap-to-copy handle to an immutable, shared shape: one path can drive any
+// number of animations and bead simulations at once. Each kind (LinearPath, CirclePath, ...)
+// is a `Path` whose constructor validates its arguments (throwing grape::Error) and which
+// adds accessors for its own parameters. Evaluation is noexcept and allocation-free.
+//
+//   grape::SpiralPath spiral({100, 100}, 200, 0);
+//   grape::Vec2 p = spiral.point(0.5);
+#pragma once
+
+#include <grape/math.hpp>
+
+#include <cstddef>
+#include <initializer_list>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace grape {
+
+namespace detail {
+class PathNode;  // the shape behind a Path (src/path/path_node.hpp)
+}
+
+/// Every kind of 2-D path.
+enum class PathKind {
+    linear,
+    circle,
+    spiral,
+    sine_wave,
+    quadratic_bezier,
+    cubic_bezier,
+    linear_spline,
+    cosine_spline,
+    hermite_spline,
+    catmull_rom_spline,
+    physics,
+    complex,
+    reparametrized,
+};
+
+/// The kind's name in snake_case ("cubic_bezier").
+std::string_view to_string(PathKind kind) noexcept;
+
+/// A 2-D path. Outside [0, 1] it extends along its end tangents:
+/// point(u) = point(0) + u·d1(0) for u < 0 and point(1) + (u − 1)·d1(1) for u > 1,
+/// so overshooting easing curves (back, elastic) carry motion past the ends.
+/// A default-constructed Path stays at the origin.
+class Path {
+public:
+    Path();
+
+    /// Position at parameter u.
+    Vec2 point(double u) const noexcept;
+    /// First derivative dx/du (analytic).
+    Vec2 d1(double u) const noexcept;
+    /// Second derivative d²x/du² (analytic).
+    Vec2 d2(double u) const noexcept;
+    /// Direction of travel at u in radians, atan2(d1.y, d1.x); 0 where the path stands still.
+    double heading(double u) const noexcept;
+
+    /// Arc length over u in [0, 1] (computed once at construction, to ~1e-13 relative).
+    double length() const noexcept;
+    /// Arc length from 0 to u, u clamped to [0, 1].
+    double length_at(double u) const noexcept;
+    /// The u in [0, 1] where length_at(u) == s (s clamped to [0, length()]).
+    double u_at_length(double s) const noexcept;
+
+    /// Axis-aligned box holding the path over [0, 1] (tight: from the analytic extremes
+    /// where the kind has them).
+    Bounds bounds() const noexcept;
+
+    /// A polyline from point(0) to point(1) that stays within `tolerance` of the path
+    /// (distance from every path point to the polyline), with few points.
+    /// Throws grape::Error if tolerance is not positive and finite.
+    std::vector<Vec2> flatten(double tolerance) const;
+
+    /// The same shape moving at constant speed: point(u) of the result lies at arc length
+    /// u·length() along this path (to 1e-9·length()), with consistent derivatives.
+    /// Works for every kind; reparametrizing a reparametrized path returns it unchanged.
+    Path reparametrized() const;
+
+    /// Which kind of path this is.
+    PathKind kind() const noexcept;
+
+    /// The shape, for modules that evaluate paths in bulk (anim, dynamics, render).
+    const detail::PathNode& node() const noexcept { return *node_; }
+
+    /// Same shape object (not a geometric comparison).
+    friend bool operator==(const Path& a, const Path& b) noexcept { return a.node_ == b.node_; }
+
+protected:
+    explicit Path(std::shared_ptr<const detail::PathNode> node) noexcept;
+    std::shared_ptr<const detail::PathNode> node_;
+};
+
+/// A straight segment from `start` to `end`; u is proportional to distance.
+class LinearPath : public Path {
+public:
+    LinearPath(Vec2 start, Vec2 end);
+    Vec2 start() const noexcept;
+    Vec2 end() const noexcept;
+};
+
+/// An arc of a circle: point = centre + radius·(cos θ, sin θ), θ from `start_angle` to
+/// `end_angle` radians. Either direction, and more than one turn when the angles are more
+/// than 2π apart. With y down, increasing angles turn clockwise on screen.
+class CirclePath : public Path {
+public:
+    CirclePath(Vec2 centre, double radius, double start_angle, double end_angle);
+    Vec2 centre() const noexcept;
+    double radius() const noexcept;
+    double start_angle() const noexcept;
+    double end_angle() const noexcept;
+};
+
+/// A circle whose radius goes linearly from `start_radius` to `end_radius` while the angle
+/// goes from `start_angle` to `end_angle` (default: one full turn from 0).
+class SpiralPath : public Path {
+public:
+    SpiralPath(Vec2 centre, double start_radius, double end_radius, double start_angle = 0.0,
+               double end_angle = 2.0 * pi);
+    Vec2 centre() const noexcept;
+    double start_radius() const noexcept;
+    double end_radius() const noexcept;
+    double start_angle() const noexcept;
+    double end_angle() const noexcept;
+};
+
+/// A sine wave along the segment start → end: `frequency` full waves over the segment,
+/// displaced by amplitude·sin(2π·frequency·u) along the segment's left-hand perpendicular.
+class SineWavePath : public Path {
+public:
+    SineWavePath(Vec2 start, Vec2 end, double frequency, double amplitude);
+    Vec2 start() const noexcept;
+    Vec2 end() const noexcept;
+    double frequency() const noexcept;
+    double amplitude() const noexcept;
+};
+
+/// Quadratic Bézier through p0 and p2 with control point p1. With `reparametrize`, the
+/// path is the arc-length reparametrization (constant speed), as the seed's flag did.
+class QuadraticBezierPath : public Path {
+public:
+    QuadraticBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, bool reparametrize = false);
+    /// Control point i in 0..2.
+    Vec2 control(std::size_t i) const noexcept;
+};
+
+/// Cubic Bézier through p0 and p3 with control points p1 and p2; `reparametrize` as above.
+class CubicBezierPath : public Path {
+public:
+    CubicBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, bool reparametrize = false);
+    /// Control point i in 0..3.
+    Vec2 control(std::size_t i) const noexcept;
+};
+
+/// Splines through n ≥ 2 points; u is spread evenly over the n − 1 segments.
+/// Points come as Vec2s or, as in the seed, as flat x, y pairs (an odd count is an error).
+class LinearSplinePath : public Path {
+public:
+    explicit LinearSplinePath(std::span<const Vec2> points);
+    explicit LinearSplinePath(std::span<const double> xy);
+    LinearSplinePath(std::initializer_list<double> xy) : LinearSplinePath(std::span<const double>(xy)) {}
+    std::span<const Vec2> points() const noexcept;
+};
+
+/// Cosine interpolation between successive points (zero velocity at every point).
+class CosineSplinePath : public Path {
+public:
+    explicit CosineSplinePath(std::span<const Vec2> points);
+    explicit CosineSplinePath(std::span<const double> xy);
+    CosineSplinePath(std::initializer_list<double> xy) : CosineSplinePath(std::span<const double>(xy)) {}
+    std::span<const Vec2> points() const noexcept;
+};
+
+/// Cubic Hermite spline through points with the given tangents (one per point, as d/du of a
+/// segment's local parameter in [0, 1]).
+class HermiteSplinePath : public Path {
+public:
+    HermiteSplinePath(std::span<const Vec2> points, std::span<const Vec2> tangents);
+    HermiteSplinePath(std::span<const double> xy, std::span<const double> tangent_xy);
+    std::span<const Vec2> points() const noexcept;
+    std::span<const Vec2> tangents() const noexcept;
+};
+
+/// Catmull–Rom parametrization: knot spacing |Δp|^α with α = 0, ½, 1.
+enum class CatmullRom { uniform, centripetal, chordal };
+
+/// Catmull–Rom spline through the points (end segments use mirrored phantom points).
+/// Centripetal never forms cusps or self-intersections within a segment.
+class CatmullRomSplinePath : public Path {
+public:
+    explicit CatmullRomSplinePath(std::span<const Vec2> points, CatmullRom type = CatmullRom::uniform);
+    explicit CatmullRomSplinePath(std::span<const double> xy, CatmullRom type = CatmullRom::uniform);
+    CatmullRomSplinePath(std::initializer_list<double> xy, CatmullRom type = CatmullRom::uniform)
+        : CatmullRomSplinePath(std::span<const double>(xy), type) {}
+    std::span<const Vec2> points() const noexcept;
+    CatmullRom type() const noexcept;
+};
+
+/// A projectile: position + velocity·t + ½·acceleration·t², t = u·seconds.
+class PhysicsPath : public Path {
+public:
+    PhysicsPath(Vec2 position, Vec2 velocity, Vec2 acceleration, double seconds);
+    Vec2 position() const noexcept;
+    Vec2 velocity() const noexcept;
+    Vec2 acceleration() const noexcept;
+    double seconds() const noexcept;
+};
+
+/// Several paths as one. Part i spans u in [cues[i], cues[i+1]) of the whole, the last part
+/// ends at 1. Cues start at 0, never decrease and stay in [0, 1]; a part whose span is empty
+/// is skipped. Complex paths are paths, so they nest.
+class ComplexPath : public Path {
+public:
+    ComplexPath(std::vector<Path> parts, std::vector<double> cues);
+    /// Cues from the parts' lengths, so one easing curve applies evenly over the whole.
+    static ComplexPath by_length(std::vector<Path> parts);
+    std::span<const Path> parts() const noexcept;
+    std::span<const double> cues() const noexcept;
+};
+
+/// SVG path data (`M L H V C S Q T A Z`, absolute and relative, implicit repeats, arcs by the
+/// SVG implementation notes) as a ComplexPath with cues set by length; y points down as in
+/// SVG. Throws grape::Error naming the character offset of a syntax error.
+ComplexPath parse_svg_path(std::string_view data);
+
+/// A scalar from `from` to `to`: value(u) = from + (to − from)·u, extended linearly outside [0, 1].
+class Path1D {
+public:
+    Path1D(double from, double to);
+    double value(double u) const noexcept { return from_ + (to_ - from_) * u; }
+    double d1(double) const noexcept { return to_ - from_; }
+    double from() const noexcept { return from_; }
+    double to() const noexcept { return to_; }
+
+private:
+    double from_;
+    double to_;
+};
+
+/// N numbers moving together through keyframes (N ≥ 1, ≥ 2 keyframes, u spread evenly over
+/// the segments, linear between keyframes): the path of a property animation.
+class PathND {
+public:
+    /// From `from` to `to` (same size).
+    PathND(std::span<const double> from, std::span<const double> to);
+    /// Through `keyframes`, each of `dimension` numbers, stored one after another.
+    PathND(std::size_t dimension, std::span<const double> keyframes);
+    std::size_t dimension() const noexcept { return dimension_; }
+    std::size_t keyframe_count() const noexcept { return keys_.size() / dimension_; }
+    /// Writes the dimension() values at u into out (out.size() ≥ dimension()).
+    void point(double u, std::span<double> out) const noexcept;
+    /// Writes d/du of the values at u into out.
+    void d1(double u, std::span<double> out) const noexcept;
+
+private:
+    std::size_t dimension_;
+    std::vector<double> keys_;
+};
+
+}  // namespace grape
