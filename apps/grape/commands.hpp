@@ -26,6 +26,11 @@ void register_simulate_command(CLI::App& app);
 void demo_dynamics(const DemoContext& context);
 #endif
 
+#ifdef GRAPE_TOOL_RENDER
+void register_render_command(CLI::App& app);
+void demo_pictures(const DemoContext& context);
+#endif
+
 void register_demo_command(CLI::App& app);
 
 }  // namespace grape::tool

@@ -17,6 +17,9 @@ void register_demo_command(CLI::App& app) {
 #ifdef GRAPE_TOOL_DYNAMICS
         demo_dynamics(context);
 #endif
+#ifdef GRAPE_TOOL_RENDER
+        demo_pictures(context);
+#endif
     });
 }
 

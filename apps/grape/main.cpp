@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
 #ifdef GRAPE_TOOL_DYNAMICS
     grape::tool::register_simulate_command(app);
 #endif
+#ifdef GRAPE_TOOL_RENDER
+    grape::tool::register_render_command(app);
+#endif
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
