@@ -28,6 +28,7 @@ class PathNode;  // the shape behind a Path (src/path/path_node.hpp)
 enum class PathKind {
     linear,
     circle,
+    elliptical_arc,
     spiral,
     sine_wave,
     quadratic_bezier,
@@ -112,6 +113,21 @@ public:
     CirclePath(Vec2 centre, double radius, double start_angle, double end_angle);
     Vec2 centre() const noexcept;
     double radius() const noexcept;
+    double start_angle() const noexcept;
+    double end_angle() const noexcept;
+};
+
+/// An arc of an ellipse with semi-axes `rx` and `ry` turned by `rotation` radians about
+/// `centre`: point = centre + R(rotation)·(rx·cos θ, ry·sin θ), θ from `start_angle` to
+/// `end_angle` (either direction, several turns allowed). SVG's `A` command becomes one.
+class EllipticalArcPath : public Path {
+public:
+    EllipticalArcPath(Vec2 centre, double rx, double ry, double rotation, double start_angle,
+                      double end_angle);
+    Vec2 centre() const noexcept;
+    double rx() const noexcept;
+    double ry() const noexcept;
+    double rotation() const noexcept;
     double start_angle() const noexcept;
     double end_angle() const noexcept;
 };
