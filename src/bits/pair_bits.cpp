@@ -1,0 +1,37 @@
+#include <grape/bits.hpp>
+#include <grape/error.hpp>
+
+#include <limits>
+#include <string>
+
+namespace grape {
+namespace {
+
+std::size_t pair_count_for(std::size_t n) {
+    if (n < 2) return 0;
+    // n(n−1)/2 computed as (even factor / 2) × other factor, checked against overflow.
+    const std::size_t a = n % 2 == 0 ? n / 2 : n;
+    const std::size_t b = n % 2 == 0 ? n - 1 : (n - 1) / 2;
+    if (a > (std::numeric_limits<std::size_t>::max() - BitVector::word_bits) / b) {
+        throw Error("PairBits: object_count " + std::to_string(n) + " is too large (n(n-1)/2 bits overflow)");
+    }
+    return a * b;
+}
+
+}  // namespace
+
+PairBits::PairBits(std::size_t object_count) : n_(object_count), bits_(pair_count_for(object_count)) {}
+
+std::size_t PairBits::index(std::size_t i, std::size_t j) const {
+    if (i >= n_ || j >= n_) {
+        throw Error("PairBits: index " + std::to_string(i >= n_ ? i : j) + " is out of range (object_count " +
+                    std::to_string(n_) + ")");
+    }
+    if (i == j) throw Error("PairBits: i and j are both " + std::to_string(i) + "; a pair needs two objects");
+    if (i > j) std::swap(i, j);
+    // i(2n − i − 3) is even (i odd makes 2n − i − 3 even), so the halving is exact; both
+    // factors are below 2n and the product is below 2·pair_count, which the constructor bounded.
+    return i * (2 * n_ - i - 3) / 2 + j - 1;
+}
+
+}  // namespace grape
