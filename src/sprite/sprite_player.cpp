@@ -1,2 +1,288 @@
-// placeholder until the module lands
-namespace grape {}
+#include <grape/error.hpp>
+#include <grape/sprite.hpp>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace grape {
+namespace {
+
+std::string number(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+
+// Frame counts beyond this would let 2n − 2 or position + delta overflow std::int64_t.
+constexpr std::size_t max_frame_count = std::size_t{1} << 52;
+
+// A slot whose function can be replaced (or removed) by the function itself while it runs:
+// the running copy is moved out first and put back only if nobody assigned the slot meanwhile.
+template <class F>
+struct Slot {
+    F fn;
+    std::uint64_t generation = 0;
+
+    void assign(F f) {
+        fn = std::move(f);
+        ++generation;
+    }
+    template <class... Args>
+    void fire(Args... args) {
+        if (!fn) return;
+        F running = std::move(fn);
+        fn = nullptr;
+        const std::uint64_t before = generation;
+        running(args...);
+        if (generation == before) fn = std::move(running);
+    }
+};
+
+}  // namespace
+
+struct SpritePlayer::Callbacks {
+    Slot<FrameCallback> frame;
+    Slot<CompleteCallback> complete;
+    Slot<LoopCallback> loop;
+};
+
+SpritePlayer::SpritePlayer(Playable& playable, const SpritePlayerDef& def) : playable_(&playable) {
+    const std::size_t n = playable.frame_count();
+    if (n == 0) throw Error("SpritePlayer: playable has no frames (frame_count() is 0)");
+    init(n, def);
+    playable_->show_frame(frame());
+}
+
+SpritePlayer::SpritePlayer(std::size_t frame_count, const SpritePlayerDef& def) {
+    if (frame_count == 0) throw Error("SpritePlayer: frame_count must be at least 1 (got 0)");
+    init(frame_count, def);
+}
+
+SpritePlayer::SpritePlayer(const SpritePlayer& other)
+    : position_(other.position_), frame_count_(other.frame_count_), whole_(other.whole_),
+      fraction_(other.fraction_), remainder_(other.remainder_), rate_(other.rate_), playable_(other.playable_),
+      mode_(other.mode_), playing_(other.playing_), finished_(other.finished_),
+      callbacks_(other.callbacks_ ? std::make_unique<Callbacks>(*other.callbacks_) : nullptr) {}
+
+SpritePlayer& SpritePlayer::operator=(const SpritePlayer& other) {
+    if (this != &other) {
+        SpritePlayer copy(other);
+        *this = std::move(copy);
+    }
+    return *this;
+}
+
+SpritePlayer::~SpritePlayer() = default;
+
+void SpritePlayer::init(std::size_t frame_count, const SpritePlayerDef& def) {
+    if (frame_count > max_frame_count) {
+        throw Error("SpritePlayer: frame_count " + std::to_string(frame_count) + " is too large (max 2^52)");
+    }
+    if (def.start_frame >= frame_count) {
+        throw Error("SpritePlayer: start_frame " + std::to_string(def.start_frame) +
+                    " is past the last frame (frame_count " + std::to_string(frame_count) + ")");
+    }
+    frame_count_ = static_cast<std::int64_t>(frame_count);
+    mode_ = def.mode;
+    set_rate(def.rate);
+    position_ = static_cast<std::int64_t>(def.start_frame);
+}
+
+std::int64_t SpritePlayer::period() const noexcept {
+    if (mode_ != PlayMode::ping_pong) return frame_count_;
+    return frame_count_ > 1 ? 2 * frame_count_ - 2 : 1;
+}
+
+std::size_t SpritePlayer::frame_at(std::int64_t position) const noexcept {
+    // The ping-pong cycle 0 … n−1 … 1 folds back onto the frames.
+    if (mode_ == PlayMode::ping_pong && position >= frame_count_) position = 2 * frame_count_ - 2 - position;
+    return static_cast<std::size_t>(position);
+}
+
+std::size_t SpritePlayer::frame() const noexcept { return frame_at(position_); }
+
+void SpritePlayer::set_rate(double rate) {
+    if (!std::isfinite(rate)) throw Error("SpritePlayer: rate must be finite (got " + number(rate) + ")");
+    // |rate| < n keeps every step's move within one frame range, so a single wrap suffices.
+    const double cap = std::nextafter(static_cast<double>(frame_count_), 0.0);
+    if (rate > cap) rate = cap;
+    if (rate < -cap) rate = -cap;
+    rate_ = rate;
+    const double whole = std::trunc(rate);
+    whole_ = static_cast<std::int64_t>(whole);
+    fraction_ = rate - whole;  // exact: both share the binade of rate or the fraction is exact
+}
+
+void SpritePlayer::set_mode(PlayMode mode) noexcept {
+    const std::size_t shown = frame();
+    mode_ = mode;
+    position_ = static_cast<std::int64_t>(shown);
+}
+
+void SpritePlayer::set_frame(std::size_t k) {
+    if (k >= frame_count()) {
+        throw Error("SpritePlayer::set_frame: k " + std::to_string(k) + " is past the last frame (frame_count " +
+                    std::to_string(frame_count_) + ")");
+    }
+    const std::size_t shown = frame();
+    position_ = static_cast<std::int64_t>(k);
+    remainder_ = 0.0;
+    finished_ = false;
+    if (playable_ && shown != k) playable_->show_frame(k);
+}
+
+void SpritePlayer::play() noexcept {
+    if (finished_) {
+        finished_ = false;
+        remainder_ = 0.0;
+        const std::size_t shown = frame();
+        position_ = rate_ < 0.0 ? frame_count_ - 1 : 0;
+        if (playable_ && shown != frame()) playable_->show_frame(frame());
+    }
+    playing_ = true;
+}
+
+void SpritePlayer::set_playable(Playable& playable) {
+    const std::size_t n = playable.frame_count();
+    if (n == 0) throw Error("SpritePlayer::set_playable: playable has no frames (frame_count() is 0)");
+    if (n > max_frame_count) {
+        throw Error("SpritePlayer::set_playable: frame_count " + std::to_string(n) + " is too large (max 2^52)");
+    }
+    const std::size_t shown = frame() < n ? frame() : n - 1;
+    playable_ = &playable;
+    frame_count_ = static_cast<std::int64_t>(n);
+    position_ = static_cast<std::int64_t>(shown);
+    set_rate(rate_);  // re-apply the cap for the new frame count
+    playable_->show_frame(shown);
+}
+
+SpritePlayer::Callbacks& SpritePlayer::callbacks() {
+    if (!callbacks_) callbacks_ = std::make_unique<Callbacks>();
+    return *callbacks_;
+}
+
+void SpritePlayer::on_frame(FrameCallback callback) { callbacks().frame.assign(std::move(callback)); }
+void SpritePlayer::on_complete(CompleteCallback callback) { callbacks().complete.assign(std::move(callback)); }
+void SpritePlayer::on_loop(LoopCallback callback) { callbacks().loop.assign(std::move(callback)); }
+
+// The seed's step: take the integer part of the rate, accumulate the fraction, carry ±1 when
+// the remainder reaches ±1. Additions and comparisons only.
+void SpritePlayer::advance() noexcept {
+    if (!playing_) return;
+    std::int64_t delta = whole_;
+    remainder_ += fraction_;
+    if (remainder_ >= 1.0) {
+        remainder_ -= 1.0;
+        ++delta;
+    } else if (remainder_ <= -1.0) {
+        remainder_ += 1.0;
+        --delta;
+    }
+    if (delta != 0) move_by(delta, 0);
+}
+
+void SpritePlayer::advance(double dt, double fps) {
+    if (!(std::isfinite(dt) && dt >= 0.0)) {
+        throw Error("SpritePlayer::advance: dt must be finite and >= 0 seconds (got " + number(dt) + ")");
+    }
+    if (!(std::isfinite(fps) && fps > 0.0)) {
+        throw Error("SpritePlayer::advance: fps must be finite and > 0 (got " + number(fps) + ")");
+    }
+    const double frames = rate_ * fps * dt;
+    if (!std::isfinite(frames)) {
+        throw Error("SpritePlayer::advance: rate*fps*dt overflows (rate " + number(rate_) + ", fps " + number(fps) +
+                    ", dt " + number(dt) + ")");
+    }
+    if (!playing_) return;
+    const double whole = std::trunc(frames);
+    remainder_ += frames - whole;  // the same bookkeeping as advance(): exact fraction, carry at ±1
+    double total = whole;
+    if (remainder_ >= 1.0) {
+        remainder_ -= 1.0;
+        total += 1.0;
+    } else if (remainder_ <= -1.0) {
+        remainder_ += 1.0;
+        total -= 1.0;
+    }
+    if (total == 0.0) return;
+    const double p = static_cast<double>(period());
+    if (std::fabs(total) <= p) {
+        move_by(static_cast<std::int64_t>(total), 0);
+    } else if (mode_ == PlayMode::once) {
+        move_by(total > 0.0 ? frame_count_ : -frame_count_, 0);  // past the end either way
+    } else {
+        // A long time step: whole cycles are dropped (fmod is exact) and counted for on_loop.
+        const double cycles = std::trunc(std::fabs(total) / p);
+        const double rest = std::fmod(total, p);
+        const auto extra = cycles >= static_cast<double>(std::numeric_limits<std::size_t>::max() / 2)
+                               ? std::numeric_limits<std::size_t>::max() / 2
+                               : static_cast<std::size_t>(cycles);
+        move_by(static_cast<std::int64_t>(rest), extra);
+    }
+}
+
+// Moves by delta positions (|delta| ≤ period, so one wrap suffices) and reports what happened.
+void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles) noexcept {
+    const std::size_t shown = frame();
+    const std::int64_t direction = delta >= 0 ? 1 : -1;
+    std::int64_t next = position_ + delta;
+    if (mode_ == PlayMode::once) {
+        bool done = false;
+        if (next >= frame_count_) {
+            next = frame_count_ - 1;
+            done = true;
+        } else if (next < 0) {
+            next = 0;
+            done = true;
+        }
+        const std::int64_t steps = next >= position_ ? next - position_ : position_ - next;
+        position_ = next;
+        if (done) {
+            playing_ = false;
+            finished_ = true;
+            remainder_ = 0.0;
+        }
+        if (playable_ && frame() != shown) playable_->show_frame(frame());
+        if (callbacks_) report(next, steps, direction, 0, done);
+        return;
+    }
+    const std::int64_t p = period();
+    std::size_t cycles = extra_cycles;
+    if (next >= p) {
+        next -= p;
+        ++cycles;
+    } else if (next < 0) {
+        next += p;
+        ++cycles;
+    }
+    position_ = next;
+    if (playable_ && frame() != shown) playable_->show_frame(frame());
+    if (callbacks_) {
+        const std::int64_t moved = delta >= 0 ? delta : -delta;
+        report(next, extra_cycles > 0 || moved > p ? p : moved, direction, cycles, false);
+    }
+}
+
+void SpritePlayer::report(std::int64_t target, std::int64_t steps, std::int64_t direction, std::size_t cycles,
+                          bool completed) noexcept {
+    Callbacks& cb = *callbacks_;
+    if (cb.frame.fn && steps > 0) {
+        // The positions entered, in order of travel: target − direction·(steps − 1) … target.
+        const std::int64_t p = mode_ == PlayMode::once ? frame_count_ : period();
+        for (std::int64_t k = steps - 1; k >= 0; --k) {
+            std::int64_t q = target - direction * k;
+            if (q < 0) {
+                q += p;
+            } else if (q >= p) {
+                q -= p;
+            }
+            cb.frame.fire(frame_at(q));
+        }
+    }
+    if (cycles > 0) cb.loop.fire(cycles);
+    if (completed) cb.complete.fire();
+}
+
+}  // namespace grape
