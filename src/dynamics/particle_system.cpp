@@ -1,2 +1,330 @@
-// placeholder until the module lands
-namespace grape {}
+// ParticleSystem: particles, force generators, constraints and the step.
+#include "witkin.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace grape {
+
+namespace {
+
+std::string num(double value) {
+    std::ostringstream out;
+    out.precision(17);
+    out << value;
+    return out.str();
+}
+
+bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+void validate(const DriftDef& d) {
+    if (!(d.omega_dt > 0.0) || !std::isfinite(d.omega_dt))
+        throw Error("DriftDef: omega_dt must be positive and finite (got " + num(d.omega_dt) + ")");
+    if (d.stiffness && (!(*d.stiffness >= 0.0) || !std::isfinite(*d.stiffness)))
+        throw Error("DriftDef: stiffness must be finite and ≥ 0 (got " + num(*d.stiffness) + ")");
+    if (d.damping && (!(*d.damping >= 0.0) || !std::isfinite(*d.damping)))
+        throw Error("DriftDef: damping must be finite and ≥ 0 (got " + num(*d.damping) + ")");
+    if (d.projection_iterations < 1)
+        throw Error("DriftDef: projection_iterations must be at least 1 (got " +
+                    std::to_string(d.projection_iterations) + ")");
+    if (!(d.projection_tolerance >= 0.0) || !std::isfinite(d.projection_tolerance))
+        throw Error("DriftDef: projection_tolerance must be finite and ≥ 0 (got " + num(d.projection_tolerance) + ")");
+}
+
+}  // namespace
+
+std::string_view to_string(DriftControl drift) noexcept {
+    switch (drift) {
+    case DriftControl::none: return "none";
+    case DriftControl::baumgarte: return "baumgarte";
+    case DriftControl::projection: return "projection";
+    }
+    return "unknown";
+}
+
+DriftControl drift_control_from_string(std::string_view name) {
+    for (DriftControl d : {DriftControl::none, DriftControl::baumgarte, DriftControl::projection})
+        if (name == to_string(d)) return d;
+    throw Error("drift control: unknown name '" + std::string(name) + "' (expected none, baumgarte or projection)");
+}
+
+std::string_view to_string(SolveStatus status) noexcept {
+    switch (status) {
+    case SolveStatus::ok: return "ok";
+    case SolveStatus::singular: return "singular";
+    case SolveStatus::not_converged: return "not_converged";
+    }
+    return "unknown";
+}
+
+ImplicitCurve::ImplicitCurve(std::function<CurveSample(Vec2)> evaluate) : evaluate_(std::move(evaluate)) {
+    if (!evaluate_) throw Error("ImplicitCurve: evaluate must be a callable (got an empty function)");
+}
+
+ParticleSystem::ParticleSystem(ParticleSystemDef def)
+    : def_(def), stepper_(def.integrator, def.rk45), solver_(std::make_unique<detail::SolverWorkspace>()) {
+    validate(def.drift);
+    if (!(def.solver.cg_tolerance > 0.0) || !std::isfinite(def.solver.cg_tolerance))
+        throw Error("SolverDef: cg_tolerance must be positive and finite (got " + num(def.solver.cg_tolerance) + ")");
+    if (def.solver.cg_max_iterations < 0)
+        throw Error("SolverDef: cg_max_iterations must be ≥ 0 (got " + std::to_string(def.solver.cg_max_iterations) + ")");
+}
+
+ParticleSystem::~ParticleSystem() = default;
+ParticleSystem::ParticleSystem(ParticleSystem&&) noexcept = default;
+ParticleSystem& ParticleSystem::operator=(ParticleSystem&&) noexcept = default;
+
+ParticleId ParticleSystem::add_particle(const ParticleDef& def) {
+    if (!finite(def.position))
+        throw Error("add_particle: position must be finite (got " + num(def.position.x) + ", " + num(def.position.y) + ")");
+    if (!finite(def.velocity))
+        throw Error("add_particle: velocity must be finite (got " + num(def.velocity.x) + ", " + num(def.velocity.y) + ")");
+    if (!(def.mass > 0.0))
+        throw Error("add_particle: mass must be positive, or infinity to pin (got " + num(def.mass) + ")");
+    const bool pinned = std::isinf(def.mass);
+    positions_.push_back(def.position);
+    velocities_.push_back(pinned ? Vec2{} : def.velocity);
+    inverse_masses_.push_back(pinned ? 0.0 : 1.0 / def.mass);
+    forces_.push_back({});
+    exerted_.push_back({});
+    constraint_forces_.push_back({});
+    solver_->dirty = true;
+    return {static_cast<std::uint32_t>(positions_.size() - 1)};
+}
+
+std::uint32_t ParticleSystem::checked(ParticleId id, std::string_view where) const {
+    if (id.index >= positions_.size())
+        throw Error(std::string(where) + ": particle " + std::to_string(id.index) + " does not exist (" +
+                    std::to_string(positions_.size()) + " particles)");
+    return id.index;
+}
+
+Vec2 ParticleSystem::position(ParticleId id) const { return positions_[checked(id, "position")]; }
+Vec2 ParticleSystem::velocity(ParticleId id) const { return velocities_[checked(id, "velocity")]; }
+double ParticleSystem::mass(ParticleId id) const {
+    const double w = inverse_masses_[checked(id, "mass")];
+    return w > 0.0 ? 1.0 / w : std::numeric_limits<double>::infinity();
+}
+
+void ParticleSystem::set_position(ParticleId id, Vec2 position) {
+    const auto i = checked(id, "set_position");
+    if (!finite(position)) throw Error("set_position: position must be finite");
+    positions_[i] = position;
+}
+
+void ParticleSystem::set_velocity(ParticleId id, Vec2 velocity) {
+    const auto i = checked(id, "set_velocity");
+    if (!finite(velocity)) throw Error("set_velocity: velocity must be finite");
+    if (inverse_masses_[i] > 0.0) velocities_[i] = velocity;
+}
+
+void ParticleSystem::exert_force(ParticleId id, Vec2 force) {
+    const auto i = checked(id, "exert_force");
+    if (!finite(force)) throw Error("exert_force: force must be finite (got " + num(force.x) + ", " + num(force.y) + ")");
+    exerted_[i] += force;
+}
+
+void ParticleSystem::add_gravity(Vec2 g) {
+    if (!finite(g)) throw Error("add_gravity: g must be finite (got " + num(g.x) + ", " + num(g.y) + ")");
+    generators_.push_back({GeneratorKind::gravity, static_cast<std::uint32_t>(gravities_.size())});
+    gravities_.push_back({g});
+}
+
+void ParticleSystem::add_drag(double k) {
+    if (!(k >= 0.0) || !std::isfinite(k)) throw Error("add_drag: k must be finite and ≥ 0 (got " + num(k) + ")");
+    generators_.push_back({GeneratorKind::drag, static_cast<std::uint32_t>(drags_.size())});
+    drags_.push_back({k});
+}
+
+void ParticleSystem::add_spring(ParticleId a, ParticleId b, const SpringDef& def) {
+    const auto ia = checked(a, "add_spring"), ib = checked(b, "add_spring");
+    if (ia == ib) throw Error("add_spring: a and b must be different particles (both " + std::to_string(ia) + ")");
+    if (!(def.rest_length >= 0.0) || !std::isfinite(def.rest_length))
+        throw Error("add_spring: rest_length must be finite and ≥ 0 (got " + num(def.rest_length) + ")");
+    if (!(def.stiffness >= 0.0) || !std::isfinite(def.stiffness))
+        throw Error("add_spring: stiffness must be finite and ≥ 0 (got " + num(def.stiffness) + ")");
+    if (!(def.damping >= 0.0) || !std::isfinite(def.damping))
+        throw Error("add_spring: damping must be finite and ≥ 0 (got " + num(def.damping) + ")");
+    generators_.push_back({GeneratorKind::spring, static_cast<std::uint32_t>(springs_.size())});
+    springs_.push_back({ia, ib, def});
+}
+
+void ParticleSystem::add_force(ForceFunction force, PotentialFunction potential) {
+    if (!force) throw Error("add_force: force must be a callable (got an empty function)");
+    generators_.push_back({GeneratorKind::user, static_cast<std::uint32_t>(user_forces_.size())});
+    user_forces_.push_back({std::move(force), std::move(potential)});
+}
+
+ConstraintId ParticleSystem::push_constraint(const ConstraintRecord& record) {
+    constraints_.push_back(record);
+    solver_->dirty = true;
+    return {static_cast<std::uint32_t>(constraints_.size() - 1)};
+}
+
+ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b, double length) {
+    const auto ia = checked(a, "add_distance"), ib = checked(b, "add_distance");
+    if (ia == ib) throw Error("add_distance: a and b must be different particles (both " + std::to_string(ia) + ")");
+    if (!(length > 0.0) || !std::isfinite(length))
+        throw Error("add_distance: length must be positive and finite (got " + num(length) + ")");
+    return push_constraint({ConstraintKind::distance, ia, ib, {}, length, 0});
+}
+
+ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b) {
+    const auto ia = checked(a, "add_distance"), ib = checked(b, "add_distance");
+    return add_distance(a, b, distance(positions_[ia], positions_[ib]));
+}
+
+ConstraintId ParticleSystem::add_anchor(ParticleId a, Vec2 anchor, double length) {
+    const auto ia = checked(a, "add_anchor");
+    if (!finite(anchor)) throw Error("add_anchor: anchor must be finite (got " + num(anchor.x) + ", " + num(anchor.y) + ")");
+    if (!(length > 0.0) || !std::isfinite(length))
+        throw Error("add_anchor: length must be positive and finite (got " + num(length) + ")");
+    return push_constraint({ConstraintKind::anchor, ia, 0, anchor, length, 0});
+}
+
+ConstraintId ParticleSystem::add_fixed_point(ParticleId a, Vec2 point) {
+    const auto ia = checked(a, "add_fixed_point");
+    if (!finite(point)) throw Error("add_fixed_point: point must be finite (got " + num(point.x) + ", " + num(point.y) + ")");
+    return push_constraint({ConstraintKind::fixed_point, ia, 0, point, 0.0, 0});
+}
+
+ConstraintId ParticleSystem::add_curve(ParticleId a, ImplicitCurve curve) {
+    const auto ia = checked(a, "add_curve");
+    curves_.push_back(std::move(curve));
+    return push_constraint({ConstraintKind::curve, ia, 0, {}, 0.0, static_cast<std::uint32_t>(curves_.size() - 1)});
+}
+
+ConstraintId ParticleSystem::add_constraint(UserConstraint constraint) {
+    if (constraint.particles.empty()) throw Error("add_constraint: particles must not be empty");
+    for (ParticleId p : constraint.particles) checked(p, "add_constraint");
+    if (!constraint.evaluate) throw Error("add_constraint: evaluate must be a callable (got an empty function)");
+    users_.push_back(std::move(constraint));
+    return push_constraint({ConstraintKind::user, 0, 0, {}, 0.0, static_cast<std::uint32_t>(users_.size() - 1)});
+}
+
+void ParticleSystem::set_drift(const DriftDef& drift) {
+    validate(drift);
+    def_.drift = drift;
+}
+
+void ParticleSystem::set_integrator(Integrator integrator) {
+    def_.integrator = integrator;
+    stepper_ = Stepper(integrator, def_.rk45);
+}
+
+void ParticleSystem::apply_forces(double t, std::span<const Vec2> x, std::span<const Vec2> v) noexcept {
+    std::copy(exerted_.begin(), exerted_.end(), forces_.begin());
+    for (const Generator& g : generators_) {
+        switch (g.kind) {
+        case GeneratorKind::gravity: {
+            const Vec2 acc = gravities_[g.index].g;
+            for (std::size_t p = 0; p < forces_.size(); ++p)
+                if (inverse_masses_[p] > 0.0) forces_[p] += acc / inverse_masses_[p];
+            break;
+        }
+        case GeneratorKind::drag: {
+            const double k = drags_[g.index].k;
+            for (std::size_t p = 0; p < forces_.size(); ++p) forces_[p] -= k * v[p];
+            break;
+        }
+        case GeneratorKind::spring: {
+            const Spring& s = springs_[g.index];
+            const Vec2 d = x[s.b] - x[s.a];
+            const double len = length(d);
+            if (len > 0.0) {
+                const Vec2 n = d / len;
+                const double f = s.def.stiffness * (len - s.def.rest_length) + s.def.damping * dot(v[s.b] - v[s.a], n);
+                forces_[s.a] += f * n;
+                forces_[s.b] -= f * n;
+            }
+            break;
+        }
+        case GeneratorKind::user:
+            user_forces_[g.index].force(ForceContext{t, x, v, inverse_masses_, forces_});
+            break;
+        }
+    }
+}
+
+StepReport ParticleSystem::step(double dt) {
+    if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("step: dt must be positive and finite (got " + num(dt) + ")");
+    auto& s = *solver_;
+    s.prepare(*this, dt);
+    const std::span<double> q(reinterpret_cast<double*>(positions_.data()), 2 * positions_.size());
+    const std::span<double> v(reinterpret_cast<double*>(velocities_.data()), 2 * velocities_.size());
+    const StepStats stats = stepper_.step(s, time_, q, v, dt);
+    time_ += dt;
+    StepReport report;
+    report.evaluations = s.evaluations;
+    report.substeps = stats.substeps;
+    report.rejected = stats.rejected;
+    if (def_.drift.method == DriftControl::projection) report.projection_iterations = s.project(positions_, velocities_);
+    report.status = s.worst;
+    report.cg_iterations = s.cg_iterations;
+    std::fill(exerted_.begin(), exerted_.end(), Vec2{});
+    return report;
+}
+
+SolveStatus ParticleSystem::evaluate(std::span<Vec2> accelerations) {
+    auto& s = *solver_;
+    s.prepare(*this, 0.0);
+    if (accelerations.size() < positions_.size())
+        throw Error("evaluate: accelerations must hold one entry per particle (got " +
+                    std::to_string(accelerations.size()) + " for " + std::to_string(positions_.size()) + ")");
+    const std::span<const double> q(reinterpret_cast<const double*>(positions_.data()), 2 * positions_.size());
+    const std::span<const double> v(reinterpret_cast<const double*>(velocities_.data()), 2 * velocities_.size());
+    s.acceleration(time_, q, v, {reinterpret_cast<double*>(accelerations.data()), 2 * positions_.size()});
+    return s.worst;
+}
+
+double ParticleSystem::kinetic_energy() const noexcept {
+    double e = 0.0;
+    for (std::size_t p = 0; p < positions_.size(); ++p)
+        if (inverse_masses_[p] > 0.0) e += 0.5 * length_squared(velocities_[p]) / inverse_masses_[p];
+    return e;
+}
+
+double ParticleSystem::potential_energy() const {
+    double e = 0.0;
+    for (const Gravity& g : gravities_)
+        for (std::size_t p = 0; p < positions_.size(); ++p)
+            if (inverse_masses_[p] > 0.0) e -= dot(g.g, positions_[p]) / inverse_masses_[p];
+    for (const Spring& s : springs_) {
+        const double stretch = distance(positions_[s.a], positions_[s.b]) - s.def.rest_length;
+        e += 0.5 * s.def.stiffness * stretch * stretch;
+    }
+    for (const UserForce& u : user_forces_)
+        if (u.potential) e += u.potential(positions_);
+    return e;
+}
+
+std::vector<ConstraintResidual> ParticleSystem::residuals() const {
+    auto& s = *solver_;
+    s.owner = const_cast<ParticleSystem*>(this);  // the workspace is scratch; the state is not touched
+    if (s.dirty) s.build_topology();
+    s.evaluate_rows(positions_, velocities_);
+    std::vector<ConstraintResidual> out(constraints_.size());
+    for (std::uint32_t r = 0; r < s.rows; ++r) {
+        auto& o = out[s.row_constraint[r]];
+        const double value = std::abs(s.c[r]);
+        const double g = std::sqrt(s.gradient_norm2[r]);
+        const double d = g > 0.0 ? value / g : (value == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+        o.value = std::max(o.value, value);
+        o.rate = std::max(o.rate, std::abs(s.c_dot[r]));
+        o.distance = std::max(o.distance, d);
+    }
+    return out;
+}
+
+ConstraintResidual ParticleSystem::max_residual() const {
+    ConstraintResidual worst;
+    for (const auto& r : residuals()) {
+        worst.value = std::max(worst.value, r.value);
+        worst.rate = std::max(worst.rate, r.rate);
+        worst.distance = std::max(worst.distance, r.distance);
+    }
+    return worst;
+}
+
+}  // namespace grape

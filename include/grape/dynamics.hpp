@@ -1,0 +1,599 @@
+// grape — dynamics: particles, forces, integrators, Witkin constraints, drift control and
+// beads on any path.
+//
+// Two ways to keep a particle on a curve, as in the seed's parabola x² + 100y = 0:
+//  * implicit (Witkin): a ParticleSystem with a constraint C(q) = 0. Each evaluation solves
+//    J W Jᵀ λ = −J̇q̇ − J W Q − ks·C − kd·Ċ and applies the constraint force Jᵀλ, which does
+//    no work along any legal velocity. Any number of particles and constraints, solved
+//    together (dense direct for small systems, sparse for large ones).
+//  * generalized coordinates (Lagrange): a Bead with one coordinate u on a parametric curve
+//    x(u) (any grape::Path), q̈ = (x′·F/m − (x′·x″) q̇²)/|x′|². On the curve by construction.
+//
+// The seed's closed-form constraint force for the parabola,
+//   Fc.y = (−50 m vx² − 100 x Fext.x − 2500 Fext.y)/(x² + 2500),  Fc.x = Fc.y·x/50,
+// has the wrong coefficient on Fext.x: Jᵀλ (and the seed's own no-work argument) gives
+// −50·x·Fext.x. With gravity alone the two agree; with any sideways force the seed's force
+// leaves C̈ = −2·x·Fext.x/m and pushes the bead off the curve. The general solver below gives
+// the corrected force (tests/test_dynamics.cpp checks both).
+//
+// Units: any consistent set (the seed uses pixels, seconds, mass 1, y down, g = (0, +g)).
+//
+//   grape::ParticleSystem system({.integrator = grape::Integrator::rk4});
+//   auto bob = system.add_particle({.position = {100, 0}});
+//   system.add_gravity({0, 500});
+//   system.add_anchor(bob, {0, 0}, 100);       // a pendulum of length 100
+//   for (int i = 0; i < 60; ++i) system.step(1.0 / 60);
+#pragma once
+
+#include <grape/error.hpp>
+#include <grape/math.hpp>
+#include <grape/path.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace grape {
+
+// ---------------------------------------------------------------------------------------
+// Forward-mode automatic differentiation in two variables (value, gradient, Hessian)
+// ---------------------------------------------------------------------------------------
+
+/// A number carrying its gradient and Hessian with respect to (x, y): write an implicit curve
+/// once as a template `C(x, y)` and get ∇C and the Hessian exactly (no finite differences).
+struct Jet2 {
+    double v = 0.0;    ///< value
+    double gx = 0.0;   ///< ∂/∂x
+    double gy = 0.0;   ///< ∂/∂y
+    double hxx = 0.0;  ///< ∂²/∂x²
+    double hxy = 0.0;  ///< ∂²/∂x∂y
+    double hyy = 0.0;  ///< ∂²/∂y²
+
+    constexpr Jet2() noexcept = default;
+    /// A constant (zero derivatives).
+    constexpr Jet2(double value) noexcept : v(value) {}  // NOLINT: implicit on purpose
+    constexpr Jet2(double value, double dx, double dy, double dxx = 0.0, double dxy = 0.0,
+                   double dyy = 0.0) noexcept
+        : v(value), gx(dx), gy(dy), hxx(dxx), hxy(dxy), hyy(dyy) {}
+    /// The independent variable x at `value`.
+    static constexpr Jet2 x(double value) noexcept { return {value, 1.0, 0.0}; }
+    /// The independent variable y at `value`.
+    static constexpr Jet2 y(double value) noexcept { return {value, 0.0, 1.0}; }
+};
+
+namespace detail {
+// f(a) by the chain rule, given f, f′ and f″ at a.v: ∇f = f′∇a, H f = f″ ∇a∇aᵀ + f′ H a.
+constexpr Jet2 chain(const Jet2& a, double f, double f1, double f2) noexcept {
+    return {f,
+            f1 * a.gx,
+            f1 * a.gy,
+            f2 * a.gx * a.gx + f1 * a.hxx,
+            f2 * a.gx * a.gy + f1 * a.hxy,
+            f2 * a.gy * a.gy + f1 * a.hyy};
+}
+}  // namespace detail
+
+constexpr Jet2 operator+(const Jet2& a, const Jet2& b) noexcept {
+    return {a.v + b.v, a.gx + b.gx, a.gy + b.gy, a.hxx + b.hxx, a.hxy + b.hxy, a.hyy + b.hyy};
+}
+constexpr Jet2 operator-(const Jet2& a, const Jet2& b) noexcept {
+    return {a.v - b.v, a.gx - b.gx, a.gy - b.gy, a.hxx - b.hxx, a.hxy - b.hxy, a.hyy - b.hyy};
+}
+constexpr Jet2 operator-(const Jet2& a) noexcept { return {-a.v, -a.gx, -a.gy, -a.hxx, -a.hxy, -a.hyy}; }
+constexpr Jet2 operator*(const Jet2& a, const Jet2& b) noexcept {
+    return {a.v * b.v,
+            a.gx * b.v + a.v * b.gx,
+            a.gy * b.v + a.v * b.gy,
+            a.hxx * b.v + 2.0 * a.gx * b.gx + a.v * b.hxx,
+            a.hxy * b.v + a.gx * b.gy + a.gy * b.gx + a.v * b.hxy,
+            a.hyy * b.v + 2.0 * a.gy * b.gy + a.v * b.hyy};
+}
+constexpr Jet2 operator/(const Jet2& a, const Jet2& b) noexcept {
+    const double r = 1.0 / b.v;
+    return a * detail::chain(b, r, -r * r, 2.0 * r * r * r);
+}
+constexpr Jet2& operator+=(Jet2& a, const Jet2& b) noexcept { return a = a + b; }
+constexpr Jet2& operator-=(Jet2& a, const Jet2& b) noexcept { return a = a - b; }
+constexpr Jet2& operator*=(Jet2& a, const Jet2& b) noexcept { return a = a * b; }
+constexpr Jet2& operator/=(Jet2& a, const Jet2& b) noexcept { return a = a / b; }
+/// √a (a > 0 where differentiated).
+inline Jet2 sqrt(const Jet2& a) noexcept {
+    const double s = std::sqrt(a.v);
+    return detail::chain(a, s, 0.5 / s, -0.25 / (s * a.v));
+}
+inline Jet2 sin(const Jet2& a) noexcept {
+    const double s = std::sin(a.v), c = std::cos(a.v);
+    return detail::chain(a, s, c, -s);
+}
+inline Jet2 cos(const Jet2& a) noexcept {
+    const double s = std::sin(a.v), c = std::cos(a.v);
+    return detail::chain(a, c, -s, -c);
+}
+inline Jet2 exp(const Jet2& a) noexcept {
+    const double e = std::exp(a.v);
+    return detail::chain(a, e, e, e);
+}
+inline Jet2 log(const Jet2& a) noexcept { return detail::chain(a, std::log(a.v), 1.0 / a.v, -1.0 / (a.v * a.v)); }
+/// aⁿ for a real exponent (a > 0 unless n is a whole number).
+inline Jet2 pow(const Jet2& a, double n) noexcept {
+    const double p2 = std::pow(a.v, n - 2.0);
+    return detail::chain(a, p2 * a.v * a.v, n * p2 * a.v, n * (n - 1.0) * p2);
+}
+
+// ---------------------------------------------------------------------------------------
+// Implicit curves C(x, y) = 0
+// ---------------------------------------------------------------------------------------
+
+/// C and its first and second derivatives at one point.
+struct CurveSample {
+    double value = 0.0;  ///< C(x, y), in the curve's own units
+    Vec2 gradient{};       ///< ∇C
+    double hxx = 0.0;    ///< ∂²C/∂x²
+    double hxy = 0.0;    ///< ∂²C/∂x∂y
+    double hyy = 0.0;    ///< ∂²C/∂y²
+};
+
+/// A curve C(x, y) = 0 that a particle is held on. Value, gradient and Hessian come either
+/// from the user or from one templated function differentiated automatically (Jet2).
+class ImplicitCurve {
+public:
+    /// User-supplied value, gradient and Hessian. Throws grape::Error if `evaluate` is empty.
+    explicit ImplicitCurve(std::function<CurveSample(Vec2)> evaluate);
+
+    /// From C written once for any number type: `[](auto x, auto y) { return x*x + 100*y; }`.
+    /// Gradient and Hessian by forward-mode automatic differentiation.
+    template <class F>
+    static ImplicitCurve from_function(F function) {
+        return ImplicitCurve(std::function<CurveSample(Vec2)>([function](Vec2 p) {
+            const Jet2 c = function(Jet2::x(p.x), Jet2::y(p.y));
+            return CurveSample{c.v, {c.gx, c.gy}, c.hxx, c.hxy, c.hyy};
+        }));
+    }
+
+    /// C, ∇C and the Hessian at p.
+    CurveSample operator()(Vec2 p) const { return evaluate_(p); }
+
+private:
+    std::function<CurveSample(Vec2)> evaluate_{};
+};
+
+// ---------------------------------------------------------------------------------------
+// Integrators: one interface, state (q, q̇) and derivative (q̇, q̈)
+// ---------------------------------------------------------------------------------------
+
+/// The numerical integrators. Constraint forces are recomputed at every stage of each.
+/// With velocity-dependent accelerations (every curved constraint has one) semi-implicit
+/// Euler and velocity Verlet are not symplectic: do not expect bounded energy from them.
+enum class Integrator {
+    euler,                ///< explicit Euler, order 1, 1 evaluation
+    semi_implicit_euler,  ///< v += a·dt then q += v·dt, order 1, 1 evaluation
+    midpoint,             ///< explicit midpoint, order 2, 2 evaluations
+    rk4,                  ///< classical Runge–Kutta, order 4, 4 evaluations
+    velocity_verlet,      ///< Verlet with a predicted velocity for a(q, v), order 2, 2 evaluations
+    rk45,                 ///< Dormand–Prince 5(4), adaptive sub-steps with error control
+};
+
+/// The integrator's name in snake_case ("velocity_verlet").
+std::string_view to_string(Integrator integrator) noexcept;
+/// The integrator named `name` (as to_string gives it, or the short forms "symplectic" and
+/// "verlet"); throws grape::Error naming the unknown value.
+Integrator integrator_from_string(std::string_view name);
+/// The formal order of accuracy (rk45: 5 at a fixed step).
+int order(Integrator integrator) noexcept;
+
+/// Settings of the adaptive Dormand–Prince integrator.
+struct Rk45Def {
+    double tolerance = 1e-10;  ///< per sub-step error bound, relative and absolute (0: no control, fixed step)
+    double min_step = 1e-12;   ///< seconds; below it a sub-step is accepted anyway (and counted)
+    int max_substeps = 100000; ///< per step(), a guard against stiffness
+};
+
+/// A system q̈ = a(t, q, q̇) of n coordinates: the only view integrators have of a model.
+class SecondOrderSystem {
+public:
+    virtual ~SecondOrderSystem() = default;
+    /// Number of coordinates n.
+    virtual std::size_t size() const noexcept = 0;
+    /// Writes q̈ (n values) for time t, coordinates q and velocities v (n each).
+    virtual void acceleration(double t, std::span<const double> q, std::span<const double> v,
+                              std::span<double> a) noexcept = 0;
+};
+
+/// What one Stepper::step did.
+struct StepStats {
+    int evaluations = 0;  ///< calls of acceleration()
+    int substeps = 0;     ///< accepted sub-steps (1 for fixed-step integrators)
+    int rejected = 0;     ///< rk45 sub-steps rejected by error control
+    int forced = 0;       ///< rk45 sub-steps accepted at min_step despite the error
+};
+
+/// Advances any SecondOrderSystem by one step of the chosen integrator. Holds its scratch
+/// buffers (allocated when the system size first grows), so steps do not allocate.
+class Stepper {
+public:
+    explicit Stepper(Integrator integrator = Integrator::rk4, Rk45Def rk45 = {});
+    /// Advances (q, v) from t to t + dt in place. rk45 takes as many sub-steps as its
+    /// tolerance needs and remembers its last step size. dt must be positive.
+    StepStats step(SecondOrderSystem& system, double t, std::span<double> q, std::span<double> v, double dt);
+    Integrator integrator() const noexcept { return integrator_; }
+    const Rk45Def& rk45() const noexcept { return rk45_; }
+
+private:
+    Integrator integrator_{};
+    Rk45Def rk45_{};
+    double rk45_step_ = 0.0;  // last accepted rk45 step, 0 before the first
+    std::vector<double> buffer_{};
+};
+
+// ---------------------------------------------------------------------------------------
+// The particle system
+// ---------------------------------------------------------------------------------------
+
+/// A particle's handle: its index in creation order (particles are never removed).
+struct ParticleId {
+    std::uint32_t index = 0;
+    friend constexpr bool operator==(ParticleId, ParticleId) noexcept = default;
+};
+
+/// A constraint's handle: its index in creation order (constraints are never removed).
+struct ConstraintId {
+    std::uint32_t index = 0;
+    friend constexpr bool operator==(ConstraintId, ConstraintId) noexcept = default;
+};
+
+/// A new particle.
+struct ParticleDef {
+    Vec2 position{};        ///< world units
+    Vec2 velocity{};        ///< world units per second
+    double mass = 1.0;    ///< positive; +infinity pins the particle (inverse mass 0)
+};
+
+/// A damped spring between two particles: F = −(k·(|d| − L) + c·(ḋ·d̂))·d̂ on b, opposite on a.
+struct SpringDef {
+    double rest_length = 0.0;  ///< L, world units, ≥ 0
+    double stiffness = 0.0;    ///< k, force per unit stretch, ≥ 0
+    double damping = 0.0;      ///< c, force per unit stretching speed, ≥ 0
+};
+
+/// How constraint drift is held in check.
+enum class DriftControl {
+    none,        ///< only C̈ = 0 is enforced: C drifts with the truncation error
+    baumgarte,   ///< feedback −ks·C − kd·Ċ in the solve (Witkin's spring and damper)
+    projection,  ///< after each step, Newton projection of positions onto C = 0, then of velocities onto Ċ = 0
+};
+
+/// The drift-control name ("none", "baumgarte", "projection").
+std::string_view to_string(DriftControl drift) noexcept;
+/// The drift control named `name`; throws grape::Error naming the unknown value.
+DriftControl drift_control_from_string(std::string_view name);
+
+/// Drift-control settings.
+struct DriftDef {
+    DriftControl method = DriftControl::baumgarte;  ///< see DriftControl
+    /// Baumgarte gains from the step: ω = omega_dt/dt, ks = ω², kd = 2ω (critical damping).
+    double omega_dt = 0.05;
+    std::optional<double> stiffness{};  ///< ks in 1/s², overrides omega_dt (kd then defaults to 2√ks)
+    std::optional<double> damping{};    ///< kd in 1/s, overrides the default
+    int projection_iterations = 8;       ///< Newton iterations at most per projection
+    double projection_tolerance = 0.0;   ///< stop when every |C|/|∇C| ≤ this (0: until round-off)
+};
+
+/// The linear solver for J W Jᵀ λ = b.
+enum class LinearSolver {
+    automatic,           ///< dense up to dense_limit constraint rows, sparse direct above
+    dense,               ///< Eigen LDLT; complete orthogonal decomposition when singular
+    sparse_direct,       ///< Eigen simplicial LDLT; conjugate gradient when singular
+    conjugate_gradient,  ///< Eigen conjugate gradient on the sparse J W Jᵀ, warm-started
+};
+
+/// Linear-solver settings.
+struct SolverDef {
+    LinearSolver method = LinearSolver::automatic;  ///< see LinearSolver
+    std::size_t dense_limit = 48;  ///< rows up to which `automatic` solves densely
+    double cg_tolerance = 1e-13;   ///< conjugate gradient: relative residual |r|/|b|
+    int cg_max_iterations = 0;     ///< conjugate gradient: 0 means 4 × rows
+};
+
+/// A particle system's settings, for designated initializers.
+struct ParticleSystemDef {
+    Integrator integrator = Integrator::rk4;  ///< see Integrator
+    DriftDef drift{};                           ///< see DriftDef
+    SolverDef solver{};                         ///< see SolverDef
+    Rk45Def rk45{};                             ///< used when integrator is rk45
+};
+
+/// Outcome of the last constraint solve(s).
+enum class SolveStatus {
+    ok,             ///< J W Jᵀ was regular and the solve succeeded
+    singular,       ///< redundant or degenerate constraints: a least-squares/CG solution was used
+    not_converged,  ///< conjugate gradient stopped at its iteration limit
+};
+
+/// The status name ("ok", "singular", "not_converged").
+std::string_view to_string(SolveStatus status) noexcept;
+
+/// What one ParticleSystem::step did.
+struct StepReport {
+    SolveStatus status = SolveStatus::ok;  ///< worst status over the step's solves
+    int evaluations = 0;                   ///< constraint solves inside the integrator
+    int substeps = 0;                      ///< integrator sub-steps (rk45)
+    int rejected = 0;                      ///< rk45 rejected sub-steps
+    int projection_iterations = 0;         ///< Newton iterations of the position projection
+    int cg_iterations = 0;                 ///< conjugate-gradient iterations, summed
+};
+
+/// Residuals of one constraint (for a two-row constraint, the larger row).
+struct ConstraintResidual {
+    double value = 0.0;     ///< |C|, in the constraint's units
+    double rate = 0.0;      ///< |Ċ|
+    double distance = 0.0;  ///< |C|/|∇C|, in world units: how far the particles are off
+};
+
+/// What a force function sees and writes: the state being evaluated (an integrator stage)
+/// and the forces accumulated so far (exerted, then earlier generators in order).
+struct ForceContext {
+    double time{};                          ///< seconds
+    std::span<const Vec2> positions;      ///< one per particle
+    std::span<const Vec2> velocities;     ///< one per particle
+    std::span<const double> inverse_masses;  ///< 0 for pinned particles
+    std::span<Vec2> forces;               ///< add to these
+};
+
+/// A user force generator.
+using ForceFunction = std::function<void(const ForceContext&)>;
+/// A generator's potential energy at the given positions (world units of energy).
+using PotentialFunction = std::function<double(std::span<const Vec2> positions)>;
+
+/// What a user constraint writes for the current positions and velocities of its particles.
+struct UserConstraintOutput {
+    double value = 0.0;         ///< C
+    std::span<Vec2> jacobian;   ///< ∂C/∂xᵢ, one per particle of the constraint
+    double jdot_v = 0.0;        ///< J̇q̇ = Σᵢ (dJᵢ/dt)·vᵢ
+};
+
+/// A user constraint: one scalar C over `particles`. `evaluate` gets their positions and
+/// velocities (same order) and must fill an output consistent with C (Ċ = J·v).
+struct UserConstraint {
+    std::vector<ParticleId> particles{};
+    std::function<void(std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out)> evaluate;
+};
+
+namespace detail {
+struct SolverWorkspace;  // Eigen matrices and factorizations (src/dynamics/witkin.hpp)
+}
+
+/// Particles with forces and constraints, advanced by one integrator. State is kept as
+/// arrays (positions, velocities, inverse masses, forces) in particle order.
+/// Move-only: the solver keeps factorizations of its matrices.
+class ParticleSystem {
+public:
+    /// Throws grape::Error if a setting is out of range (non-positive omega_dt, negative gains,
+    /// tolerance or iteration counts).
+    explicit ParticleSystem(ParticleSystemDef def = {});
+    ~ParticleSystem();
+    ParticleSystem(ParticleSystem&&) noexcept;
+    ParticleSystem& operator=(ParticleSystem&&) noexcept;
+
+    // -- particles --
+    /// Adds a particle. Throws grape::Error if position or velocity is not finite or the mass
+    /// is not positive (infinity pins it; its velocity is then set to zero).
+    ParticleId add_particle(const ParticleDef& def);
+    /// Number of particles.
+    std::size_t size() const noexcept { return positions_.size(); }
+    /// Positions, velocities, inverse masses (0 = pinned) and the forces of the last evaluation.
+    std::span<const Vec2> positions() const noexcept { return positions_; }
+    std::span<const Vec2> velocities() const noexcept { return velocities_; }
+    std::span<const double> inverse_masses() const noexcept { return inverse_masses_; }
+    std::span<const Vec2> forces() const noexcept { return forces_; }
+    /// Constraint force Jᵀλ on each particle at the last evaluation.
+    std::span<const Vec2> constraint_forces() const noexcept { return constraint_forces_; }
+    Vec2 position(ParticleId id) const;  ///< throws grape::Error for an unknown id
+    Vec2 velocity(ParticleId id) const;  ///< throws grape::Error for an unknown id
+    double mass(ParticleId id) const;    ///< +infinity when pinned
+    /// Moves a particle (no drift control is applied until the next step).
+    void set_position(ParticleId id, Vec2 position);
+    void set_velocity(ParticleId id, Vec2 velocity);
+    /// Adds a force held for the next step, then cleared (as the seed's exertForce).
+    void exert_force(ParticleId id, Vec2 force);
+
+    // -- force generators (applied in the order added) --
+    /// Weight m·g on every particle, potential −m·g·x. Throws if g is not finite.
+    void add_gravity(Vec2 g);
+    /// Linear drag −k·v on every particle (no potential). Throws if k < 0 or not finite.
+    void add_drag(double k);
+    /// A damped spring (potential ½k(|d| − L)²). Throws for unknown ids, a == b or bad values.
+    void add_spring(ParticleId a, ParticleId b, const SpringDef& def);
+    /// A user force, with an optional potential counted in energy(). Throws if `force` is empty.
+    void add_force(ForceFunction force, PotentialFunction potential = {});
+
+    // -- constraints --
+    /// |xa − xb| = length (C = ½(|d|² − L²)). Throws for unknown ids, a == b, length ≤ 0.
+    ConstraintId add_distance(ParticleId a, ParticleId b, double length);
+    /// |xa − xb| held at its current value.
+    ConstraintId add_distance(ParticleId a, ParticleId b);
+    /// |xa − anchor| = length: a pendulum rod to a fixed point. Throws if length ≤ 0.
+    ConstraintId add_anchor(ParticleId a, Vec2 anchor, double length);
+    /// xa = point (two rows). Throws for an unknown id or a non-finite point.
+    ConstraintId add_fixed_point(ParticleId a, Vec2 point);
+    /// C(xa) = 0 for an implicit curve.
+    ConstraintId add_curve(ParticleId a, ImplicitCurve curve);
+    /// A user constraint. Throws if it has no particles, an unknown id or no function.
+    ConstraintId add_constraint(UserConstraint constraint);
+    /// Number of constraints (a fixed point counts once).
+    std::size_t constraint_count() const noexcept { return constraints_.size(); }
+
+    // -- settings --
+    const ParticleSystemDef& def() const noexcept { return def_; }
+    /// Changes the drift control (validated as in the constructor).
+    void set_drift(const DriftDef& drift);
+    /// Changes the integrator (its rk45 step memory restarts).
+    void set_integrator(Integrator integrator);
+
+    // -- simulation --
+    /// Advances by dt seconds (> 0, finite; throws grape::Error otherwise): integrates with
+    /// constraint forces at every stage, projects when drift control says so, clears exerted forces.
+    StepReport step(double dt);
+    /// Simulated time in seconds.
+    double time() const noexcept { return time_; }
+
+    // -- diagnostics (at the current state) --
+    /// Σ ½ m|v|² over particles that are not pinned.
+    double kinetic_energy() const noexcept;
+    /// Σ of the generators' potentials (gravity, springs, user potentials).
+    double potential_energy() const;
+    /// kinetic + potential.
+    double energy() const { return kinetic_energy() + potential_energy(); }
+    /// Residuals of every constraint, in creation order.
+    std::vector<ConstraintResidual> residuals() const;
+    /// The largest residual over all constraints (zeros when there are none).
+    ConstraintResidual max_residual() const;
+    /// Evaluates the constrained accelerations at the current state without stepping
+    /// (fills forces() and constraint_forces()); returns the solve status.
+    SolveStatus evaluate(std::span<Vec2> accelerations);
+
+private:
+    friend struct detail::SolverWorkspace;
+    struct Gravity { Vec2 g{}; };
+    struct Drag { double k; };
+    struct Spring { std::uint32_t a, b; SpringDef def; };
+    struct UserForce { ForceFunction force; PotentialFunction potential; };
+    enum class GeneratorKind : std::uint8_t { gravity, drag, spring, user };
+    struct Generator { GeneratorKind kind; std::uint32_t index; };
+    enum class ConstraintKind : std::uint8_t { distance, anchor, fixed_point, curve, user };
+    struct ConstraintRecord {
+        ConstraintKind kind{};
+        std::uint32_t a = 0, b = 0;  // particles (distance: both)
+        Vec2 point{};                  // anchor or fixed point
+        double length = 0.0;
+        std::uint32_t extra = 0;     // index into curves_ or users_
+    };
+
+    std::uint32_t checked(ParticleId id, std::string_view where) const;
+    ConstraintId push_constraint(const ConstraintRecord& record);
+    void apply_forces(double t, std::span<const Vec2> x, std::span<const Vec2> v) noexcept;
+
+    ParticleSystemDef def_{};
+    double time_ = 0.0;
+    std::vector<Vec2> positions_, velocities_, forces_, exerted_, constraint_forces_;
+    std::vector<double> inverse_masses_{};
+    std::vector<Generator> generators_{};
+    std::vector<Gravity> gravities_{};
+    std::vector<Drag> drags_{};
+    std::vector<Spring> springs_{};
+    std::vector<UserForce> user_forces_{};
+    std::vector<ConstraintRecord> constraints_{};
+    std::vector<ImplicitCurve> curves_{};
+    std::vector<UserConstraint> users_{};
+    Stepper stepper_{};
+    std::unique_ptr<detail::SolverWorkspace> solver_{};
+    static_assert(sizeof(Vec2) == 2 * sizeof(double), "positions are viewed as 2n doubles");
+};
+
+// ---------------------------------------------------------------------------------------
+// Generalized coordinates: a bead on a parametric curve
+// ---------------------------------------------------------------------------------------
+
+/// A parametric curve's point and its first two derivatives at one parameter value.
+struct CurveFrame {
+    Vec2 point{};  ///< x(u)
+    Vec2 d1{};     ///< x′(u)
+    Vec2 d2{};     ///< x″(u)
+};
+
+/// A user parametric curve: u ↦ (x, x′, x″), e.g. the seed's parabola (u, −u²/100).
+using ParametricCurve = std::function<CurveFrame(double u)>;
+
+/// The bead's coordinate acceleration: ü = (x′·F/m − (x′·x″) u̇²)/|x′|², 0 where x′ = 0
+/// (the bead rests at a cusp rather than producing NaN).
+inline double bead_acceleration(const CurveFrame& frame, Vec2 force, double mass, double u_rate) noexcept {
+    const double s2 = length_squared(frame.d1);
+    if (!(s2 > 0.0)) return 0.0;
+    return (dot(frame.d1, force) / mass - dot(frame.d1, frame.d2) * u_rate * u_rate) / s2;
+}
+
+/// What happens when the bead reaches an end of an open path.
+enum class BeadEnd {
+    stop,    ///< the bead stops at the end (and may slide back if forces pull it)
+    bounce,  ///< the bead's velocity reverses, scaled by `restitution`
+};
+
+/// A bead's settings.
+struct BeadDef {
+    double u = 0.0;          ///< starting parameter
+    double speed = 0.0;      ///< starting speed along the path (world units/s, signed: + towards larger u)
+    double mass = 1.0;       ///< positive, finite
+    Vec2 gravity{};            ///< acceleration of gravity (force m·g, potential −m·g·x)
+    double drag = 0.0;       ///< linear drag coefficient k ≥ 0 (force −k·v)
+    BeadEnd ends = BeadEnd::stop;     ///< open ends of a Path
+    double restitution = 1.0;         ///< bounce: fraction of speed kept, in [0, 1]
+    Integrator integrator = Integrator::rk4;  ///< see Integrator
+    Rk45Def rk45{};            ///< used when integrator is rk45
+};
+
+/// A bead sliding without friction on a curve, in its generalized coordinate u.
+/// On a grape::Path u runs over [0, 1]; at each join of a ComplexPath (top level) the bead
+/// moves to the next part keeping its speed along the path; a closed path (end point equal
+/// to start point) wraps around; open ends stop or bounce (BeadDef::ends). On a user curve
+/// u is unbounded.
+class Bead {
+public:
+    /// On any path. Throws grape::Error for a bad BeadDef (non-finite values, mass ≤ 0,
+    /// drag < 0, restitution outside [0, 1], u outside [0, 1]).
+    Bead(const Path& path, const BeadDef& def);
+    /// On a ComplexPath: joins between parts keep the speed along the path.
+    Bead(const ComplexPath& path, const BeadDef& def);
+    /// On a user curve (u unbounded). Throws grape::Error if `curve` is empty or def is bad.
+    Bead(ParametricCurve curve, const BeadDef& def);
+
+    /// An extra force F(t, x, v) on the bead (e.g. wind, a mouse spring); empty to remove.
+    void set_force(std::function<Vec2(double t, Vec2 x, Vec2 v)> force) { force_ = std::move(force); }
+    /// Advances by dt seconds (> 0, finite; throws grape::Error otherwise).
+    StepStats step(double dt);
+
+    double time() const noexcept { return time_; }
+    /// The parameter u on the whole path.
+    double u() const noexcept;
+    /// du/dt on the whole path.
+    double u_rate() const noexcept;
+    /// Position x(u).
+    Vec2 position() const noexcept;
+    /// Velocity x′(u)·u̇.
+    Vec2 velocity() const noexcept;
+    /// Signed speed along the path (+ towards larger u).
+    double speed() const noexcept;
+    /// ½m|v|² − m·g·x (the extra force and drag have no potential).
+    double energy() const noexcept;
+    /// ü at the current state (the equation of motion, for tests and tools).
+    double acceleration() const noexcept;
+    /// Number of ends and joins crossed so far.
+    int crossings() const noexcept { return crossings_; }
+
+private:
+    // One smooth piece: its curve (a Path captured by value) and its span of the whole u.
+    struct Part { ParametricCurve curve; double u0, u1; };
+    class Ode;
+    void init_parts(std::vector<Part> parts, const BeadDef& def);
+    CurveFrame frame(double local_u) const noexcept;
+    Vec2 applied_force(double t, Vec2 x, Vec2 v) const noexcept;
+    void transfer(double speed, int direction);
+
+    BeadDef def_{};
+    std::vector<Part> parts_;  // one for a user curve (unbounded) or a plain path
+    bool bounded_ = true;      // false for a user curve
+    bool closed_ = false;
+    std::size_t part_ = 0;
+    double local_u_ = 0.0, local_rate_ = 0.0;
+    double time_ = 0.0;
+    int crossings_ = 0;
+    std::function<Vec2(double, Vec2, Vec2)> force_{};
+    Stepper stepper_{};
+};
+
+}  // namespace grape

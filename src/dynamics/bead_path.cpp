@@ -1,0 +1,32 @@
+// Beads on grape::Path values (kept apart from bead.cpp so that programs using only user
+// curves do not need the path module's code).
+#include <grape/dynamics.hpp>
+
+namespace grape {
+
+namespace {
+ParametricCurve curve_of(const Path& path) {
+    return [path](double u) { return CurveFrame{path.point(u), path.d1(u), path.d2(u)}; };
+}
+}  // namespace
+
+Bead::Bead(const Path& path, const BeadDef& def) {
+    std::vector<Part> parts;
+    parts.push_back({curve_of(path), 0.0, 1.0});
+    init_parts(std::move(parts), def);
+}
+
+Bead::Bead(const ComplexPath& path, const BeadDef& def) {
+    std::vector<Part> parts;
+    const auto sub = path.parts();
+    const auto cues = path.cues();
+    for (std::size_t i = 0; i < sub.size(); ++i) {
+        const double u0 = cues[i];
+        const double u1 = i + 1 < sub.size() ? cues[i + 1] : 1.0;
+        if (u1 > u0) parts.push_back({curve_of(sub[i]), u0, u1});  // empty spans are skipped, as the path does
+    }
+    if (parts.empty()) throw Error("Bead: path has no part with a non-empty span");
+    init_parts(std::move(parts), def);
+}
+
+}  // namespace grape
