@@ -1,0 +1,43 @@
+// libFuzzer target for grape::parse_svg_path: any byte string either parses into a path whose
+// length, points and derivatives are finite, or throws grape::Error with the parser's prefix.
+// Anything else (a crash, a sanitizer report, another exception, a NaN) is a finding.
+#include <grape/error.hpp>
+#include <grape/path.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+namespace {
+
+void require(bool condition) {
+    if (!condition) std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    try {
+        const grape::ComplexPath path = grape::parse_svg_path(text);
+        const double length = path.length();
+        require(std::isfinite(length) && length > 0.0);
+        const auto cues = path.cues();
+        require(!cues.empty() && cues.front() == 0.0 && cues.size() == path.parts().size());
+        for (std::size_t i = 1; i < cues.size(); ++i) require(cues[i - 1] <= cues[i] && cues[i] <= 1.0);
+        constexpr int samples = 16;
+        for (int i = 0; i <= samples; ++i) {
+            const double u = static_cast<double>(i) / samples;
+            require(grape::is_finite(path.point(u)));
+            require(grape::is_finite(path.d1(u)));
+            require(grape::is_finite(path.d2(u)));
+        }
+    } catch (const grape::Error& e) {
+        // Every rejection is the parser's own, with its prefix: a path constructor's error
+        // escaping here means the parser let through something it should have caught.
+        require(std::string_view(e.what()).starts_with("SVG path data: "));
+    }
+    return 0;
+}
