@@ -21,7 +21,8 @@
 namespace grape {
 
 namespace detail {
-class PathNode;  // the shape behind a Path (src/path/path_node.hpp)
+class PathNode;     // the shape behind a Path (src/path/path_node.hpp)
+struct PathAccess;  // lets the library's modules wrap and share nodes (path_node.hpp)
 }
 
 /// Every kind of 2-D path.
@@ -95,6 +96,9 @@ public:
 protected:
     explicit Path(std::shared_ptr<const detail::PathNode> node) noexcept;
     std::shared_ptr<const detail::PathNode> node_;
+
+private:
+    friend struct detail::PathAccess;
 };
 
 /// A straight segment from `start` to `end`; u is proportional to distance.

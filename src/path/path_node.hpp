@@ -1,0 +1,207 @@
+// grape — the shape behind a Path (private to the library, shared by the modules that
+// evaluate paths in bulk: anim's hot loop, dynamics, render).
+//
+// A PathNode is immutable once `finish()` has run (make_node does it): it evaluates a
+// point and its first two derivatives for u in [0, 1] and caches its length, bounds and the
+// u where it may be non-smooth. The Path handle adds the end-tangent extension outside
+// [0, 1]. The node types that anim special-cases (LinearNode, CubicBezierNode,
+// ReparametrizedNode) are declared here with their fields and inline evaluation, so a
+// caller that knows the kind can evaluate without a virtual call.
+#pragma once
+
+#include <grape/path.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace grape::detail {
+
+/// The abstract shape: point, d1, d2 on u in [0, 1] (callers clamp), cached length/bounds.
+class PathNode {
+public:
+    virtual ~PathNode() = default;
+    PathNode(const PathNode&) = delete;
+    PathNode& operator=(const PathNode&) = delete;
+
+    /// Which kind of path this node is (anim switches on it to skip virtual calls).
+    PathKind kind() const noexcept { return kind_; }
+    /// Position at u in [0, 1].
+    virtual Vec2 point(double u) const noexcept = 0;
+    /// dx/du at u in [0, 1] (one-sided at breaks: the piece that starts at u).
+    virtual Vec2 d1(double u) const noexcept = 0;
+    /// d²x/du² at u in [0, 1].
+    virtual Vec2 d2(double u) const noexcept = 0;
+
+    /// Arc length over [0, 1], computed once by finish().
+    double length() const noexcept { return length_; }
+    /// Tight axis-aligned box over [0, 1], computed once by finish().
+    const Bounds& bounds() const noexcept { return bounds_; }
+    /// Arc length from 0 to u in [0, 1]. Default: cached piece lengths + quadrature.
+    virtual double length_at(double u) const noexcept;
+    /// Parameters 0 = b_0 < b_1 < ... < b_k = 1 between which the node is smooth.
+    const std::vector<double>& breaks() const noexcept { return breaks_; }
+
+    /// Appends a polyline from just after point(0) to point(1) (point(0) is the caller's)
+    /// staying within `tolerance` of the shape. Default: adaptive subdivision by flatness.
+    virtual void append_flattened(double tolerance, std::vector<Vec2>& out) const;
+
+    /// Fills the caches (length, bounds, breaks); make_node calls it once after construction,
+    /// because the base constructor cannot call the derived evaluation.
+    void finish();
+
+protected:
+    explicit PathNode(PathKind kind) noexcept : kind_(kind) {}
+
+    /// Interior parameters in (0, 1), increasing, where the node may be non-smooth
+    /// (segment joins of splines, parts of complex paths). Default: none.
+    virtual void interior_breaks(std::vector<double>& out) const;
+    /// True when length_at is a closed form (then finish() takes length_at(1) as the
+    /// length); otherwise the length comes from adaptive Gauss–Legendre per piece.
+    virtual bool closed_form_length() const noexcept { return false; }
+    /// Default: sampled extremes of each coordinate refined by root finding on d1.
+    virtual Bounds compute_bounds() const;
+    /// How many samples per piece compute_bounds and flattening start from (oscillating
+    /// kinds need more so no extreme falls between samples).
+    virtual int samples_per_piece() const noexcept { return 16; }
+
+    /// Adaptive quadrature of the speed |d1| over [a, b] inside one smooth piece.
+    double integrate_speed(double a, double b) const noexcept;
+
+private:
+    PathKind kind_;
+    double length_ = 0.0;
+    double quad_tolerance_ = 0.0;  // absolute error target of integrate_speed
+    Bounds bounds_;
+    std::vector<double> breaks_;   // 0, interior breaks..., 1
+    std::vector<double> cumulative_;  // arc length at each break
+};
+
+/// The Path handle's private side, for the library's own modules.
+struct PathAccess {
+    /// A Path sharing `node`.
+    static Path wrap(std::shared_ptr<const PathNode> node) noexcept { return Path(std::move(node)); }
+    /// The shared pointer behind a Path (to keep a node alive beside raw pointers to it).
+    static const std::shared_ptr<const PathNode>& shared(const Path& path) noexcept { return path.node_; }
+};
+
+/// Constructs a node and fills its caches.
+template <class T, class... Args>
+std::shared_ptr<const T> make_node(Args&&... args) {
+    auto node = std::make_shared<T>(std::forward<Args>(args)...);
+    node->finish();
+    return node;
+}
+
+/// A straight segment a → b.
+class LinearNode final : public PathNode {
+public:
+    LinearNode(Vec2 a, Vec2 b) noexcept : PathNode(PathKind::linear), a(a), b(b), delta(b - a) {}
+    Vec2 point(double u) const noexcept override { return a + delta * u; }
+    Vec2 d1(double) const noexcept override { return delta; }
+    Vec2 d2(double) const noexcept override { return {}; }
+    double length_at(double u) const noexcept override { return grape::length(delta) * u; }
+    void append_flattened(double tolerance, std::vector<Vec2>& out) const override;
+
+    const Vec2 a;      ///< start
+    const Vec2 b;      ///< end
+    const Vec2 delta;  ///< b − a (the constant derivative)
+
+protected:
+    bool closed_form_length() const noexcept override { return true; }
+    Bounds compute_bounds() const override;
+};
+
+/// A cubic Bézier; evaluated from its power-basis coefficients (x = c0 + c1·t + c2·t² + c3·t³).
+class CubicBezierNode final : public PathNode {
+public:
+    CubicBezierNode(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3) noexcept
+        : PathNode(PathKind::cubic_bezier),
+          p{p0, p1, p2, p3},
+          c{p0, 3.0 * (p1 - p0), 3.0 * (p2 - 2.0 * p1 + p0), p3 - p0 + 3.0 * (p1 - p2)} {}
+    Vec2 point(double t) const noexcept override { return ((c[3] * t + c[2]) * t + c[1]) * t + c[0]; }
+    Vec2 d1(double t) const noexcept override { return (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1]; }
+    Vec2 d2(double t) const noexcept override { return 6.0 * c[3] * t + 2.0 * c[2]; }
+
+    const Vec2 p[4];  ///< control points
+    const Vec2 c[4];  ///< power-basis coefficients
+
+protected:
+    Bounds compute_bounds() const override;
+};
+
+/// The arc-length reparametrization of any node: u ↦ source parameter v with
+/// s(v) = u·L to 1e-9·L. The table holds, per span of v, the quintic Hermite model of s(v)
+/// (from s, |x′| and (x′·x″)/|x′|, checked against quadrature at construction); lookup is a
+/// bucket index in s, then a few safeguarded Newton steps on the span's polynomial.
+class ReparametrizedNode final : public PathNode {
+public:
+    /// One span of the table: v = v0 + dv·t and s(t) = s0 + t·(k1 + t·(k2 + t·(k3 + t·(k4 + t·k5)))).
+    struct Span {
+        double v0, dv, s0, ds;  // ds = s(1) − s(0)
+        double k1, k2, k3, k4, k5;
+    };
+
+    explicit ReparametrizedNode(Path source);
+
+    /// The source parameter v at which the arc length is u·length(), u in [0, 1].
+    double source_u(double u) const noexcept {
+        const double s = std::clamp(u, 0.0, 1.0) * length();
+        if (!(s > 0.0)) return spans_.front().v0;  // also catches NaN
+        std::size_t b = static_cast<std::size_t>(s * bucket_scale_);
+        if (b >= buckets_.size()) b = buckets_.size() - 1;
+        std::size_t i = buckets_[b];
+        while (i + 1 < spans_.size() && spans_[i + 1].s0 <= s) ++i;
+        return solve_span(spans_[i], s);
+    }
+    Vec2 point(double u) const noexcept override { return source_node_->point(source_u(u)); }
+    Vec2 d1(double u) const noexcept override;
+    Vec2 d2(double u) const noexcept override;
+    double length_at(double u) const noexcept override {
+        return std::clamp(u, 0.0, 1.0) * source_node_->length();
+    }
+    void append_flattened(double tolerance, std::vector<Vec2>& out) const override;
+
+    /// The path this one reparametrizes.
+    const Path& source() const noexcept { return source_; }
+    /// The table (for tests and benchmarks).
+    const std::vector<Span>& spans() const noexcept { return spans_; }
+
+protected:
+    bool closed_form_length() const noexcept override { return true; }
+    Bounds compute_bounds() const override { return source_node_->bounds(); }
+
+private:
+    static double solve_span(const Span& sp, double s) noexcept {
+        const double target = s - sp.s0;
+        double lo = 0.0, hi = 1.0;
+        double t = sp.ds > 0.0 ? std::clamp(target / sp.ds, 0.0, 1.0) : 0.0;
+        // Newton on the span's polynomial, kept inside the bracket by bisection; the
+        // polynomial is increasing in practice, so 2–4 steps reach the rounding floor.
+        for (int i = 0; i < 12; ++i) {
+            const double f = t * (sp.k1 + t * (sp.k2 + t * (sp.k3 + t * (sp.k4 + t * sp.k5)))) - target;
+            const double df = sp.k1 + t * (2.0 * sp.k2 + t * (3.0 * sp.k3 + t * (4.0 * sp.k4 + t * 5.0 * sp.k5)));
+            if (f < 0.0) lo = t; else hi = t;
+            if (std::abs(f) <= 1e-14 * (sp.s0 + sp.ds) + 1e-300) break;
+            double next = t - f / df;
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            if (next == t) break;
+            t = next;
+        }
+        return sp.v0 + sp.dv * t;
+    }
+
+    void build();
+    double build_span_checked(double va, double vb, double sa, int depth, double total);
+
+    Path source_;
+    const PathNode* source_node_;
+    std::vector<Span> spans_;
+    std::vector<std::uint32_t> buckets_;  // buckets_[b]: the span holding s = b / bucket_scale_
+    double bucket_scale_ = 0.0;
+};
+
+}  // namespace grape::detail
