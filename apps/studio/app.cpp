@@ -29,7 +29,7 @@ std::vector<std::unique_ptr<Tab>> make_tabs([[maybe_unused]] const Options& opti
 #ifdef GRAPE_STUDIO_DYNAMICS
     tabs.push_back(make_constraint_tab());
 #endif
-    tabs.push_back(make_paths_tab());
+    tabs.push_back(make_paths_tab(options.path));
 #ifdef GRAPE_STUDIO_DYNAMICS
     tabs.push_back(make_chain_tab(options.particles));
 #endif
@@ -129,12 +129,11 @@ int run(const Options& options) {
         for (const auto& t : tabs) list += std::string(list.empty() ? "" : ", ") + t->name();
         throw Error("--tab: unknown tab '" + options.tab + "' (expected one of " + list + ")");
     }
+    Sdl sdl;
+    if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) throw Error(std::string("SDL_Init failed: ") + SDL_GetError());
     const std::vector<ScriptEvent> script = options.script.empty() ? std::vector<ScriptEvent>{}
                                                                    : load_script(options.script);
     const bool scripted = !options.script.empty();
-
-    Sdl sdl;
-    if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) throw Error(std::string("SDL_Init failed: ") + SDL_GetError());
     sdl.window = SDL_CreateWindow("grape studio", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, options.width,
                                   options.height, SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
     if (!sdl.window) throw Error(std::string("SDL_CreateWindow failed: ") + SDL_GetError());

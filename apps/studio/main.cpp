@@ -23,6 +23,7 @@ void usage(std::FILE* to) {
                  "  --screenshot FILE   after the last frame, save the window as PNG (needs --frames)\n"
                  "  --script FILE       feed timed mouse/key events from FILE (see tests/studio/*.script)\n"
                  "  --report FILE       write the visible tab's state at exit (key: value lines)\n"
+                 "  --path NAME         paths tab: the path selected at start (e.g. seed_bezier)\n"
                  "  --particles N       chain tab: number of particles (2..2000)\n"
                  "  --size WxH          window size in pixels (default 1200x760)\n"
                  "  --fps               no frame cap; print frames per second at exit\n"
@@ -58,6 +59,7 @@ grape::studio::Options parse(int argc, char** argv) {
         else if (arg == "--screenshot") o.screenshot = value;
         else if (arg == "--script") o.script = value;
         else if (arg == "--report") o.report = value;
+        else if (arg == "--path") o.path = value;
         else if (arg == "--particles") o.particles = integer_option(arg, value, 2, 2000);
         else if (arg == "--size") {
             const std::size_t x = value.find('x');

@@ -44,10 +44,12 @@ struct LineParser {
         fail("mouse button must be left, right or middle (got '" + std::string(word) + "')");
     }
 
-    SDL_Keycode key(std::string_view word) const {
+    // Keys by SDL scancode name: the physical key, whatever the keyboard layout.
+    SDL_Scancode key(std::string_view word) const {
         const std::string name(word);
-        const SDL_Keycode k = SDL_GetKeyFromName(name.c_str());
-        if (k == SDLK_UNKNOWN) fail("unknown key name '" + name + "' (SDL key names: a, Left, Space, Return, ...)");
+        const SDL_Scancode k = SDL_GetScancodeFromName(name.c_str());
+        if (k == SDL_SCANCODE_UNKNOWN)
+            fail("unknown key name '" + name + "' (SDL scancode names: A, Left, Space, Return, Left Ctrl, ...)");
         return k;
     }
 
@@ -76,12 +78,12 @@ SDL_Event mouse_button(bool down, Uint8 button, int x, int y) {
     return e;
 }
 
-SDL_Event key_event(bool down, SDL_Keycode key) {
+SDL_Event key_event(bool down, SDL_Scancode key) {
     SDL_Event e{};
     e.type = down ? SDL_KEYDOWN : SDL_KEYUP;
     e.key.state = down ? SDL_PRESSED : SDL_RELEASED;
-    e.key.keysym.sym = key;
-    e.key.keysym.scancode = SDL_GetScancodeFromKey(key);
+    e.key.keysym.scancode = key;
+    e.key.keysym.sym = SDL_GetKeyFromScancode(key);  // the layout's key (needs SDL's video up)
     return e;
 }
 
@@ -123,8 +125,10 @@ std::vector<ScriptEvent> parse_script(std::string_view text, std::string_view so
             if (verb == "down") buttons |= SDL_BUTTON(b); else buttons &= ~SDL_BUTTON(b);
             events.push_back({frame, mouse_button(verb == "down", b, mouse_x, mouse_y)});
         } else if (verb == "key_down" || verb == "key_up") {
-            p.arity(words, 3, "<frame> key_down|key_up <SDL key name>");
-            events.push_back({frame, key_event(verb == "key_down", p.key(words[2]))});
+            // Key names may hold spaces ("Left Ctrl"): the rest of the line is the name.
+            if (words.size() < 3) p.fail("expected '<frame> key_down|key_up <SDL key name>'");
+            const std::string_view name(words[2].data(), std::size_t(words.back().data() + words.back().size() - words[2].data()));
+            events.push_back({frame, key_event(verb == "key_down", p.key(name))});
         } else if (verb == "wheel") {
             p.arity(words, 3, "<frame> wheel <steps>");
             SDL_Event e{};

@@ -5,8 +5,8 @@
 //   10       move      400 300            mouse moves to (400, 300)
 //   11       down      left               button pressed where the mouse is (left|right|middle)
 //   20       up        left
-//   30       key_down  space              SDL key names: a, Left, Right, Space, Return, ...
-//   31       key_up    space
+//   30       key_down  Space              SDL scancode names: A, Left, Space, Return, Left Ctrl, ...
+//   31       key_up    Space
 //   40       wheel     -1                 wheel steps (positive: away from the user)
 //   50       drag      400 300 600 200 20 press at the first point, move over 20 frames, release
 //
@@ -27,7 +27,7 @@ struct ScriptEvent {
     SDL_Event event{};
 };
 
-/// Parses a script; throws grape::Error naming `source:line` and the reason.
+/// Parses a script (after SDL_Init, so key codes follow the keyboard layout); throws grape::Error naming `source:line` and the reason.
 std::vector<ScriptEvent> parse_script(std::string_view text, std::string_view source = "script");
 /// Reads and parses a script file; throws grape::Error if it cannot be read or parsed.
 std::vector<ScriptEvent> load_script(const std::string& path);

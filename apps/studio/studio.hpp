@@ -30,6 +30,7 @@ struct Options {
     std::string script;             ///< file of timed mouse and key events
     std::string report;             ///< text file of the tabs' state written at exit
     int particles = 0;              ///< chain tab: particle count (0: the tab's default)
+    std::string path;               ///< paths tab: the path selected at start ("" : the default)
     bool fps = false;               ///< no frame cap; print frames per second at exit
     int width = 1200;               ///< window width, pixels
     int height = 760;               ///< window height, pixels
@@ -48,6 +49,8 @@ public:
     ImVec2 screen_max() const noexcept { return screen_max_; }
     /// Pixels per world unit.
     double scale() const noexcept { return scale_; }
+    /// Screen position of the world origin: screen = offset + world·scale.
+    Vec2 offset() const noexcept { return offset_; }
     ImVec2 to_screen(Vec2 p) const noexcept;
     Vec2 to_world(ImVec2 p) const noexcept;
 
@@ -106,7 +109,7 @@ public:
     virtual void report(std::ostream&) const {}
 };
 
-std::unique_ptr<Tab> make_paths_tab();
+std::unique_ptr<Tab> make_paths_tab(const std::string& initial_path);
 std::unique_ptr<Tab> make_sprites_tab();
 std::unique_ptr<Tab> make_keys_tab();
 #ifdef GRAPE_STUDIO_DYNAMICS

@@ -73,7 +73,7 @@ public:
         }
     }
 
-    void advance(double) override {}
+    void advance(double) override { ++frame_; }
 
     void controls() override {
         ImGui::TextWrapped("grape::KeyState holds the keys down as bits, one per SDL scancode, with "
@@ -115,9 +115,9 @@ public:
         }
         // The bit vector itself: the first 128 scancodes as a strip of bits.
         const float by = y0 + 5.5f * unit + 10.0f;
-        dl->AddText({min.x + 20.0f, by}, colour::ink, "KeyState::down(), scancodes 0-127 (one cell per bit):");
+        dl->AddText({min.x + 20.0f, by}, colour::ink, "KeyState::down(), scancodes 0-255 (one cell per bit):");
         const float cell = std::min((max.x - min.x - 40.0f) / 64.0f, 14.0f);
-        for (std::size_t i = 0; i < 128; ++i) {
+        for (std::size_t i = 0; i < 256; ++i) {
             const float cx = min.x + 20.0f + float(i % 64) * cell;
             const float cy = by + 20.0f + float(i / 64) * cell;
             dl->AddRectFilled({cx, cy}, {cx + cell - 1.0f, cy + cell - 1.0f},
@@ -125,7 +125,6 @@ public:
         }
         // The edges have been shown: the frame ends for the key state.
         keys_.end_frame();
-        ++frame_;
     }
 
     void report(std::ostream& out) const override {
