@@ -1,0 +1,333 @@
+// Paths as cairo geometry, and the debug decorations of draw_path.
+//
+// Exact where cairo has the primitive: Bézier control points come back from the path's own
+// derivatives (p1 = p0 + d1(0)/3 for a cubic), circle and ellipse arcs from point, d1 and d2,
+// and piecewise-cubic splines segment by segment from four points per segment (a cubic is
+// fixed by four of its points). Everything else is flattened by Path::flatten.
+#include "cairo_util.hpp"
+#include "path_access.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace grape::detail {
+
+void line_to(cairo_t* cr, Vec2 p) noexcept {
+    if (!is_finite(p)) return;
+    if (cairo_has_current_point(cr)) cairo_line_to(cr, p.x, p.y);
+    else cairo_move_to(cr, p.x, p.y);
+}
+
+void stroke(cairo_t* cr, const StrokeStyle& style) noexcept {
+    cairo_save(cr);
+    // The path is already in device space; stroking under identity keeps widths in output units.
+    cairo_identity_matrix(cr);
+    cairo_set_source_rgba(cr, style.color.r, style.color.g, style.color.b, style.color.a);
+    cairo_set_line_width(cr, std::isfinite(style.width) && style.width > 0.0 ? style.width : 1.0);
+    cairo_set_line_cap(cr, style.cap == LineCap::butt    ? CAIRO_LINE_CAP_BUTT
+                           : style.cap == LineCap::round ? CAIRO_LINE_CAP_ROUND
+                                                         : CAIRO_LINE_CAP_SQUARE);
+    cairo_set_line_join(cr, style.join == LineJoin::miter   ? CAIRO_LINE_JOIN_MITER
+                            : style.join == LineJoin::round ? CAIRO_LINE_JOIN_ROUND
+                                                            : CAIRO_LINE_JOIN_BEVEL);
+    bool dashes_ok = !style.dashes.empty();
+    double total = 0.0;
+    for (double d : style.dashes) {
+        dashes_ok = dashes_ok && std::isfinite(d) && d >= 0.0;
+        total += d;
+    }
+    if (dashes_ok && total > 0.0) cairo_set_dash(cr, style.dashes.data(), static_cast<int>(style.dashes.size()), 0.0);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+}
+
+void fill(cairo_t* cr, const FillStyle& style) noexcept {
+    cairo_set_source_rgba(cr, style.color.r, style.color.g, style.color.b, style.color.a);
+    cairo_set_fill_rule(cr, style.rule == FillRule::even_odd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+    cairo_fill(cr);
+}
+
+namespace {
+
+// Starts a piece at p: continues the current subpath when it ends there, else moves.
+void begin_at(cairo_t* cr, Vec2 p, double tolerance) {
+    if (cairo_has_current_point(cr)) {
+        double x = 0.0, y = 0.0;
+        cairo_get_current_point(cr, &x, &y);
+        if (distance({x, y}, p) <= tolerance) {
+            cairo_line_to(cr, p.x, p.y);
+            return;
+        }
+    }
+    cairo_move_to(cr, p.x, p.y);
+}
+
+void curve_to(cairo_t* cr, Vec2 b1, Vec2 b2, Vec2 b3) { cairo_curve_to(cr, b1.x, b1.y, b2.x, b2.y, b3.x, b3.y); }
+
+void add_flattened(cairo_t* cr, const Path& path, double tolerance) {
+    const std::vector<Vec2> points = path.flatten(tolerance);
+    if (points.empty()) return;
+    begin_at(cr, points.front(), tolerance);
+    for (std::size_t i = 1; i < points.size(); ++i) line_to(cr, points[i]);
+}
+
+// The cubic through path points at local s = 0, ⅓, ⅔, 1 of [u0, u1], as a Bézier:
+// with A = 27·P(⅓) − 8·B0 − B3 = 12·B1 + 6·B2 and C = 27·P(⅔) − B0 − 8·B3 = 6·B1 + 12·B2.
+void add_cubic_piece(cairo_t* cr, const Path& path, double u0, double u1) {
+    const Vec2 b0 = path.point(u0);
+    const Vec2 b3 = path.point(u1);
+    const Vec2 p1 = path.point(u0 + (u1 - u0) / 3.0);
+    const Vec2 p2 = path.point(u0 + 2.0 * (u1 - u0) / 3.0);
+    const Vec2 a = 27.0 * p1 - 8.0 * b0 - b3;
+    const Vec2 c = 27.0 * p2 - b0 - 8.0 * b3;
+    curve_to(cr, (2.0 * a - c) / 18.0, (2.0 * c - a) / 18.0, b3);
+}
+
+// Circle and ellipse arcs: x = c + N·(cos ωu, sin ωu) for a 2×2 matrix N and ω > 0 (a
+// clockwise sweep folds into N). Then d2 = −ω²·(x − c), so x(u) − x(0) = −(d2(u) − d2(0))/ω²
+// gives ω, c = x(0) + d2(0)/ω², and N = [x(0) − c | d1(0)/ω]; cairo draws the unit arc
+// through N exactly.
+void add_arc(cairo_t* cr, const Path& path, double tolerance) {
+    const Vec2 p0 = path.point(0.0);
+    const Vec2 a0 = path.d2(0.0);
+    double best = 0.0;
+    double omega2 = 0.0;
+    for (double u : {0.5, 0.3, 0.7, 0.1}) {  // one of these avoids a whole number of turns
+        const Vec2 dx = path.point(u) - p0;
+        if (length(dx) > best) {
+            best = length(dx);
+            omega2 = length(path.d2(u) - a0) / best;
+        }
+    }
+    if (!(best > 0.0) || !(omega2 > 0.0) || !std::isfinite(omega2)) {
+        add_flattened(cr, path, tolerance);
+        return;
+    }
+    const double omega = std::sqrt(omega2);
+    const Vec2 centre = p0 + a0 / omega2;
+    const Vec2 col0 = p0 - centre;
+    const Vec2 col1 = path.d1(0.0) / omega;
+    if (!(std::abs(cross(col0, col1)) > 0.0)) {
+        add_flattened(cr, path, tolerance);
+        return;
+    }
+    begin_at(cr, p0, tolerance);
+    cairo_matrix_t saved;
+    cairo_get_matrix(cr, &saved);
+    const cairo_matrix_t n{col0.x, col0.y, col1.x, col1.y, centre.x, centre.y};
+    cairo_transform(cr, &n);
+    cairo_arc(cr, 0.0, 0.0, 1.0, 0.0, omega);
+    cairo_set_matrix(cr, &saved);
+}
+
+void add_path_range(cairo_t* cr, const Path& path, double tolerance) {
+    switch (path.kind()) {
+        case PathKind::linear: {
+            begin_at(cr, path.point(0.0), tolerance);
+            line_to(cr, path.point(1.0));
+            return;
+        }
+        case PathKind::circle:
+        case PathKind::elliptical_arc: add_arc(cr, path, tolerance); return;
+        case PathKind::quadratic_bezier:
+        case PathKind::physics: {
+            // Degree elevation: the cubic with controls p0 + ⅔(p1 − p0) and p2 + ⅔(p1 − p2),
+            // where p1 − p0 = d1(0)/2 and p1 − p2 = −d1(1)/2.
+            const Vec2 p0 = path.point(0.0);
+            const Vec2 p2 = path.point(1.0);
+            begin_at(cr, p0, tolerance);
+            curve_to(cr, p0 + path.d1(0.0) / 3.0, p2 - path.d1(1.0) / 3.0, p2);
+            return;
+        }
+        case PathKind::cubic_bezier: {
+            const Vec2 p0 = path.point(0.0);
+            const Vec2 p3 = path.point(1.0);
+            begin_at(cr, p0, tolerance);
+            curve_to(cr, p0 + path.d1(0.0) / 3.0, p3 - path.d1(1.0) / 3.0, p3);
+            return;
+        }
+        case PathKind::linear_spline:
+        case PathKind::hermite_spline:
+        case PathKind::catmull_rom_spline: {
+            const std::size_t segments = spline_segments(path);
+            if (segments == 0) break;
+            begin_at(cr, path.point(0.0), tolerance);
+            for (std::size_t i = 0; i < segments; ++i) {
+                const double u0 = static_cast<double>(i) / static_cast<double>(segments);
+                const double u1 = static_cast<double>(i + 1) / static_cast<double>(segments);
+                if (path.kind() == PathKind::linear_spline) line_to(cr, path.point(u1));
+                else add_cubic_piece(cr, path, u0, u1);
+            }
+            return;
+        }
+        case PathKind::complex: {
+            const auto view = complex_view(path);
+            if (!view) break;
+            for (std::size_t i = 0; i < view->parts.size(); ++i) {
+                const double end = i + 1 < view->cues.size() ? view->cues[i + 1] : 1.0;
+                if (end <= view->cues[i]) continue;  // an empty span is skipped, as in evaluation
+                add_path_range(cr, view->parts[i], tolerance);
+            }
+            return;
+        }
+        case PathKind::reparametrized: {
+            // The same shape as its source, so the source's exact curves draw it.
+            if (const Path* source = reparametrized_source(path)) {
+                add_path_range(cr, *source, tolerance);
+                return;
+            }
+            break;
+        }
+        default: break;
+    }
+    add_flattened(cr, path, tolerance);
+}
+
+}  // namespace
+
+void add_path(cairo_t* cr, const Path& path, double tolerance) {
+    if (!std::isfinite(tolerance) || tolerance <= 0.0) tolerance = 0.25;
+    add_path_range(cr, path, tolerance);
+}
+
+}  // namespace grape::detail
+
+namespace grape {
+
+namespace {
+
+// Cue positions (in u of the whole) of a complex path and of complex paths nested in it.
+void collect_cues(const Path& path, double u0, double u1, std::vector<double>& out) {
+    if (path.kind() != PathKind::complex) return;
+    const auto view = detail::complex_view(path);
+    if (!view) return;
+    for (std::size_t i = 0; i < view->parts.size(); ++i) {
+        const double a = view->cues[i];
+        const double b = i + 1 < view->cues.size() ? view->cues[i + 1] : 1.0;
+        if (b <= a) continue;
+        out.push_back(u0 + (u1 - u0) * a);
+        collect_cues(view->parts[i], u0 + (u1 - u0) * a, u0 + (u1 - u0) * b, out);
+    }
+}
+
+// Draws a segment given in output units, whatever the transform.
+void device_line(Canvas& canvas, Vec2 a, Vec2 b, const StrokeStyle& style) {
+    canvas.push();
+    canvas.set_transform({});
+    canvas.stroke_line(a, b, style);
+    canvas.pop();
+}
+
+}  // namespace
+
+void draw_path(Canvas& canvas, const Path& path, const PathStyle& style) {
+    canvas.stroke_path(path, style.stroke);
+    const Affine t = canvas.transform();
+    const auto device_normal = [&](double u) {
+        // The normal in output space, so ticks stay perpendicular under any transform.
+        return normalized(perpendicular(t.apply_vector(path.d1(u))));
+    };
+    if (std::isfinite(style.ticks) && style.ticks > 0.0) {
+        const StrokeStyle tick{.color = style.tick_color, .width = 1.0, .cap = LineCap::butt};
+        const auto count = static_cast<long>(std::min(10000.0, std::floor(1.0 / style.ticks + 1e-9)));
+        for (long i = 0; i <= count; ++i) {
+            const double u = std::min(1.0, static_cast<double>(i) * style.ticks);
+            const Vec2 p = t.apply(path.point(u));
+            const Vec2 n = device_normal(u) * (0.5 * style.tick_length);
+            device_line(canvas, p - n, p + n, tick);
+        }
+    }
+    if (style.tangents > 0) {
+        const StrokeStyle arrow{.color = style.tangent_color, .width = 1.5};
+        const int n = std::min(style.tangents, 10000);
+        for (int i = 0; i < n; ++i) {
+            const double u = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
+            const Vec2 p = t.apply(path.point(u));
+            const Vec2 dir = normalized(t.apply_vector(path.d1(u)));
+            if (dir == Vec2{}) continue;
+            const Vec2 tip = p + dir * style.tangent_length;
+            const Vec2 side = perpendicular(dir) * 4.0;
+            device_line(canvas, p, tip, arrow);
+            device_line(canvas, tip, tip - dir * 7.0 + side, arrow);
+            device_line(canvas, tip, tip - dir * 7.0 - side, arrow);
+        }
+    }
+    if (style.cues) {
+        std::vector<double> cues;
+        collect_cues(path, 0.0, 1.0, cues);
+        for (double u : cues) {
+            canvas.dot(path.point(u), 4.0, style.cue_color);
+            canvas.text(path.point(u), " " + [&] {
+                char buffer[16];
+                std::snprintf(buffer, sizeof buffer, "%.3g", u);
+                return std::string(buffer);
+            }(), {.color = style.cue_color, .size = 10.0});
+        }
+    }
+    if (style.ends) {
+        canvas.dot(path.point(1.0), 3.5, style.stroke.color);
+        canvas.dot(path.point(0.0), 3.5, style.stroke.color);
+        canvas.dot(path.point(0.0), 2.0, colors::white);
+    }
+}
+
+void draw_plot(Canvas& canvas, const Rect& area, std::span<const PlotSeries> series, std::string_view title) {
+    canvas.push();
+    canvas.set_transform({});
+    const double left = area.x + 58.0;
+    const double right = area.x + area.width - 10.0;
+    const double top = area.y + (title.empty() ? 10.0 : 26.0);
+    const double bottom = area.y + area.height - 24.0;
+    Bounds box;
+    for (const PlotSeries& s : series) {
+        const std::size_t n = std::min(s.x.size(), s.y.size());
+        for (std::size_t i = 0; i < n; ++i)
+            if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) box.add(Vec2{s.x[i], s.y[i]});
+    }
+    if (!title.empty()) canvas.text({area.x + 0.5 * area.width, area.y + 16.0}, title, {.size = 13.0, .align = TextAlign::centre, .bold = true});
+    const StrokeStyle axis{.color = colors::grey, .width = 1.0, .cap = LineCap::butt};
+    canvas.stroke_line({left, top}, {left, bottom}, axis);
+    canvas.stroke_line({left, bottom}, {right, bottom}, axis);
+    if (!is_finite(box.min) || right <= left || bottom <= top) {
+        canvas.pop();
+        return;
+    }
+    // A flat series still gets a visible band instead of a division by zero.
+    if (!(box.max.y - box.min.y > 1e-300)) {
+        const double pad = std::max(1e-12, std::abs(box.min.y) * 1e-6);
+        box.min.y -= pad;
+        box.max.y += pad;
+    }
+    if (!(box.max.x - box.min.x > 0.0)) box.max.x = box.min.x + 1.0;
+    const auto map = [&](double x, double y) {
+        return Vec2{left + (x - box.min.x) / (box.max.x - box.min.x) * (right - left),
+                    bottom - (y - box.min.y) / (box.max.y - box.min.y) * (bottom - top)};
+    };
+    const auto label = [](double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.4g", v);
+        return std::string(buffer);
+    };
+    const TextStyle small{.color = colors::grey, .size = 10.0, .align = TextAlign::right};
+    canvas.text({left - 4.0, top + 8.0}, label(box.max.y), small);
+    canvas.text({left - 4.0, bottom}, label(box.min.y), small);
+    canvas.text({left, bottom + 14.0}, label(box.min.x), {.color = colors::grey, .size = 10.0});
+    canvas.text({right, bottom + 14.0}, label(box.max.x), small);
+    double legend_y = top + 12.0;
+    for (const PlotSeries& s : series) {
+        std::vector<Vec2> points;
+        const std::size_t n = std::min(s.x.size(), s.y.size());
+        points.reserve(n);
+        for (std::size_t i = 0; i < n; ++i)
+            if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) points.push_back(map(s.x[i], s.y[i]));
+        canvas.stroke_polyline(points, s.stroke);
+        if (!s.label.empty()) {
+            canvas.stroke_line({right - 150.0, legend_y - 4.0}, {right - 130.0, legend_y - 4.0}, s.stroke);
+            canvas.text({right - 124.0, legend_y}, s.label, {.color = s.stroke.color, .size = 11.0});
+            legend_y += 15.0;
+        }
+    }
+    canvas.pop();
+}
+
+}  // namespace grape
