@@ -51,7 +51,7 @@ struct ParabolaSetup {
     double mass = 1.0;
     double force_x = 0.0;    ///< constant sideways force (potential −force_x·x)
     DriftDef drift{.method = DriftControl::none};  ///< implicit method only
-    Rk45Def rk45;
+    Rk45Def rk45{};
 };
 
 /// The state of a parabola run in world coordinates.

@@ -336,6 +336,15 @@ struct ConstraintResidual {
     double distance = 0.0;  ///< |C|/|∇C|, in world units: how far the particles are off
 };
 
+/// One scalar row of the constraint system at the current state (a fixed point has two).
+struct ConstraintRow {
+    ConstraintId constraint{};  ///< the constraint the row belongs to
+    double value = 0.0;         ///< C
+    double rate = 0.0;          ///< Ċ = J·v
+    double jdot_v = 0.0;        ///< J̇q̇ = C̈ at zero acceleration
+    double gradient_norm = 0.0; ///< |∇C| = |J| over all the row's coordinates
+};
+
 /// What a force function sees and writes: the state being evaluated (an integrator stage)
 /// and the forces accumulated so far (exerted, then earlier generators in order).
 struct ForceContext {
@@ -452,6 +461,8 @@ public:
     double energy() const { return kinetic_energy() + potential_energy(); }
     /// Residuals of every constraint, in creation order.
     std::vector<ConstraintResidual> residuals() const;
+    /// Every scalar row: C, Ċ, J̇q̇ and |∇C| (to check a constraint's derivatives).
+    std::vector<ConstraintRow> constraint_rows() const;
     /// The largest residual over all constraints (zeros when there are none).
     ConstraintResidual max_residual() const;
     /// Evaluates the constrained accelerations at the current state without stepping

@@ -317,6 +317,17 @@ std::vector<ConstraintResidual> ParticleSystem::residuals() const {
     return out;
 }
 
+std::vector<ConstraintRow> ParticleSystem::constraint_rows() const {
+    auto& s = *solver_;
+    s.owner = const_cast<ParticleSystem*>(this);  // the workspace is scratch; the state is not touched
+    if (s.dirty) s.build_topology();
+    s.evaluate_rows(positions_, velocities_);
+    std::vector<ConstraintRow> out(s.rows);
+    for (std::uint32_t r = 0; r < s.rows; ++r)
+        out[r] = {{s.row_constraint[r]}, s.c[r], s.c_dot[r], s.jdot_v[r], std::sqrt(s.gradient_norm2[r])};
+    return out;
+}
+
 ConstraintResidual ParticleSystem::max_residual() const {
     ConstraintResidual worst;
     for (const auto& r : residuals()) {

@@ -154,8 +154,12 @@ StepStats Stepper::step(SecondOrderSystem& system, double t, std::span<double> q
         bool have_k1 = false;
         bool last_rejected = false;
         while (done < dt) {
-            const bool last = h >= dt - done;
-            if (last) h = dt - done;
+            // Split what is left of the frame into equal sub-steps no longer than h, so the
+            // frame does not end with a sliver step.
+            const double left = dt - done;
+            const bool last = h >= left;
+            if (last) h = left;
+            else if (tol > 0.0) h = left / std::ceil(left / h);
             const double ts = t + done;
             if (!have_k1) f(ts, y, k1);
             for (std::size_t i = 0; i < N; ++i) tmp[i] = y[i] + h * a21 * k1[i];

@@ -218,7 +218,7 @@ SolveStatus SolverWorkspace::solve() {
             }
         } else {
             ldlt.compute(dense_matrix);
-            const auto d = ldlt.vectorD().cwiseAbs();
+            const Eigen::VectorXd d = ldlt.vectorD().cwiseAbs();
             if (ldlt.info() == Eigen::Success && d.minCoeff() > singular_pivot_ratio * d.maxCoeff()) {
                 lambda = ldlt.solve(rhs);
             } else {
@@ -235,7 +235,7 @@ SolveStatus SolverWorkspace::solve() {
             sparse_ldlt.factorize(sparse_matrix);
             bool ok = sparse_ldlt.info() == Eigen::Success;
             if (ok) {
-                const auto d = sparse_ldlt.vectorD().cwiseAbs();
+                const Eigen::VectorXd d = sparse_ldlt.vectorD().cwiseAbs();
                 ok = d.minCoeff() > singular_pivot_ratio * d.maxCoeff();
             }
             if (ok) {
