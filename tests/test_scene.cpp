@@ -1,1 +1,483 @@
+// scene: JSON load/save. Loaded objects are checked against the numbers in the file,
+// save → load is checked to give bit-identical paths, and every kind of bad input is checked
+// to name its JSON pointer and the reason.
+#include <grape/error.hpp>
+#include <grape/scene.hpp>
+
+#include "seed_paths.hpp"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using grape::Path;
+using grape::Scene;
+using grape::Vec2;
+
+// A scene using every path kind, a named curve, references and a simulation.
+const char* const complete_scene = R"json({
+  "grape_scene": 1,
+  "name": "everything",
+  "view": {"width": 800, "height": 600, "ticks": 0.05},
+  "paths": [
+    {"name": "line", "path": {"kind": "linear", "start": [0, 0], "end": [3, 4]}},
+    {"name": "circle", "path": {"kind": "circle", "centre": [150, 200], "radius": 50, "start_angle": 6.283185307179586, "end_angle": 0}},
+    {"name": "ellipse", "path": {"kind": "elliptical_arc", "centre": [0, 0], "rx": 80, "ry": 30, "rotation": 0.5, "start_angle": 0, "end_angle": 3}},
+    {"name": "spiral", "path": {"kind": "spiral", "centre": [100, 100], "start_radius": 200, "end_radius": 0}},
+    {"name": "sine", "path": {"kind": "sine_wave", "start": [350, 200], "end": [200, 200], "frequency": 3, "amplitude": 50}},
+    {"name": "quad", "path": {"kind": "quadratic_bezier", "points": [[0, 0], [50, 100], [100, 0]]}},
+    {"name": "bez", "path": {"kind": "cubic_bezier", "points": [[20, 20], [400, 200], [400, 600], [600, 600]], "reparametrize": true}},
+    {"name": "p1", "path": {"kind": "linear_spline", "points": [[20, 20], [100, 100], [120, 50], [300, 300]]}},
+    {"name": "p2", "path": {"kind": "cosine_spline", "points": [[20, 120], [100, 200], [120, 150]]}},
+    {"name": "herm", "path": {"kind": "hermite_spline", "points": [[0, 0], [100, 50]], "tangents": [[100, 200], [0, -300]]}},
+    {"name": "p3", "path": {"kind": "catmull_rom_spline", "points": [[20, 220], [100, 300], [120, 250], [300, 500]], "type": "centripetal"}},
+    {"name": "shot", "path": {"kind": "physics", "position": [0, 0], "velocity": [100, -200], "acceleration": [0, 400], "seconds": 1}},
+    {"name": "drawn", "path": {"kind": "svg", "data": "M10 10 C 20 80 90 80 100 10 A 40 20 30 1 0 150 60 Z"}},
+    {"name": "nested", "path": {"kind": "complex", "parts": ["circle", {"kind": "complex", "parts": ["line", "quad"]}, "sine"], "cues": [0, 0.5, 0.75]}}
+  ],
+  "curves": [{"name": "bouncy", "curve": "back-out(2.5)"}],
+  "animations": [
+    {"name": "a", "path": "spiral", "curve": "quad-in-out", "duration": 2, "delay": 0.5, "repeat": 2, "yoyo": true},
+    {"path": {"kind": "linear", "start": [0, 0], "end": [10, 0]}, "curve": "bouncy", "duration": 1, "reversed": true, "repeat": -1}
+  ],
+  "simulations": [
+    {"name": "parabola", "integrator": "rk4", "drift": "none", "dt": 0.01, "duration": 5,
+     "particles": [{"position": [100, -100], "velocity": [0, 0], "mass": 1}, {"position": [0, 0], "mass": "pinned"}],
+     "forces": [{"kind": "gravity", "acceleration": [0, 500]}, {"kind": "drag", "k": 0.1},
+                {"kind": "spring", "a": 0, "b": 1, "rest_length": 10, "stiffness": 5, "damping": 0.5}],
+     "constraints": [{"kind": "conic", "a": 0, "coefficients": [1, 0, 0, 0, 100, 0]},
+                     {"kind": "distance", "a": 0, "b": 1}, {"kind": "anchor", "a": 0, "point": [0, 0], "length": 50},
+                     {"kind": "fixed_point", "a": 1, "point": [0, 0]}]}
+  ]
+})json";
+
+// Bit-identical evaluation at many parameters (including the ends and outside [0, 1]).
+void expect_same_path(const Path& a, const Path& b, const std::string& label) {
+    ASSERT_EQ(a.kind(), b.kind()) << label;
+    for (int i = -5; i <= 105; ++i) {
+        const double u = i / 100.0;
+        ASSERT_EQ(a.point(u), b.point(u)) << label << " at u = " << u;
+        ASSERT_EQ(a.d1(u), b.d1(u)) << label << " at u = " << u;
+        ASSERT_EQ(a.d2(u), b.d2(u)) << label << " at u = " << u;
+    }
+    EXPECT_EQ(a.length(), b.length()) << label;
+}
+
+void expect_same_scene(const Scene& a, const Scene& b) {
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.view.width, b.view.width);
+    EXPECT_EQ(a.view.height, b.view.height);
+    EXPECT_EQ(a.view.ticks, b.view.ticks);
+    ASSERT_EQ(a.paths.size(), b.paths.size());
+    for (std::size_t i = 0; i < a.paths.size(); ++i) {
+        EXPECT_EQ(a.paths[i].name, b.paths[i].name);
+        expect_same_path(a.paths[i].path, b.paths[i].path, a.paths[i].name);
+    }
+    ASSERT_EQ(a.curves.size(), b.curves.size());
+    for (std::size_t i = 0; i < a.curves.size(); ++i) {
+        EXPECT_EQ(a.curves[i].name, b.curves[i].name);
+        EXPECT_TRUE(a.curves[i].curve == b.curves[i].curve);
+    }
+    ASSERT_EQ(a.animations.size(), b.animations.size());
+    for (std::size_t i = 0; i < a.animations.size(); ++i) {
+        const auto& x = a.animations[i];
+        const auto& y = b.animations[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.path_name, y.path_name);
+        expect_same_path(x.path, y.path, "animation " + std::to_string(i));
+        EXPECT_TRUE(x.curve == y.curve);
+        EXPECT_EQ(x.curve_name, y.curve_name);
+        EXPECT_EQ(x.duration, y.duration);
+        EXPECT_EQ(x.delay, y.delay);
+        EXPECT_EQ(x.repeat, y.repeat);
+        EXPECT_EQ(x.yoyo, y.yoyo);
+        EXPECT_EQ(x.reversed, y.reversed);
+    }
+    ASSERT_EQ(a.simulations.size(), b.simulations.size());
+    for (std::size_t i = 0; i < a.simulations.size(); ++i) {
+        const auto& x = a.simulations[i];
+        const auto& y = b.simulations[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.integrator, y.integrator);
+        EXPECT_EQ(x.drift, y.drift);
+        EXPECT_EQ(x.dt, y.dt);
+        EXPECT_EQ(x.duration, y.duration);
+        ASSERT_EQ(x.particles.size(), y.particles.size());
+        for (std::size_t k = 0; k < x.particles.size(); ++k) {
+            EXPECT_EQ(x.particles[k].position, y.particles[k].position);
+            EXPECT_EQ(x.particles[k].velocity, y.particles[k].velocity);
+            EXPECT_EQ(x.particles[k].mass, y.particles[k].mass);
+        }
+        ASSERT_EQ(x.forces.size(), y.forces.size());
+        for (std::size_t k = 0; k < x.forces.size(); ++k) {
+            EXPECT_EQ(x.forces[k].kind, y.forces[k].kind);
+            EXPECT_EQ(x.forces[k].gravity, y.forces[k].gravity);
+            EXPECT_EQ(x.forces[k].drag, y.forces[k].drag);
+            EXPECT_EQ(x.forces[k].stiffness, y.forces[k].stiffness);
+        }
+        ASSERT_EQ(x.constraints.size(), y.constraints.size());
+        for (std::size_t k = 0; k < x.constraints.size(); ++k) {
+            EXPECT_EQ(x.constraints[k].kind, y.constraints[k].kind);
+            EXPECT_EQ(x.constraints[k].a, y.constraints[k].a);
+            EXPECT_EQ(x.constraints[k].point, y.constraints[k].point);
+            EXPECT_EQ(x.constraints[k].length, y.constraints[k].length);
+            for (int m = 0; m < 6; ++m) EXPECT_EQ(x.constraints[k].conic[m], y.constraints[k].conic[m]);
+        }
+    }
+}
+
+void expect_error(const std::string& json, const std::string& pointer, const std::string& reason) {
+    try {
+        (void)grape::load_scene(json);
+        ADD_FAILURE() << "accepted: " << json;
+    } catch (const grape::Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("scene: " + pointer + ": "), std::string::npos) << "message: " << what << "\nwanted pointer " << pointer;
+        EXPECT_NE(what.find(reason), std::string::npos) << "message: " << what << "\nwanted reason " << reason;
+    }
+}
+
+// ---------------------------------------------------------------------------------- load
+
+TEST(SceneLoad, ReadsEveryPart) {
+    const Scene s = grape::load_scene(complete_scene);
+    EXPECT_EQ(s.name, "everything");
+    EXPECT_EQ(s.view.width, 800);
+    EXPECT_EQ(s.view.ticks, 0.05);
+    ASSERT_EQ(s.paths.size(), 14u);
+    // Closed forms of the simplest kinds, straight from the numbers in the file.
+    EXPECT_EQ(s.find_path("line")->path.length(), 5.0);
+    EXPECT_NEAR(s.find_path("circle")->path.length(), 2 * grape::pi * 50, 1e-10);  // exact arc, ~1e-13 relative
+    EXPECT_EQ(s.find_path("circle")->path.point(0.25), grape::CirclePath({150, 200}, 50, 2 * grape::pi, 0).point(0.25));
+    EXPECT_EQ(s.find_path("bez")->path.kind(), grape::PathKind::reparametrized);
+    EXPECT_EQ(s.find_path("drawn")->path.kind(), grape::PathKind::complex);
+    // References share the named path (same shape object, not a copy).
+    const auto* nested = s.find_path("nested");
+    ASSERT_NE(nested, nullptr);
+    EXPECT_EQ(nested->path.point(0.0), s.find_path("circle")->path.point(0.0));
+    EXPECT_TRUE(s.animations[0].path == s.find_path("spiral")->path);
+    EXPECT_EQ(s.animations[0].path_name, "spiral");
+    EXPECT_TRUE(s.animations[0].curve == grape::Curve::quad_in_out());
+    EXPECT_EQ(s.animations[0].repeat, 2);
+    EXPECT_TRUE(s.animations[0].yoyo);
+    EXPECT_EQ(s.animations[1].curve_name, "bouncy");
+    EXPECT_TRUE(s.animations[1].curve == grape::Curve::back(grape::EaseDirection::out, 2.5));
+    EXPECT_TRUE(s.animations[1].reversed);
+    EXPECT_EQ(s.animations[1].repeat, -1);
+    ASSERT_EQ(s.simulations.size(), 1u);
+    const auto& sim = s.simulations[0];
+    EXPECT_EQ(sim.integrator, "rk4");
+    EXPECT_EQ(sim.drift, "none");
+    EXPECT_TRUE(std::isinf(sim.particles[1].mass));
+    EXPECT_EQ(sim.forces[2].kind, grape::SceneForceKind::spring);
+    EXPECT_EQ(sim.constraints[0].conic[4], 100.0);
+    EXPECT_EQ(sim.constraints[1].length, 0.0);  // 0: keep the starting distance
+}
+
+TEST(SceneLoad, DefaultsAreDocumented) {
+    const Scene s = grape::load_scene(R"({"animations": [{"path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 3}]})");
+    ASSERT_EQ(s.animations.size(), 1u);
+    const auto& a = s.animations[0];
+    EXPECT_TRUE(a.curve == grape::Curve::linear());
+    EXPECT_EQ(a.delay, 0.0);
+    EXPECT_EQ(a.repeat, 0);
+    EXPECT_FALSE(a.yoyo);
+    EXPECT_FALSE(a.reversed);
+    EXPECT_EQ(s.view.width, 640);
+    EXPECT_EQ(s.view.height, 480);
+}
+
+TEST(SceneLoad, SeedScenesMatchTheCatalogue) {
+    // The seed's nested example written as JSON gives the catalogue's path exactly.
+    const Scene s = grape::load_scene(R"({"paths": [{"name": "nested", "path": {"kind": "complex", "cues": [0, 0.5, 0.75], "parts": [
+        {"kind": "complex", "cues": [0, 0.25, 0.5], "parts": [
+            {"kind": "circle", "centre": [150, 200], "radius": 50, "start_angle": 6.283185307179586, "end_angle": 0},
+            {"kind": "circle", "centre": [250, 200], "radius": 50, "start_angle": 3.141592653589793, "end_angle": 9.42477796076938},
+            {"kind": "circle", "centre": [300, 200], "radius": 100, "start_angle": 3.141592653589793, "end_angle": 9.42477796076938}]},
+        {"kind": "cubic_bezier", "points": [[200, 200], [350, 0], [350, 500], [350, 200]]},
+        {"kind": "sine_wave", "start": [350, 200], "end": [200, 200], "frequency": 3, "amplitude": 50}]}}]})");
+    expect_same_path(s.paths[0].path, grape::scenes::seed_nested_complex(), "seed nested complex");
+}
+
+// ------------------------------------------------------------------------------ round trip
+
+TEST(SceneRoundTrip, SaveThenLoadGivesTheSameObjects) {
+    const Scene first = grape::load_scene(complete_scene);
+    const std::string text = grape::save_scene(first);
+    const Scene second = grape::load_scene(text);
+    expect_same_scene(first, second);
+    // Saving is a fixed point: the second save is the same text.
+    EXPECT_EQ(grape::save_scene(second), text);
+    // References stay references.
+    EXPECT_NE(text.find("\"path\": \"spiral\""), std::string::npos);
+    EXPECT_NE(text.find("\"curve\": \"bouncy\""), std::string::npos);
+}
+
+TEST(SceneRoundTrip, PathsBuiltInCodeSaveToo) {
+    for (const auto& [name, path] : grape::scenes::path_gallery()) {
+        const Path back = grape::path_from_json(grape::path_to_json(path));
+        expect_same_path(path, back, name);
+    }
+    for (const auto& [name, path] : grape::scenes::seed_paths()) {
+        const Path back = grape::path_from_json(grape::path_to_json(path));
+        expect_same_path(path, back, name);
+    }
+}
+
+// Random scenes (fixed seed): random path trees of every kind, curves and timings.
+TEST(SceneRoundTrip, RandomScenes) {
+    std::mt19937_64 rng(20261122);
+    std::uniform_real_distribution<double> coord(-500, 500);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const auto pt = [&] { return Vec2{coord(rng), coord(rng)}; };
+    const auto points = [&](int n) {
+        std::vector<Vec2> p;
+        for (int i = 0; i < n; ++i) p.push_back(pt());
+        return p;
+    };
+    std::function<Path(int)> random_path = [&](int depth) -> Path {
+        const int kind = static_cast<int>(rng() % (depth < 2 ? 13 : 12));
+        switch (kind) {
+            case 0: return grape::LinearPath(pt(), pt());
+            case 1: return grape::CirclePath(pt(), 1 + 100 * unit(rng), coord(rng) / 50, coord(rng) / 50);
+            case 2: return grape::EllipticalArcPath(pt(), 1 + 100 * unit(rng), 1 + 50 * unit(rng), unit(rng) * 3, 0, 1 + unit(rng) * 5);
+            case 3: return grape::SpiralPath(pt(), 100 * unit(rng), 100 * unit(rng), 0, 1 + 10 * unit(rng));
+            case 4: return grape::SineWavePath(pt(), pt(), 1 + 5 * unit(rng), 50 * unit(rng));
+            case 5: return grape::QuadraticBezierPath(pt(), pt(), pt(), rng() % 2 == 0);
+            case 6: return grape::CubicBezierPath(pt(), pt(), pt(), pt(), rng() % 2 == 0);
+            case 7: { const auto p = points(2 + static_cast<int>(rng() % 5)); return grape::LinearSplinePath(std::span<const Vec2>(p)); }
+            case 8: { const auto p = points(2 + static_cast<int>(rng() % 5)); return grape::CosineSplinePath(std::span<const Vec2>(p)); }
+            case 9: {
+                const auto p = points(2 + static_cast<int>(rng() % 5));
+                const auto t = points(static_cast<int>(p.size()));
+                return grape::HermiteSplinePath(std::span<const Vec2>(p), std::span<const Vec2>(t));
+            }
+            case 10: {
+                const auto p = points(2 + static_cast<int>(rng() % 5));
+                return grape::CatmullRomSplinePath(std::span<const Vec2>(p), static_cast<grape::CatmullRom>(rng() % 3));
+            }
+            case 11: return grape::PhysicsPath(pt(), pt(), pt(), 0.1 + unit(rng) * 3);
+            default: {
+                std::vector<Path> parts;
+                const int n = 1 + static_cast<int>(rng() % 4);
+                for (int i = 0; i < n; ++i) parts.push_back(random_path(depth + 1));
+                if (rng() % 2 == 0) return grape::ComplexPath::by_length(parts);
+                std::vector<double> cues{0.0};
+                for (int i = 1; i < n; ++i) cues.push_back(std::min(1.0, cues.back() + unit(rng) / n));
+                return grape::ComplexPath(parts, cues);
+            }
+        }
+    };
+    const auto names = grape::curve_names();
+    for (int round = 0; round < 30; ++round) {
+        Scene s;
+        s.name = "random " + std::to_string(round);
+        for (int i = 0; i < 4; ++i) s.paths.push_back({"p" + std::to_string(i), random_path(0)});
+        for (int i = 0; i < 3; ++i) {
+            grape::SceneAnimation a;
+            a.path = i == 0 ? s.paths[1].path : random_path(0);
+            a.path_name = i == 0 ? "p1" : "";
+            a.curve = grape::parse_curve(names[rng() % names.size()]);
+            a.duration = 0.1 + unit(rng) * 5;
+            a.delay = unit(rng);
+            a.repeat = static_cast<int>(rng() % 4) - 1;
+            a.yoyo = rng() % 2 == 0;
+            a.reversed = rng() % 2 == 0;
+            s.animations.push_back(a);
+        }
+        const std::string text = grape::save_scene(s);
+        const Scene back = grape::load_scene(text);
+        expect_same_scene(s, back);
+        EXPECT_EQ(grape::save_scene(back), text);
+    }
+}
+
+TEST(SceneRoundTrip, Files) {
+    const auto dir = std::filesystem::temp_directory_path() / "grape_test_scene";
+    std::filesystem::create_directories(dir);
+    const Scene s = grape::load_scene(complete_scene);
+    grape::save_scene_file(s, dir / "copy.json");
+    expect_same_scene(s, grape::load_scene_file(dir / "copy.json"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "copy.json.partial"));
+    try {
+        grape::save_scene_file(s, "/nonexistent/dir/x.json");
+        ADD_FAILURE();
+    } catch (const grape::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/x.json"), std::string::npos) << e.what();
+    }
+    try {
+        (void)grape::load_scene_file(dir / "missing.json");
+        ADD_FAILURE();
+    } catch (const grape::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("missing.json: no such file"), std::string::npos) << e.what();
+    }
+    // Errors inside a file name the file and the pointer.
+    std::ofstream(dir / "bad.json") << R"({"animations": [{"path": "nowhere", "duration": 1}]})";
+    try {
+        (void)grape::load_scene_file(dir / "bad.json");
+        ADD_FAILURE();
+    } catch (const grape::Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("bad.json: scene: /animations/0/path: unknown path \"nowhere\""), std::string::npos) << what;
+    }
+}
+
+// ------------------------------------------------------------------------------ timing
+
+TEST(SceneAnimation, ProgressFollowsDelayRepeatYoyoAndReverse) {
+    grape::SceneAnimation a;
+    a.path = grape::LinearPath({0, 0}, {100, 0});
+    a.duration = 2.0;
+    a.delay = 1.0;
+    // Linear curve: progress is the fraction of the play, exactly (binary fractions).
+    EXPECT_EQ(a.progress(0.0), 0.0);
+    EXPECT_EQ(a.progress(1.0), 0.0);
+    EXPECT_EQ(a.progress(2.0), 0.5);
+    EXPECT_EQ(a.progress(3.0), 1.0);
+    EXPECT_EQ(a.progress(50.0), 1.0);  // plays once, then rests at the end
+    EXPECT_EQ(a.position(2.5), (Vec2{75, 0}));
+    EXPECT_EQ(a.end_time(), 3.0);
+    a.repeat = 2;
+    a.yoyo = true;
+    EXPECT_EQ(a.progress(3.5), 0.75);  // second play runs backwards: 1 − 0.25
+    EXPECT_EQ(a.progress(5.0), 0.0);   // end of the backward play
+    EXPECT_EQ(a.progress(5.5), 0.25);  // third play forwards again
+    EXPECT_EQ(a.progress(7.0), 1.0);
+    EXPECT_EQ(a.progress(99.0), 1.0);
+    EXPECT_EQ(a.end_time(), 7.0);
+    a.reversed = true;
+    EXPECT_EQ(a.progress(0.0), 1.0);
+    EXPECT_EQ(a.progress(1.5), 0.75);
+    EXPECT_EQ(a.progress(3.5), 0.25);
+    a.repeat = -1;
+    EXPECT_TRUE(std::isinf(a.end_time()));
+    EXPECT_EQ(a.progress(1001.5), 0.75);  // 500 plays later: even play, reversed
+    // The curve applies within each play.
+    a = {};
+    a.duration = 1.0;
+    a.curve = grape::Curve::quad_in();
+    EXPECT_EQ(a.progress(0.5), 0.25);
+}
+
+// ------------------------------------------------------------------------------ errors
+
+TEST(SceneErrors, NameThePointerAndTheReason) {
+    // The issue's own example: cues out of order in the fourth animation's path.
+    expect_error(R"({"animations": [
+        {"path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},
+        {"path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},
+        {"path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},
+        {"path": {"kind": "complex", "parts": [{"kind": "linear", "start": [0, 0], "end": [1, 0]},
+                                              {"kind": "linear", "start": [1, 0], "end": [2, 0]},
+                                              {"kind": "linear", "start": [2, 0], "end": [3, 0]}],
+                  "cues": [0, 0.6, 0.5]}, "duration": 1}]})",
+                 "/animations/3/path/cues/2", "cues must not decrease (0.5 after 0.59999999999999998)");
+    const std::string line = R"({"kind": "linear", "start": [0, 0], "end": [1, 0]})";
+    const auto anim = [&](const std::string& fields) { return R"({"animations": [{"path": )" + line + ", " + fields + "}]}"; };
+    expect_error(anim(R"("duration": -1)"), "/animations/0/duration", "must be positive (got -1)");
+    expect_error(anim(R"("duration": "long")"), "/animations/0/duration", "expected a number, got a string");
+    expect_error(anim(R"("delay": 1)"), "/animations/0", "missing field \"duration\"");
+    expect_error(anim(R"("duration": 1, "delay": -2)"), "/animations/0/delay", "must not be negative");
+    expect_error(anim(R"("duration": 1, "repeat": 1.5)"), "/animations/0/repeat", "expected a whole number");
+    expect_error(anim(R"("duration": 1, "repeat": -3)"), "/animations/0/repeat", "must be −1 (forever)");
+    expect_error(anim(R"("duration": 1, "yoyo": 1)"), "/animations/0/yoyo", "expected true or false, got a number");
+    expect_error(anim(R"("duration": 1, "duraton": 1)"), "/animations/0/duraton", "unknown field \"duraton\"");
+    expect_error(anim(R"("duration": 1, "curve": "quad-sideways")"), "/animations/0/curve", "quad-sideways");
+    expect_error(R"({"animations": [{"path": "nowhere", "duration": 1}]})", "/animations/0/path", "unknown path \"nowhere\"");
+    expect_error(R"({"animations": [{"path": {"kind": "teleport"}, "duration": 1}]})", "/animations/0/path/kind",
+                 "unknown path kind \"teleport\"");
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "centre": [0, 0]}}]})", "/paths/0/path",
+                 "missing field \"radius\"");
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "centre": [0], "radius": 1}}]})",
+                 "/paths/0/path/centre", "expected a point [x, y]");
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "centre": [0, "x"], "radius": 1}}]})",
+                 "/paths/0/path/centre/1", "expected a number, got a string");
+    // A path constructor's own message, placed at its object.
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "centre": [0, 0], "radius": -1}}]})",
+                 "/paths/0/path", "radius");
+    expect_error(R"({"paths": [{"name": "s", "path": {"kind": "linear_spline", "points": [[0, 0]]}}]})",
+                 "/paths/0/path/points", "too few points: 1 (at least 2)");
+    expect_error(R"({"paths": [{"name": "b", "path": {"kind": "cubic_bezier", "points": [[0, 0], [1, 1], [2, 2], [3, 3], [4, 4]]}}]})",
+                 "/paths/0/path/points", "exactly 4 points (got 5)");
+    expect_error(R"({"paths": [{"name": "h", "path": {"kind": "hermite_spline", "points": [[0, 0], [1, 1]], "tangents": [[1, 0]]}}]})",
+                 "/paths/0/path/tangents", "one tangent per point");
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "catmull_rom_spline", "points": [[0, 0], [1, 1]], "type": "tight"}}]})",
+                 "/paths/0/path/type", "unknown Catmull-Rom type \"tight\"");
+    expect_error(R"({"paths": [{"name": "x", "path": {"kind": "complex", "parts": [], "cues": []}}]})",
+                 "/paths/0/path/parts", "at least one part");
+    expect_error(R"({"paths": [{"name": "x", "path": {"kind": "complex", "parts": [)" + line + R"(], "cues": [0.5]}}]})",
+                 "/paths/0/path/cues/0", "the first cue must be 0");
+    expect_error(R"({"paths": [{"name": "x", "path": {"kind": "complex", "parts": [)" + line + "," + line + R"(], "cues": [0, 1.5]}}]})",
+                 "/paths/0/path/cues/1", "cues must lie in [0, 1]");
+    expect_error(R"({"paths": [{"name": "x", "path": {"kind": "complex", "parts": [)" + line + R"(], "cues": [0, 0.5]}}]})",
+                 "/paths/0/path/cues", "one cue per part");
+    expect_error(R"({"paths": [{"name": "x", "path": {"kind": "svg", "data": "M 0 0 L 1 @"}}]})", "/paths/0/path", "SVG");
+    expect_error(R"({"paths": [{"name": "a", "path": )" + line + R"(}, {"name": "a", "path": )" + line + "}]}",
+                 "/paths/1/name", "duplicate name \"a\"");
+    expect_error(R"({"curves": [{"name": "c", "curve": "nope"}]})", "/curves/0/curve", "nope");
+    expect_error(R"({"view": {"width": 0}})", "/view/width", "must be in [1, 32768]");
+    expect_error(R"({"grape_scene": 2})", "/grape_scene", "unsupported format version");
+    expect_error(R"({"pathz": []})", "/pathz", "unknown field \"pathz\"");
+    expect_error(R"([1, 2])", "/", "expected an object, got an array");
+    // JSON pointer escaping of odd keys: "~" → "~0", "/" → "~1".
+    expect_error(R"({"view": {"a/b~c": 1}})", "/view/a~1b~0c", "unknown field");
+}
+
+TEST(SceneErrors, Simulations) {
+    const auto sim = [](const std::string& fields) {
+        return R"({"simulations": [{"particles": [{"position": [0, 0]}, {"position": [1, 0]}])" +
+               (fields.empty() ? "" : ", " + fields) + "}]}";
+    };
+    EXPECT_NO_THROW((void)grape::load_scene(sim("")));
+    expect_error(sim(R"("integrator": "leapfrog")"), "/simulations/0/integrator", "unknown value \"leapfrog\"");
+    expect_error(sim(R"("drift": "lots")"), "/simulations/0/drift", "unknown value \"lots\"");
+    expect_error(sim(R"("dt": 0)"), "/simulations/0/dt", "must be positive");
+    expect_error(sim(R"("dt": 1e-9, "duration": 100)"), "/simulations/0/duration", "more than 1e7 steps");
+    expect_error(R"({"simulations": [{"particles": []}]})", "/simulations/0/particles", "at least one particle");
+    expect_error(R"({"simulations": [{"particles": [{"position": [0, 0], "mass": 0}]}]})",
+                 "/simulations/0/particles/0/mass", "must be positive");
+    expect_error(R"({"simulations": [{"particles": [{"position": [0, 0], "mass": "heavy"}]}]})",
+                 "/simulations/0/particles/0/mass", "\"pinned\"");
+    expect_error(sim(R"("forces": [{"kind": "wind"}])"), "/simulations/0/forces/0/kind", "unknown force kind \"wind\"");
+    expect_error(sim(R"("forces": [{"kind": "gravity"}])"), "/simulations/0/forces/0", "missing field \"acceleration\"");
+    expect_error(sim(R"("forces": [{"kind": "drag", "k": -1}])"), "/simulations/0/forces/0/k", "must not be negative");
+    expect_error(sim(R"("forces": [{"kind": "spring", "a": 0, "b": 2, "stiffness": 1}])"), "/simulations/0/forces/0/b",
+                 "no particle 2 (the simulation has 2)");
+    expect_error(sim(R"("forces": [{"kind": "spring", "a": 1, "b": 1, "stiffness": 1}])"), "/simulations/0/forces/0/b",
+                 "two different particles");
+    expect_error(sim(R"("constraints": [{"kind": "rope", "a": 0}])"), "/simulations/0/constraints/0/kind",
+                 "unknown constraint kind \"rope\"");
+    expect_error(sim(R"("constraints": [{"kind": "anchor", "a": 0, "point": [0, 0], "length": 0}])"),
+                 "/simulations/0/constraints/0/length", "must be positive");
+    expect_error(sim(R"("constraints": [{"kind": "conic", "a": 0, "coefficients": [1, 2, 3]}])"),
+                 "/simulations/0/constraints/0/coefficients", "expected 6 coefficients");
+    expect_error(sim(R"("constraints": [{"kind": "conic", "a": 0, "coefficients": [0, 0, 0, 0, 0, 1]}])"),
+                 "/simulations/0/constraints/0/coefficients", "not a curve");
+    expect_error(sim(R"("constraints": [{"kind": "distance", "a": -1, "b": 0}])"), "/simulations/0/constraints/0/a",
+                 "no particle -1");
+}
+
+TEST(SceneErrors, SyntaxAndNesting) {
+    try {
+        (void)grape::load_scene("{\"paths\": [1, 2,]}");
+        ADD_FAILURE();
+    } catch (const grape::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("JSON syntax error at byte 17"), std::string::npos) << e.what();
+    }
+    // Deeply nested complex paths are refused, not recursed into without bound.
+    std::string deep = R"({"kind": "linear", "start": [0, 0], "end": [1, 0]})";
+    for (int i = 0; i < 40; ++i) deep = R"({"kind": "complex", "parts": [)" + deep + "]}";
+    std::string where = "/paths/0/path";
+    for (int i = 0; i < 33; ++i) where += "/parts/0";  // the first level past the limit
+    expect_error(R"({"paths": [{"name": "deep", "path": )" + deep + "}]}", where, "nested more than 32 deep");
+}
+
+}  // namespace

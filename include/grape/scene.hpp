@@ -1,0 +1,148 @@
+// grape — scene: JSON files describing paths, curves, animations and simulations
+// (format: docs/scene-format.md, schema: docs/scene.schema.json).
+//
+// Loading validates everything and throws grape::Error naming the JSON pointer of the bad
+// value and the reason ("scene: /animations/3/path/cues/2: cues must not decrease (0.4 after
+// 0.5)"). Saving writes every number with 17 significant digits, so save → load gives the
+// same objects.
+//
+//   grape::Scene scene = grape::load_scene_file("scenes/seed_complex.json");
+//   grape::Vec2 where = scene.animations[0].position(1.5);   // 1.5 s into the scene
+//   grape::save_scene_file(scene, "copy.json");
+#pragma once
+
+#include <grape/curve.hpp>
+#include <grape/math.hpp>
+#include <grape/path.hpp>
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace grape {
+
+/// A path with a name, listed in the scene's "paths" and referred to by animations.
+struct NamedPath {
+    std::string name;  ///< unique within the scene, not empty
+    Path path;         ///< the shape
+};
+
+/// A curve with a name, listed in the scene's "curves" and referred to by animations.
+struct NamedCurve {
+    std::string name;  ///< unique within the scene, not empty
+    Curve curve;       ///< the easing
+};
+
+/// An animation: a path, a curve and its timing, as the anim module plays it.
+struct SceneAnimation {
+    std::string name;        ///< label ("" allowed)
+    Path path;               ///< where
+    std::string path_name;   ///< the NamedPath it uses; "" when the path is given inline
+    Curve curve;             ///< when (default linear)
+    std::string curve_name;  ///< the NamedCurve it uses; "" when given by its own name
+    double duration = 1.0;   ///< seconds per play, > 0
+    double delay = 0.0;      ///< seconds before the first play, ≥ 0
+    int repeat = 0;          ///< plays after the first: 0 plays once, −1 forever
+    bool yoyo = false;       ///< every other play runs backwards
+    bool reversed = false;   ///< the first play runs from the path's end to its start
+
+    /// Progress u along the path at scene time t seconds: curve(τ) going forwards,
+    /// 1 − curve(τ) going backwards (τ the fraction of the current play); before the delay
+    /// the animation sits at its start, after its last play at its end.
+    double progress(double t) const noexcept;
+    /// path.point(progress(t)).
+    Vec2 position(double t) const noexcept { return path.point(progress(t)); }
+    /// Seconds until the last play ends (infinity when repeating forever).
+    double end_time() const noexcept;
+};
+
+/// A particle of a simulation.
+struct SceneParticle {
+    Vec2 position;        ///< world units
+    Vec2 velocity;        ///< world units per second
+    double mass = 1.0;    ///< > 0; infinity pins the particle ("mass": "pinned" in JSON)
+};
+
+/// What kind of force a SceneForce is.
+enum class SceneForceKind { gravity, drag, spring };
+
+/// A force generator of a simulation; the fields used depend on the kind.
+struct SceneForce {
+    SceneForceKind kind = SceneForceKind::gravity;
+    Vec2 gravity;              ///< gravity: acceleration, world units/s²
+    double drag = 0.0;         ///< drag: k ≥ 0 in F = −k·v
+    std::size_t a = 0, b = 0;  ///< spring: particle indices, a ≠ b
+    double rest_length = 0.0;  ///< spring: L ≥ 0
+    double stiffness = 0.0;    ///< spring: k ≥ 0
+    double damping = 0.0;      ///< spring: c ≥ 0
+};
+
+/// What kind of constraint a SceneConstraint is.
+enum class SceneConstraintKind {
+    distance,     ///< |x_a − x_b| = length (length 0 in JSON: the starting distance)
+    anchor,       ///< |x_a − point| = length
+    fixed_point,  ///< x_a = point
+    conic,        ///< A·x² + B·x·y + C·y² + D·x + E·y + F = 0 (the seed's parabola: 1,0,0,0,100,0)
+};
+
+/// A constraint of a simulation; the fields used depend on the kind.
+struct SceneConstraint {
+    SceneConstraintKind kind = SceneConstraintKind::distance;
+    std::size_t a = 0, b = 0;    ///< particle indices (b: distance only)
+    double length = 0.0;         ///< distance, anchor: world units (> 0 for anchor)
+    Vec2 point;                  ///< anchor, fixed_point
+    double conic[6] = {};        ///< conic: A, B, C, D, E, F
+};
+
+/// A particle simulation (the dynamics module runs it).
+struct SceneSimulation {
+    std::string name;                          ///< label ("" allowed)
+    std::string integrator = "rk4";            ///< euler, semi_implicit_euler, midpoint, rk4, velocity_verlet, rk45
+    std::string drift = "baumgarte";           ///< none, baumgarte, projection
+    double dt = 1.0 / 60.0;                    ///< step, seconds, > 0
+    double duration = 10.0;                    ///< seconds to run, > 0
+    std::vector<SceneParticle> particles;      ///< at least one
+    std::vector<SceneForce> forces;            ///< applied in order
+    std::vector<SceneConstraint> constraints;  ///< solved together
+};
+
+/// How a scene is shown by `grape render`.
+struct SceneView {
+    double width = 640.0;       ///< output units, in [1, 32768]
+    double height = 480.0;      ///< output units, in [1, 32768]
+    double ticks = 0.0;         ///< Δu between parametrization ticks on paths (0: none)
+};
+
+/// Everything a scene file holds.
+struct Scene {
+    std::string name;                         ///< title ("" allowed)
+    SceneView view;                           ///< picture settings
+    std::vector<NamedPath> paths;             ///< named paths (drawn, and used by animations)
+    std::vector<NamedCurve> curves;           ///< named curves
+    std::vector<SceneAnimation> animations;   ///< animations (their paths are drawn too)
+    std::vector<SceneSimulation> simulations; ///< particle simulations
+
+    /// The named path; nullptr when there is none.
+    const NamedPath* find_path(std::string_view name) const noexcept;
+    /// The named curve; nullptr when there is none.
+    const NamedCurve* find_curve(std::string_view name) const noexcept;
+};
+
+/// Parses scene JSON text. Throws grape::Error naming the JSON pointer and the reason
+/// (or the byte offset of a syntax error).
+Scene load_scene(std::string_view json);
+/// Reads and parses a scene file; errors also name the file.
+Scene load_scene_file(const std::filesystem::path& file);
+/// The scene as JSON text (indented, 17 significant digits). Paths built in code save too.
+std::string save_scene(const Scene& scene);
+/// Writes the scene to a file (through a temporary: a failure leaves no partial file).
+void save_scene_file(const Scene& scene, const std::filesystem::path& file);
+
+/// A path as scene JSON (one object, as it appears in "paths" or inline).
+std::string path_to_json(const Path& path);
+/// A path from scene JSON text (one object). Throws grape::Error naming the JSON pointer.
+Path path_from_json(std::string_view json);
+
+}  // namespace grape
