@@ -394,6 +394,13 @@ TEST(SpritePlayer, CallbacksMayReplaceThemselves) {
 TEST(SpritePlayer, ConstructionErrorsNameTheArgument) {
     expect_error([] { SpritePlayer p(0); }, {"frame_count", "at least 1", "got 0"});
     expect_error([] { SpritePlayer p(4, {.start_frame = 4}); }, {"start_frame 4", "frame_count 4"});
+    expect_error([] { SpritePlayer p((std::size_t{1} << 30) + 1); }, {"frame_count 1073741825", "too large", "2^30"});
+    SpritePlayer largest(std::size_t{1} << 30, {.rate = -1e12, .mode = PlayMode::ping_pong});
+    largest.advance();  // the largest cycle, 2^31 − 2, still fits in the 32-bit position
+    // The clamped rate is −(2^30 − 2^−23): one step moves −(2^30 − 1) (no carry yet), which
+    // from 0 on the 2^31 − 2 cycle lands on 2^30 − 1, the last frame.
+    EXPECT_EQ(largest.frame(), (std::size_t{1} << 30) - 1);
+
     SpritePlayer player(3);
     expect_error([&] { player.set_frame(3); }, {"set_frame", "k 3", "frame_count 3"});
 }

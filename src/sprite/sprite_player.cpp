@@ -15,8 +15,8 @@ std::string number(double x) {
     return s.str();
 }
 
-// Frame counts beyond this would let 2n − 2 or position + delta overflow std::int64_t.
-constexpr std::size_t max_frame_count = std::size_t{1} << 52;
+// Frame counts up to 2^30 keep 2n − 2 in the 32-bit position (sums are formed in 64 bits).
+constexpr std::size_t max_frame_count = std::size_t{1} << 30;
 
 // A slot whose function can be replaced (or removed) by the function itself while it runs:
 // the running copy is moved out first and put back only if nobody assigned the slot meanwhile.
@@ -61,10 +61,13 @@ SpritePlayer::SpritePlayer(std::size_t frame_count, const SpritePlayerDef& def) 
 }
 
 SpritePlayer::SpritePlayer(const SpritePlayer& other)
-    : position_(other.position_), frame_count_(other.frame_count_), whole_(other.whole_),
-      fraction_(other.fraction_), remainder_(other.remainder_), rate_(other.rate_), playable_(other.playable_),
-      mode_(other.mode_), playing_(other.playing_), finished_(other.finished_),
+    : position_(other.position_), frame_count_(other.frame_count_), whole_(other.whole_), mode_(other.mode_),
+      playing_(other.playing_), finished_(other.finished_), fraction_(other.fraction_),
+      remainder_(other.remainder_), playable_(other.playable_),
       callbacks_(other.callbacks_ ? std::make_unique<Callbacks>(*other.callbacks_) : nullptr) {}
+
+SpritePlayer::SpritePlayer(SpritePlayer&&) noexcept = default;
+SpritePlayer& SpritePlayer::operator=(SpritePlayer&&) noexcept = default;
 
 SpritePlayer& SpritePlayer::operator=(const SpritePlayer& other) {
     if (this != &other) {
@@ -78,26 +81,27 @@ SpritePlayer::~SpritePlayer() = default;
 
 void SpritePlayer::init(std::size_t frame_count, const SpritePlayerDef& def) {
     if (frame_count > max_frame_count) {
-        throw Error("SpritePlayer: frame_count " + std::to_string(frame_count) + " is too large (max 2^52)");
+        throw Error("SpritePlayer: frame_count " + std::to_string(frame_count) + " is too large (max 2^30)");
     }
     if (def.start_frame >= frame_count) {
         throw Error("SpritePlayer: start_frame " + std::to_string(def.start_frame) +
                     " is past the last frame (frame_count " + std::to_string(frame_count) + ")");
     }
-    frame_count_ = static_cast<std::int64_t>(frame_count);
+    frame_count_ = static_cast<std::int32_t>(frame_count);
     mode_ = def.mode;
     set_rate(def.rate);
-    position_ = static_cast<std::int64_t>(def.start_frame);
+    position_ = static_cast<std::int32_t>(def.start_frame);
 }
 
 std::int64_t SpritePlayer::period() const noexcept {
-    if (mode_ != PlayMode::ping_pong) return frame_count_;
-    return frame_count_ > 1 ? 2 * frame_count_ - 2 : 1;
+    const std::int64_t n = frame_count_;
+    if (mode_ != PlayMode::ping_pong) return n;
+    return n > 1 ? 2 * n - 2 : 1;
 }
 
 std::size_t SpritePlayer::frame_at(std::int64_t position) const noexcept {
     // The ping-pong cycle 0 … n−1 … 1 folds back onto the frames.
-    if (mode_ == PlayMode::ping_pong && position >= frame_count_) position = 2 * frame_count_ - 2 - position;
+    if (mode_ == PlayMode::ping_pong && position >= frame_count_) position = 2 * std::int64_t{frame_count_} - 2 - position;
     return static_cast<std::size_t>(position);
 }
 
@@ -109,16 +113,19 @@ void SpritePlayer::set_rate(double rate) {
     const double cap = std::nextafter(static_cast<double>(frame_count_), 0.0);
     if (rate > cap) rate = cap;
     if (rate < -cap) rate = -cap;
-    rate_ = rate;
+    set_rate_parts(rate);
+}
+
+void SpritePlayer::set_rate_parts(double rate) noexcept {
     const double whole = std::trunc(rate);
-    whole_ = static_cast<std::int64_t>(whole);
-    fraction_ = rate - whole;  // exact: both share the binade of rate or the fraction is exact
+    whole_ = static_cast<std::int32_t>(whole);
+    fraction_ = rate - whole;  // exact: it only clears the integer bits of rate; whole + fraction == rate
 }
 
 void SpritePlayer::set_mode(PlayMode mode) noexcept {
     const std::size_t shown = frame();
     mode_ = mode;
-    position_ = static_cast<std::int64_t>(shown);
+    position_ = static_cast<std::int32_t>(shown);
 }
 
 void SpritePlayer::set_frame(std::size_t k) {
@@ -127,7 +134,7 @@ void SpritePlayer::set_frame(std::size_t k) {
                     std::to_string(frame_count_) + ")");
     }
     const std::size_t shown = frame();
-    position_ = static_cast<std::int64_t>(k);
+    position_ = static_cast<std::int32_t>(k);
     remainder_ = 0.0;
     finished_ = false;
     if (playable_ && shown != k) playable_->show_frame(k);
@@ -138,7 +145,7 @@ void SpritePlayer::play() noexcept {
         finished_ = false;
         remainder_ = 0.0;
         const std::size_t shown = frame();
-        position_ = rate_ < 0.0 ? frame_count_ - 1 : 0;
+        position_ = rate() < 0.0 ? frame_count_ - 1 : 0;
         if (playable_ && shown != frame()) playable_->show_frame(frame());
     }
     playing_ = true;
@@ -148,13 +155,13 @@ void SpritePlayer::set_playable(Playable& playable) {
     const std::size_t n = playable.frame_count();
     if (n == 0) throw Error("SpritePlayer::set_playable: playable has no frames (frame_count() is 0)");
     if (n > max_frame_count) {
-        throw Error("SpritePlayer::set_playable: frame_count " + std::to_string(n) + " is too large (max 2^52)");
+        throw Error("SpritePlayer::set_playable: frame_count " + std::to_string(n) + " is too large (max 2^30)");
     }
     const std::size_t shown = frame() < n ? frame() : n - 1;
     playable_ = &playable;
-    frame_count_ = static_cast<std::int64_t>(n);
-    position_ = static_cast<std::int64_t>(shown);
-    set_rate(rate_);  // re-apply the cap for the new frame count
+    frame_count_ = static_cast<std::int32_t>(n);
+    position_ = static_cast<std::int32_t>(shown);
+    set_rate(rate());  // re-apply the cap for the new frame count
     playable_->show_frame(shown);
 }
 
@@ -168,19 +175,15 @@ void SpritePlayer::on_complete(CompleteCallback callback) { callbacks().complete
 void SpritePlayer::on_loop(LoopCallback callback) { callbacks().loop.assign(std::move(callback)); }
 
 // The seed's step: take the integer part of the rate, accumulate the fraction, carry ±1 when
-// the remainder reaches ±1. Additions and comparisons only.
+// the remainder reaches ±1. Additions and comparisons only; the carry and the wrap are
+// computed without branches because with many players at different rates they are
+// unpredictable (a mispredicted branch costs more than the whole step).
 void SpritePlayer::advance() noexcept {
     if (!playing_) return;
-    std::int64_t delta = whole_;
-    remainder_ += fraction_;
-    if (remainder_ >= 1.0) {
-        remainder_ -= 1.0;
-        ++delta;
-    } else if (remainder_ <= -1.0) {
-        remainder_ += 1.0;
-        --delta;
-    }
-    if (delta != 0) move_by(delta, 0);
+    const double r = remainder_ + fraction_;  // in (−2, 2)
+    const int carry = static_cast<int>(r >= 1.0) - static_cast<int>(r <= -1.0);
+    remainder_ = r - static_cast<double>(carry);  // exact: r ∓ 1 for r in [1, 2) or (−2, −1] is exact (Sterbenz)
+    move_by(std::int64_t{whole_} + carry, 0);
 }
 
 void SpritePlayer::advance(double dt, double fps) {
@@ -190,28 +193,25 @@ void SpritePlayer::advance(double dt, double fps) {
     if (!(std::isfinite(fps) && fps > 0.0)) {
         throw Error("SpritePlayer::advance: fps must be finite and > 0 (got " + number(fps) + ")");
     }
-    const double frames = rate_ * fps * dt;
+    const double frames = rate() * fps * dt;
     if (!std::isfinite(frames)) {
-        throw Error("SpritePlayer::advance: rate*fps*dt overflows (rate " + number(rate_) + ", fps " + number(fps) +
+        throw Error("SpritePlayer::advance: rate*fps*dt overflows (rate " + number(rate()) + ", fps " + number(fps) +
                     ", dt " + number(dt) + ")");
     }
     if (!playing_) return;
-    const double whole = std::trunc(frames);
-    remainder_ += frames - whole;  // the same bookkeeping as advance(): exact fraction, carry at ±1
-    double total = whole;
-    if (remainder_ >= 1.0) {
-        remainder_ -= 1.0;
-        total += 1.0;
-    } else if (remainder_ <= -1.0) {
-        remainder_ += 1.0;
-        total -= 1.0;
-    }
-    if (total == 0.0) return;
+    // trunc through a 64-bit conversion (one instruction) when it fits, the libm call otherwise.
+    const double whole = std::fabs(frames) < 0x1p62 ? static_cast<double>(static_cast<std::int64_t>(frames))
+                                                    : std::trunc(frames);
+    // The same bookkeeping as advance(): exact fraction, branch-free carry at ±1.
+    const double r = remainder_ + (frames - whole);
+    const int carry = static_cast<int>(r >= 1.0) - static_cast<int>(r <= -1.0);
+    remainder_ = r - static_cast<double>(carry);
+    const double total = whole + static_cast<double>(carry);
     const double p = static_cast<double>(period());
     if (std::fabs(total) <= p) {
         move_by(static_cast<std::int64_t>(total), 0);
     } else if (mode_ == PlayMode::once) {
-        move_by(total > 0.0 ? frame_count_ : -frame_count_, 0);  // past the end either way
+        move_by(total > 0.0 ? std::int64_t{frame_count_} : -std::int64_t{frame_count_}, 0);  // past the end either way
     } else {
         // A long time step: whole cycles are dropped (fmod is exact) and counted for on_loop.
         const double cycles = std::trunc(std::fabs(total) / p);
@@ -225,7 +225,7 @@ void SpritePlayer::advance(double dt, double fps) {
 
 // Moves by delta positions (|delta| ≤ period, so one wrap suffices) and reports what happened.
 void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles) noexcept {
-    const std::size_t shown = frame();
+    const std::int64_t from = position_;
     const std::int64_t direction = delta >= 0 ? 1 : -1;
     std::int64_t next = position_ + delta;
     if (mode_ == PlayMode::once) {
@@ -237,28 +237,24 @@ void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles) noexcep
             next = 0;
             done = true;
         }
-        const std::int64_t steps = next >= position_ ? next - position_ : position_ - next;
-        position_ = next;
+        const std::int64_t steps = next >= from ? next - from : from - next;
+        position_ = static_cast<std::int32_t>(next);
         if (done) {
             playing_ = false;
             finished_ = true;
             remainder_ = 0.0;
         }
-        if (playable_ && frame() != shown) playable_->show_frame(frame());
+        if (playable_ && frame_at(next) != frame_at(from)) playable_->show_frame(frame_at(next));
         if (callbacks_) report(next, steps, direction, 0, done);
         return;
     }
     const std::int64_t p = period();
-    std::size_t cycles = extra_cycles;
-    if (next >= p) {
-        next -= p;
-        ++cycles;
-    } else if (next < 0) {
-        next += p;
-        ++cycles;
-    }
-    position_ = next;
-    if (playable_ && frame() != shown) playable_->show_frame(frame());
+    const bool under = next < 0;
+    const bool over = next >= p;
+    next += (p & -static_cast<std::int64_t>(under)) - (p & -static_cast<std::int64_t>(over));
+    const std::size_t cycles = extra_cycles + static_cast<std::size_t>(under || over);
+    position_ = static_cast<std::int32_t>(next);
+    if (playable_ && frame_at(next) != frame_at(from)) playable_->show_frame(frame_at(next));
     if (callbacks_) {
         const std::int64_t moved = delta >= 0 ? delta : -delta;
         report(next, extra_cycles > 0 || moved > p ? p : moved, direction, cycles, false);
