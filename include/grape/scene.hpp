@@ -145,4 +145,15 @@ std::string path_to_json(const Path& path);
 /// A path from scene JSON text (one object). Throws grape::Error naming the JSON pointer.
 Path path_from_json(std::string_view json);
 
+#ifdef GRAPE_SCENE_DYNAMICS
+class ParticleSystem;
+/// The simulation as a ParticleSystem ready to step (particles in order, then forces, then
+/// constraints; a distance of length 0 keeps the starting distance). Only when grape::scene
+/// was built with grape::dynamics (GRAPE_SCENE_DYNAMICS is then defined).
+ParticleSystem make_particle_system(const SceneSimulation& simulation);
+#endif
+
+/// C(p) of a conic constraint: A·x² + B·x·y + C·y² + D·x + E·y + F.
+double conic_value(const SceneConstraint& constraint, Vec2 p) noexcept;
+
 }  // namespace grape

@@ -857,6 +857,11 @@ void save_scene_file(const Scene& scene, const std::filesystem::path& file) {
     }
 }
 
+double conic_value(const SceneConstraint& c, Vec2 p) noexcept {
+    return c.conic[0] * p.x * p.x + c.conic[1] * p.x * p.y + c.conic[2] * p.y * p.y + c.conic[3] * p.x +
+           c.conic[4] * p.y + c.conic[5];
+}
+
 std::string path_to_json(const Path& path) { return path_json(path).dump(2); }
 
 Path path_from_json(std::string_view text) {
