@@ -365,11 +365,14 @@ TEST(SceneAnimation, ProgressFollowsDelayRepeatYoyoAndReverse) {
     a.repeat = -1;
     EXPECT_TRUE(std::isinf(a.end_time()));
     EXPECT_EQ(a.progress(1001.5), 0.75);  // 500 plays later: even play, reversed
-    // The curve applies within each play.
+    // The curve applies within each play; a backward play is the forward one run back in time.
     a = {};
     a.duration = 1.0;
     a.curve = grape::Curve::quad_in();
     EXPECT_EQ(a.progress(0.5), 0.25);
+    EXPECT_EQ(a.progress(0.25), 0.0625);
+    a.reversed = true;
+    EXPECT_EQ(a.progress(0.25), 0.5625);  // curve(0.75), not 1 − curve(0.25)
 }
 
 // ------------------------------------------------------------------------------ errors

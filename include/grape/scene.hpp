@@ -48,9 +48,9 @@ struct SceneAnimation {
     bool yoyo = false;       ///< every other play runs backwards
     bool reversed = false;   ///< the first play runs from the path's end to its start
 
-    /// Progress u along the path at scene time t seconds: curve(τ) going forwards,
-    /// 1 − curve(τ) going backwards (τ the fraction of the current play); before the delay
-    /// the animation sits at its start, after its last play at its end.
+    /// Progress u along the path at scene time t seconds, as the anim engine plays it:
+    /// curve(τ) going forwards, curve(1 − τ) going backwards (τ the fraction of the current
+    /// play); before the delay it sits at its start, after its last play at its end.
     double progress(double t) const noexcept;
     /// path.point(progress(t)).
     Vec2 position(double t) const noexcept { return path.point(progress(t)); }

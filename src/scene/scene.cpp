@@ -793,8 +793,8 @@ double SceneAnimation::progress(double t) const noexcept {
     }
     const bool odd = std::fmod(play, 2.0) == 1.0;
     const bool backwards = reversed != (yoyo && odd);
-    const double p = curve(tau);
-    return backwards ? 1.0 - p : p;
+    // Backwards is the forward play run back in time, as the anim engine plays it.
+    return curve(backwards ? 1.0 - tau : tau);
 }
 
 double SceneAnimation::end_time() const noexcept {
