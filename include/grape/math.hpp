@@ -49,10 +49,10 @@ inline Vec2 normalized(Vec2 a) noexcept {
 }
 /// a turned a quarter turn: (−y, x).
 constexpr Vec2 perpendicular(Vec2 a) noexcept { return {-a.y, a.x}; }
-/// a + (b − a)·t; t outside [0, 1] extrapolates.
-constexpr Vec2 lerp(Vec2 a, Vec2 b, double t) noexcept { return a + (b - a) * t; }
-/// a + (b − a)·t for scalars.
-constexpr double lerp(double a, double b, double t) noexcept { return a + (b - a) * t; }
+/// (1 − t)·a + t·b: exactly a at t = 0 and exactly b at t = 1; t outside [0, 1] extrapolates.
+constexpr Vec2 lerp(Vec2 a, Vec2 b, double t) noexcept { return a * (1.0 - t) + b * t; }
+/// (1 − t)·a + t·b for scalars, exact at both ends.
+constexpr double lerp(double a, double b, double t) noexcept { return a * (1.0 - t) + b * t; }
 /// |a − b| ≤ tolerance in both components.
 constexpr bool approx_equal(Vec2 a, Vec2 b, double tolerance = 1e-12) noexcept {
     const Vec2 d = a - b;
@@ -136,41 +136,43 @@ struct Root {
 /// Root of f in [lo, hi] where f(lo) and f(hi) have opposite signs (or one is zero).
 /// `fd(x)` returns {f(x), f'(x)}. Newton steps from `guess`, replaced by bisection whenever
 /// Newton would leave the bracket or shrink it too slowly, so it always converges.
-/// Stops when the bracket is narrower than `tolerance`. If the signs do not bracket a root,
+/// Stops when the bracket is narrower than `tolerance` (absolute) or cannot be split any
+/// more in double precision. If the signs do not bracket a root (or f is NaN at an end),
 /// returns the end with the smaller |f| and converged = false.
 template <class FD>
 Root find_root(FD&& fd, double lo, double hi, double guess, double tolerance = 1e-15,
                int max_iterations = 200) noexcept(noexcept(fd(lo))) {
-    auto [flo, dlo] = fd(lo);
-    auto [fhi, dhi] = fd(hi);
-    (void)dlo;
-    (void)dhi;
+    const double flo = fd(lo).first;
+    const double fhi = fd(hi).first;
     if (flo == 0.0) return {lo, 0, true};
     if (fhi == 0.0) return {hi, 0, true};
-    if ((flo > 0.0) == (fhi > 0.0)) return {std::abs(flo) < std::abs(fhi) ? lo : hi, 0, false};
-    if (flo > 0.0) {  // orient so that f(lo) < 0 < f(hi)
-        std::swap(lo, hi);
+    if (!((flo < 0.0 && fhi > 0.0) || (flo > 0.0 && fhi < 0.0))) {
+        return {std::abs(flo) < std::abs(fhi) ? lo : hi, 0, false};
     }
+    if (flo > 0.0) std::swap(lo, hi);  // orient so that f(lo) < 0 < f(hi); lo may exceed hi
     double x = (guess > std::min(lo, hi) && guess < std::max(lo, hi)) ? guess : 0.5 * (lo + hi);
     double step_before = std::abs(hi - lo);
     double step = step_before;
     for (int i = 1; i <= max_iterations; ++i) {
-        auto [fx, dfx] = fd(x);
+        const auto [fx, dfx] = fd(x);
         if (fx == 0.0) return {x, i, true};
-        if (fx < 0.0) lo = x; else hi = x;
+        if (fx < 0.0) lo = x; else hi = x;  // a NaN f(x) counts as positive: the bracket still shrinks
+        if (std::abs(hi - lo) <= tolerance) return {x, i, true};
         const double newton = x - fx / dfx;
-        const bool newton_inside = dfx != 0.0 && std::isfinite(newton) &&
-                                   (newton - lo) * (newton - hi) < 0.0;
+        const bool newton_inside = std::isfinite(newton) && (newton - lo) * (newton - hi) < 0.0;
+        // Newton only while it at least halves the step of two iterations ago (as rtsafe does).
         if (newton_inside && std::abs(2.0 * fx) < std::abs(step_before * dfx)) {
             step_before = step;
             step = newton - x;
             x = newton;
+            if (std::abs(step) <= 0.5 * tolerance) return {x, i, true};
         } else {
             step_before = step;
             step = 0.5 * (hi - lo);
-            x = lo + step;
+            const double mid = lo + step;
+            if (mid == lo || mid == hi) return {x, i, true};  // the bracket is two adjacent doubles
+            x = mid;
         }
-        if (std::abs(hi - lo) <= tolerance || std::abs(step) <= 0.5 * tolerance) return {x, i, true};
     }
     return {x, max_iterations, false};
 }

@@ -202,6 +202,8 @@ class HermiteSplinePath : public Path {
 public:
     HermiteSplinePath(std::span<const Vec2> points, std::span<const Vec2> tangents);
     HermiteSplinePath(std::span<const double> xy, std::span<const double> tangent_xy);
+    HermiteSplinePath(std::initializer_list<double> xy, std::initializer_list<double> tangent_xy)
+        : HermiteSplinePath(std::span<const double>(xy), std::span<const double>(tangent_xy)) {}
     std::span<const Vec2> points() const noexcept;
     std::span<const Vec2> tangents() const noexcept;
 };

@@ -191,6 +191,27 @@ Bounds CubicBezierNode::compute_bounds() const {
     return box;
 }
 
+void CubicBezierNode::interior_breaks(std::vector<double>& out) const {
+    // Pieces between the extremes of x and y: a cusp (x′ = y′ = 0, a kink in the speed)
+    // then sits on a break, where quadrature and the arc-length table handle it exactly.
+    double roots[4];
+    int count = 0;
+    for (int axis = 0; axis < 2; ++axis) {
+        const auto get = [axis](Vec2 v) { return axis == 0 ? v.x : v.y; };
+        double r[2];
+        const int n = quadratic_roots(3.0 * get(c[3]), 2.0 * get(c[2]), get(c[1]), r);
+        for (int i = 0; i < n; ++i) {
+            if (r[i] > 1e-9 && r[i] < 1.0 - 1e-9) roots[count++] = r[i];
+        }
+    }
+    for (int i = 1; i < count; ++i) {  // at most four: insertion sort
+        for (int j = i; j > 0 && roots[j] < roots[j - 1]; --j) std::swap(roots[j], roots[j - 1]);
+    }
+    for (int i = 0; i < count; ++i) {
+        if (roots[i] > out.back() + 1e-9) out.push_back(roots[i]);
+    }
+}
+
 // --- ReparametrizedNode -------------------------------------------------------------------
 
 ReparametrizedNode::ReparametrizedNode(Path source)

@@ -100,7 +100,7 @@ std::shared_ptr<const T> make_node(Args&&... args) {
 class LinearNode final : public PathNode {
 public:
     LinearNode(Vec2 a, Vec2 b) noexcept : PathNode(PathKind::linear), a(a), b(b), delta(b - a) {}
-    Vec2 point(double u) const noexcept override { return a + delta * u; }
+    Vec2 point(double u) const noexcept override { return lerp(a, b, u); }  // exact at both ends
     Vec2 d1(double) const noexcept override { return delta; }
     Vec2 d2(double) const noexcept override { return {}; }
     double length_at(double u) const noexcept override { return grape::length(delta) * u; }
@@ -131,6 +131,7 @@ public:
 
 protected:
     Bounds compute_bounds() const override;
+    void interior_breaks(std::vector<double>& out) const override;
 };
 
 /// The arc-length reparametrization of any node: u ↦ source parameter v with
