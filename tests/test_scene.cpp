@@ -488,6 +488,34 @@ TEST(SceneErrors, SyntaxAndNesting) {
     expect_error(R"({"paths": [{"name": "deep", "path": )" + deep + "}]}", where, "nested more than 32 deep");
 }
 
+// The named scene files in scenes/ load, round-trip, and hold the catalogue's seed paths.
+TEST(SceneFiles, CatalogueScenesLoadAndMatch) {
+    const auto dir = std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes";
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".json") continue;
+        ++count;
+        const Scene s = grape::load_scene_file(entry.path());
+        expect_same_scene(s, grape::load_scene(grape::save_scene(s)));
+    }
+    EXPECT_GE(count, 6);
+    const auto path_in = [&](const char* file, const char* name) {
+        const Scene s = grape::load_scene_file(dir / file);
+        const auto* p = s.find_path(name);
+        EXPECT_NE(p, nullptr) << file << ": " << name;
+        return p ? p->path : Path();
+    };
+    namespace sc = grape::scenes;
+    expect_same_path(path_in("seed_spiral.json", "spiral"), sc::seed_spiral(), "spiral");
+    expect_same_path(path_in("seed_complex.json", "complex"), sc::seed_complex(), "complex");
+    expect_same_path(path_in("seed_nested_complex.json", "nested_complex"), sc::seed_nested_complex(), "nested");
+    expect_same_path(path_in("seed_splines.json", "linear_spline_p1"), sc::seed_linear_spline(), "p1");
+    expect_same_path(path_in("seed_splines.json", "cosine_spline_p2"), sc::seed_cosine_spline(), "p2");
+    expect_same_path(path_in("seed_splines.json", "catmull_rom_spline_p3"), sc::seed_catmull_rom_spline(), "p3");
+    expect_same_path(path_in("seed_bezier.json", "bezier"), sc::seed_bezier(false), "bezier");
+    expect_same_path(path_in("seed_bezier.json", "bezier_reparametrized"), sc::seed_bezier(true), "bezier by length");
+}
+
 #ifdef GRAPE_SCENE_DYNAMICS
 // The seed's parabola as a scene runs exactly like the catalogue's implicit parabola run.
 TEST(SceneSimulation, ParabolaMatchesTheCatalogue) {
