@@ -1,0 +1,1 @@
+grape_bench(path grape::path grape_scenes)

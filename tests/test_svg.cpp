@@ -1,0 +1,498 @@
+// SVG path data: lengths against closed forms, the grammar's corners, S/T reflections, arcs by
+// the SVG implementation notes, every error message, and random valid data.
+#include <grape/error.hpp>
+#include <grape/path.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using grape::ComplexPath;
+using grape::parse_svg_path;
+using grape::Path;
+using grape::PathKind;
+using grape::pi;
+using grape::Vec2;
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+// The path module's length contract (issue 2): closed forms to 1e-12 relative.
+constexpr double length_tolerance = 1e-12;
+
+void expect_length(std::string_view data, double expected) {
+    SCOPED_TRACE(std::string(data));
+    const ComplexPath path = parse_svg_path(data);
+    EXPECT_NEAR(path.length(), expected, length_tolerance * expected);
+}
+
+void expect_near(Vec2 a, Vec2 b, double tolerance) {
+    EXPECT_NEAR(a.x, b.x, tolerance);
+    EXPECT_NEAR(a.y, b.y, tolerance);
+}
+
+// Perimeter of an ellipse by the Gauss–Kummer series π(a+b)·Σ C(½,n)² hⁿ, h = ((a−b)/(a+b))²:
+// independent of any quadrature, and converging geometrically (h ≤ 1/9 for the axes used here).
+double ellipse_perimeter(double a, double b) {
+    const double h = (a - b) * (a - b) / ((a + b) * (a + b));
+    double binomial = 1.0;  // C(½, n)
+    double power = 1.0;     // hⁿ
+    double sum = 1.0;
+    for (int n = 1; n < 200; ++n) {
+        binomial *= (0.5 - (n - 1)) / n;
+        power *= h;
+        const double term = binomial * binomial * power;
+        sum += term;
+        if (term < 1e-20 * sum) break;
+    }
+    return pi * (a + b) * sum;
+}
+
+// Message of the grape::Error thrown by parsing `data` ("" if none).
+std::string error_of(std::string_view data) {
+    try {
+        (void)parse_svg_path(data);
+    } catch (const grape::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// Same points, bit for bit, at many u (including the cues, where parts change).
+void expect_same_points(const Path& a, const Path& b) {
+    for (int i = 0; i <= 1000; ++i) {
+        const double u = i / 1000.0;
+        EXPECT_EQ(a.point(u), b.point(u)) << "u = " << u;
+        EXPECT_EQ(a.d1(u), b.d1(u)) << "u = " << u;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lengths against closed forms
+
+TEST(Svg, LineAndRectangleLengths) {
+    expect_length("M0 0 L3 4", 5.0);
+    // Axis-aligned sides are exact; Z closes the fourth side.
+    expect_length("M10 10 H90 V90 H10 Z", 320.0);
+    expect_length("m10 10 h80 v80 h-80 z", 320.0);
+}
+
+TEST(Svg, SemicircleViaArcIsPiR) {
+    const double r = 50.0;
+    expect_length("M0 0 A 50 50 0 0 1 100 0", pi * r);
+    expect_length("M0 0 A 50 50 0 0 0 100 0", pi * r);
+    // Two large arcs make the whole circle.
+    expect_length("M0 0 A 50 50 0 1 1 100 0 A 50 50 0 1 1 0 0", 2.0 * pi * r);
+}
+
+TEST(Svg, SpecArcExamplesHaveClosedFormLengths) {
+    // SVG 1.1 §8.3.8's pie example: two radii of 150 and three quarters of a circle.
+    expect_length("M300,200 h-150 a150,150 0 1,0 150,-150 z", 300.0 + 0.75 * 2.0 * pi * 150.0);
+    // ... and its missing quarter.
+    expect_length("M275,175 v-150 a150,150 0 0,0 -150,150 z", 300.0 + 0.25 * 2.0 * pi * 150.0);
+    // SVG 1.1 §8.3.3's triangle.
+    expect_length("M 100 100 L 300 100 L 200 300 z", 200.0 + 2.0 * std::sqrt(100.0 * 100.0 + 200.0 * 200.0));
+}
+
+TEST(Svg, EllipticalArcLengthsAgreeWithTheSeries) {
+    // Half an ellipse between the ends of its major axis is half its perimeter.
+    expect_length("M-2 0 A 2 1 0 0 1 2 0", 0.5 * ellipse_perimeter(2.0, 1.0));
+    // The same ellipse turned by 30°, its endpoints turned with it.
+    const double c = std::cos(pi / 6.0);
+    const double s = std::sin(pi / 6.0);
+    const std::string rotated = "M" + std::to_string(-2.0 * c) + " " + std::to_string(-2.0 * s) + " A 2 1 30 0 1 " +
+                                std::to_string(2.0 * c) + " " + std::to_string(2.0 * s);
+    // to_string keeps 6 decimals: the endpoints sit off the exact ellipse by ≤ 5e-7, which the
+    // scale-up absorbs; the length moves by about as much.
+    const ComplexPath path = parse_svg_path(rotated);
+    EXPECT_NEAR(path.length(), 0.5 * ellipse_perimeter(2.0, 1.0), 4e-6);
+    EXPECT_EQ(path.parts()[0].kind(), PathKind::elliptical_arc);
+}
+
+TEST(Svg, ArcRadiiTooSmallAreScaledUp) {
+    // F.6.6: radius 1 cannot span a chord of 10, so it grows to 5: a semicircle.
+    expect_length("M0 0 A 1 1 0 0 1 10 0", 5.0 * pi);
+    expect_length("M0 0 A 1 1 0 1 0 10 0", 5.0 * pi);  // both flags give the same half
+    // An ellipse keeps its axis ratio: rx 1, ry 2 across a horizontal chord of 10 becomes
+    // rx 5, ry 10, and the arc is half of that ellipse.
+    expect_length("M0 0 A 1 2 0 0 1 10 0", 0.5 * ellipse_perimeter(10.0, 5.0));
+    // The scaled semicircle passes through (5, -5): sweep 1 turns clockwise on screen (y down).
+    const ComplexPath path = parse_svg_path("M0 0 A 1 1 0 0 1 10 0");
+    expect_near(path.point(0.5), {5.0, -5.0}, 1e-13 * 10.0);
+}
+
+TEST(Svg, ZeroRadiusArcIsAStraightLine) {
+    const ComplexPath path = parse_svg_path("M0 0 A 0 5 0 0 1 3 4");
+    ASSERT_EQ(path.parts().size(), 1u);
+    EXPECT_EQ(path.parts()[0].kind(), PathKind::linear);
+    EXPECT_EQ(path.length(), 5.0);
+    EXPECT_EQ(path.point(0.5), (Vec2{1.5, 2.0}));
+}
+
+TEST(Svg, NegativeRadiiUseTheirMagnitude) {
+    expect_same_points(parse_svg_path("M0 0 A -50 -50 0 0 1 100 0"), parse_svg_path("M0 0 A 50 50 0 0 1 100 0"));
+}
+
+TEST(Svg, ArcFlagsPickTheFourArcs) {
+    // Radius 1 from (0,0) to (1,1): centres (1,0) and (0,1); quarter or three-quarter turns.
+    const double quarter = 0.5 * pi;
+    expect_length("M0 0 A 1 1 0 0 0 1 1", quarter);
+    expect_length("M0 0 A 1 1 0 0 1 1 1", quarter);
+    expect_length("M0 0 A 1 1 0 1 0 1 1", 3.0 * quarter);
+    expect_length("M0 0 A 1 1 0 1 1 1 1", 3.0 * quarter);
+    // Small arc, sweep 0 (counter-clockwise on screen) goes round the centre (1, 0);
+    // sweep 1 round (0, 1). Their midpoints lie on the circles, 1/√2 off each centre.
+    const double h = 1.0 - std::sqrt(0.5);
+    expect_near(parse_svg_path("M0 0 A 1 1 0 0 0 1 1").point(0.5), {h, 1.0 - h}, 1e-15 * 8);
+    expect_near(parse_svg_path("M0 0 A 1 1 0 0 1 1 1").point(0.5), {1.0 - h, h}, 1e-15 * 8);
+}
+
+// The frame where an ellipse (rx, ry, turned by φ) is a circle of radius rx: turn by −φ, then
+// stretch y by rx/ry. There the arc's centre can be found geometrically, independently of the
+// SVG notes' formulas: on the chord's bisector, √(r² − (d/2)²) away from it.
+struct CircleFrame {
+    double c = 1.0, s = 0.0, stretch = 1.0;
+    Vec2 to_circle(Vec2 p) const { return {c * p.x + s * p.y, stretch * (-s * p.x + c * p.y)}; }
+};
+
+TEST(Svg, ArcsHitTheirEndpointsAndLieOnTheirEllipses) {
+    // The SVG 1.1 spec's arc example family: ellipses of growing ry turned by −30°, each
+    // drawn with sweep 1 and large-arc 0 between two given corners (some need scaling up).
+    const ComplexPath path = parse_svg_path(
+        "M600,350 l 50,-25 a25,25 -30 0,1 50,-25 l 50,-25 a25,50 -30 0,1 50,-25 l 50,-25 a25,75 -30 0,1 50,-25 "
+        "l 50,-25 a25,100 -30 0,1 50,-25 l 50,-25");
+    ASSERT_EQ(path.parts().size(), 9u);
+    const std::vector<Vec2> corners{{600, 350}, {650, 325}, {700, 300}, {750, 275}, {800, 250},
+                                    {850, 225}, {900, 200}, {950, 175}, {1000, 150}, {1050, 125}};
+    // Coordinates near 1000: 16 ulp of 1000 covers the rounding of the centre and the angles.
+    const double tolerance = 16 * eps * 1000.0;
+    for (std::size_t i = 0; i < path.parts().size(); ++i) {
+        SCOPED_TRACE(i);
+        expect_near(path.parts()[i].point(0.0), corners[i], tolerance);
+        expect_near(path.parts()[i].point(1.0), corners[i + 1], tolerance);
+    }
+    const double phi = -30.0 * pi / 180.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const std::size_t i = 2 * k + 1;
+        SCOPED_TRACE(i);
+        const Path& part = path.parts()[i];
+        EXPECT_EQ(part.kind(), k == 0 ? PathKind::circle : PathKind::elliptical_arc);
+        const double rx = 25.0;
+        const double ry = 25.0 * static_cast<double>(k + 1);
+        const CircleFrame frame{std::cos(phi), std::sin(phi), rx / ry};
+        const Vec2 q1 = frame.to_circle(corners[i]);
+        const Vec2 q2 = frame.to_circle(corners[i + 1]);
+        const double half = 0.5 * grape::distance(q1, q2);
+        const double r = std::max(rx, half);  // F.6.6's scale-up
+        const Vec2 n = grape::perpendicular(grape::normalized(q2 - q1));
+        const double h = std::sqrt(std::max(0.0, r * r - half * half));
+        Vec2 centre = 0.5 * (q1 + q2) + h * n;
+        if (grape::cross(q1 - centre, q2 - centre) < 0.0) centre = 0.5 * (q1 + q2) - h * n;
+        for (int j = 0; j <= 20; ++j) {
+            const double u = j / 20.0;
+            const Vec2 q = frame.to_circle(part.point(u));
+            EXPECT_NEAR(grape::distance(q, centre), r, tolerance);
+            // Sweep 1: the angle about the centre increases (clockwise on screen, y down).
+            EXPECT_GT(grape::cross(q - centre, frame.to_circle(part.point(u) + part.d1(u)) - frame.to_circle(part.point(u))), 0.0);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The grammar
+
+TEST(Svg, RelativeAndAbsoluteGiveIdenticalPoints) {
+    // Integer coordinates make every relative sum exact, so the parts (and the points) are the
+    // same bit for bit.
+    expect_same_points(
+        parse_svg_path("M10 20 L30 40 H50 V10 C60 0 70 0 80 10 S100 20 110 10 Q120 0 130 10 T150 10 "
+                       "A20 10 30 0 1 170 30 Z L0 0"),
+        parse_svg_path("m10 20 l20 20 h20 v-30 c10 -10 20 -10 30 0 s20 10 30 0 q10 -10 20 0 t20 0 "
+                       "a20 10 30 0 1 20 20 z l-10 -20"));
+}
+
+TEST(Svg, ImplicitRepeatsContinueTheCommand) {
+    // After M the pairs are linetos; after m, relative linetos.
+    expect_same_points(parse_svg_path("M0 0 10 0 10 10"), parse_svg_path("M0 0 L10 0 L10 10"));
+    expect_same_points(parse_svg_path("m5 5 10 0 0 10"), parse_svg_path("M5 5 L15 5 L15 15"));
+    expect_same_points(parse_svg_path("M0 0 C0 10 10 10 10 0 10 -10 20 -10 20 0"),
+                       parse_svg_path("M0 0 C0 10 10 10 10 0 C10 -10 20 -10 20 0"));
+    expect_same_points(parse_svg_path("M0 0 h10 20 v5 5"), parse_svg_path("M0 0 H10 H30 V5 V10"));
+    expect_same_points(parse_svg_path("M0 0 a5 5 0 0 1 10 0 5 5 0 0 1 10 0"),
+                       parse_svg_path("M0 0 A5 5 0 0 1 10 0 A5 5 0 0 1 20 0"));
+}
+
+TEST(Svg, NumberSyntax) {
+    // ".5.5" is two numbers; a sign starts a new number; exponents in both cases; "1e1.5" is
+    // 10 then .5; commas and any SVG whitespace separate.
+    const ComplexPath path = parse_svg_path(" \t\r\nM.5.5L1e1.5-2E+1-.25e-0,+3-4\f");
+    ASSERT_EQ(path.parts().size(), 3u);
+    EXPECT_EQ(path.parts()[0].point(0.0), (Vec2{0.5, 0.5}));
+    EXPECT_EQ(path.parts()[1].point(0.0), (Vec2{10.0, 0.5}));
+    EXPECT_EQ(path.parts()[2].point(0.0), (Vec2{-20.0, -0.25}));
+    EXPECT_EQ(path.parts()[2].point(1.0), (Vec2{3.0, -4.0}));
+    // Numbers below the double range round to zero, as in browsers.
+    EXPECT_EQ(parse_svg_path("M1e-400 0 L1 0").point(0.0), (Vec2{0.0, 0.0}));
+    EXPECT_EQ(parse_svg_path("M0.000000000000000000000000000000001e-300 0 L1 0").point(0.0), (Vec2{0.0, 0.0}));
+}
+
+TEST(Svg, ArcFlagsNeedNoSeparators) {
+    expect_same_points(parse_svg_path("M0 0 a1 1 0 00 1 1"), parse_svg_path("M0 0 a 1 1 0 0 0 1 1"));
+    expect_same_points(parse_svg_path("M0 0 a1,1,0,1,1,1,1"), parse_svg_path("M0 0 a1 1 0 111 1"));
+}
+
+TEST(Svg, SmoothCubicReflectsThePreviousControlPoint) {
+    const ComplexPath path = parse_svg_path("M0 0 C 10 20 30 20 40 0 S 70 -20 80 0 s 30 20 40 0");
+    ASSERT_EQ(path.parts().size(), 3u);
+    // The reflection of (30, 20) about (40, 0) is (50, −20); then of (70, −20) about (80, 0).
+    expect_same_points(path.parts()[1], grape::CubicBezierPath({40, 0}, {50, -20}, {70, -20}, {80, 0}));
+    expect_same_points(path.parts()[2], grape::CubicBezierPath({80, 0}, {90, 20}, {110, 20}, {120, 0}));
+    // After anything but C or S the first control point is the current point.
+    const ComplexPath after_line = parse_svg_path("M0 0 L10 0 S 20 10 30 0");
+    expect_same_points(after_line.parts()[1], grape::CubicBezierPath({10, 0}, {10, 0}, {20, 10}, {30, 0}));
+    const ComplexPath after_quad = parse_svg_path("M0 0 Q5 5 10 0 S 20 10 30 0");
+    expect_same_points(after_quad.parts()[1], grape::CubicBezierPath({10, 0}, {10, 0}, {20, 10}, {30, 0}));
+}
+
+TEST(Svg, SmoothQuadraticReflectsThroughAChain) {
+    const ComplexPath path = parse_svg_path("M0 0 Q 10 10 20 0 T 40 0 t 20 0");
+    ASSERT_EQ(path.parts().size(), 3u);
+    expect_same_points(path.parts()[1], grape::QuadraticBezierPath({20, 0}, {30, -10}, {40, 0}));
+    expect_same_points(path.parts()[2], grape::QuadraticBezierPath({40, 0}, {50, 10}, {60, 0}));
+    // T after a cubic does not reflect: its control point is the current point.
+    const ComplexPath after_cubic = parse_svg_path("M0 0 C0 10 10 10 10 0 T 20 0");
+    expect_same_points(after_cubic.parts()[1], grape::QuadraticBezierPath({10, 0}, {10, 0}, {20, 0}));
+}
+
+TEST(Svg, RoundTripAgainstHandBuiltPaths) {
+    // Each drawn segment is one part, cues by length: the same as building it by hand.
+    const ComplexPath parsed = parse_svg_path("M100,200 C100,100 250,100 250,200 S400,300 400,200 L 450 250 "
+                                              "Q 500 300 550 250 A 25 25 0 0 1 600 250");
+    std::vector<Path> parts{grape::CubicBezierPath({100, 200}, {100, 100}, {250, 100}, {250, 200}),
+                            grape::CubicBezierPath({250, 200}, {250, 300}, {400, 300}, {400, 200}),
+                            grape::LinearPath({400, 200}, {450, 250}),
+                            grape::QuadraticBezierPath({450, 250}, {500, 300}, {550, 250}),
+                            grape::CirclePath({575, 250}, 25, pi, 2.0 * pi)};
+    const ComplexPath built = ComplexPath::by_length(parts);
+    ASSERT_EQ(parsed.parts().size(), built.parts().size());
+    for (std::size_t i = 0; i < 4; ++i) expect_same_points(parsed.parts()[i], built.parts()[i]);
+    // The arc's angles come out of atan2 rather than being written: ulps of the radius 25·π.
+    for (int k = 0; k <= 100; ++k) {
+        expect_near(parsed.parts()[4].point(k / 100.0), built.parts()[4].point(k / 100.0), 16 * eps * 600.0);
+    }
+    ASSERT_EQ(parsed.cues().size(), built.cues().size());
+    for (std::size_t i = 0; i < parsed.cues().size(); ++i) EXPECT_NEAR(parsed.cues()[i], built.cues()[i], 1e-15);
+    EXPECT_NEAR(parsed.length(), built.length(), 1e-13 * built.length());
+}
+
+TEST(Svg, ClosePathReturnsToTheSubpathStart) {
+    // z draws back to (10, 10); the following l starts there.
+    const ComplexPath path = parse_svg_path("M10 10 h10 v10 z l 5 0");
+    ASSERT_EQ(path.parts().size(), 4u);
+    expect_same_points(path.parts()[2], grape::LinearPath({20, 20}, {10, 10}));
+    expect_same_points(path.parts()[3], grape::LinearPath({10, 10}, {15, 10}));
+    // After z, a relative moveto is relative to the subpath start too.
+    const ComplexPath moved = parse_svg_path("M10 10 h10 z m5 5 h1");
+    expect_same_points(moved.parts()[2], grape::LinearPath({15, 15}, {16, 15}));
+}
+
+TEST(Svg, MovesBetweenSubpathsAreNotDrawn) {
+    // Two segments of 10 with a jump of 10 between them: the length is 20, and the path jumps
+    // at u = ½ from the end of the first to the start of the second.
+    const ComplexPath path = parse_svg_path("M0 0 H10 M20 0 H30");
+    EXPECT_EQ(path.length(), 20.0);
+    ASSERT_EQ(path.cues().size(), 2u);
+    EXPECT_EQ(path.cues()[1], 0.5);
+    EXPECT_EQ(path.point(0.5), (Vec2{20, 0}));
+    expect_near(path.point(std::nextafter(0.5, 0.0)), {10, 0}, 1e-12);
+    // A moveto that draws nothing before the next one is simply a new start.
+    expect_same_points(parse_svg_path("M5 5 M0 0 L10 0"), parse_svg_path("M0 0 L10 0"));
+}
+
+TEST(Svg, ZeroLengthSegmentsAreSkipped) {
+    const ComplexPath path = parse_svg_path("M0 0 L0 0 l0 0 h0 v0 C0 0 0 0 0 0 Q0 0 0 0 A5 5 0 0 1 0 0 L10 0 Z z");
+    ASSERT_EQ(path.parts().size(), 2u);  // the line to (10, 0) and the closing line
+    for (const double cue : path.cues()) EXPECT_TRUE(std::isfinite(cue));
+    EXPECT_EQ(path.length(), 20.0);
+    // A Bézier that returns to its start still has length: it is kept.
+    EXPECT_EQ(parse_svg_path("M0 0 C 0 10 10 10 0 0").parts().size(), 1u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors: each names the offset and what was expected
+
+TEST(Svg, ErrorsNameTheOffsetAndTheReason) {
+    EXPECT_EQ(error_of(""), "SVG path data: is empty (expected a moveto, M or m)");
+    EXPECT_EQ(error_of(" \n\t"), "SVG path data: is empty (expected a moveto, M or m)");
+    EXPECT_EQ(error_of("L1 1"), "SVG path data: expected a moveto (M or m) at offset 0, found 'L'");
+    EXPECT_EQ(error_of("  10 10"), "SVG path data: expected a moveto (M or m) at offset 2, found '1'");
+    EXPECT_EQ(error_of("M0 0 L3 @"), "SVG path data: expected a number at offset 8, found '@'");
+    EXPECT_EQ(error_of("M0 0 L3"), "SVG path data: expected a number at offset 7, found the end of the data");
+    EXPECT_EQ(error_of("M,0 0 L1 1"), "SVG path data: expected a number at offset 1, found ','");
+    EXPECT_EQ(error_of("M0 0 L1 1, L2 2"), "SVG path data: expected a number at offset 11, found 'L'");
+    EXPECT_EQ(error_of("M0 0 L1 1,"), "SVG path data: expected a number at offset 10, found the end of the data");
+    EXPECT_EQ(error_of("M0 0 L1 .e1"), "SVG path data: expected a number at offset 8, found '.'");
+    EXPECT_EQ(error_of("M0 0 L1 --1"), "SVG path data: expected a number at offset 8, found '-'");
+    EXPECT_EQ(error_of("M0 0 L1 1e"), "SVG path data: expected the digits of an exponent at offset 10, found the end of the data");
+    EXPECT_EQ(error_of("M0 0 L1 1e+x"), "SVG path data: expected the digits of an exponent at offset 11, found 'x'");
+    EXPECT_EQ(error_of("M0 0 X1 1"), "SVG path data: expected a command letter (M, L, H, V, C, S, Q, T, A or Z) at offset 5, found 'X'");
+    EXPECT_EQ(error_of("M0 0 L1 1 Z 5"), "SVG path data: expected a command letter (M, L, H, V, C, S, Q, T, A or Z) at offset 12, found '5'");
+    EXPECT_EQ(error_of(std::string("M0 0\x01", 5)), "SVG path data: expected a command letter (M, L, H, V, C, S, Q, T, A or Z) at offset 4, found byte 0x01");
+    EXPECT_EQ(error_of("M0 0 A 1 1 0 2 1 5 5"), "SVG path data: expected an arc flag (0 or 1) at offset 13, found '2'");
+    EXPECT_EQ(error_of("M0 0 A 1 1 0 1 -1 5 5"), "SVG path data: expected an arc flag (0 or 1) at offset 15, found '-'");
+    EXPECT_EQ(error_of("M0 0 C 1 1 2 2"), "SVG path data: expected a number at offset 14, found the end of the data");
+    EXPECT_EQ(error_of("M1e309 0 L1 1"), "SVG path data: a number is too large at offset 1 (beyond the range of a double)");
+    EXPECT_EQ(error_of("M1.5e308 0 l1.5e308 0"), "SVG path data: a coordinate is too large at offset 12 (beyond the range of a double)");
+    EXPECT_EQ(error_of("M0 0"), "SVG path data: draws nothing (no segment of non-zero length)");
+    EXPECT_EQ(error_of("M1 1 L1 1 Z m0 0 z"), "SVG path data: draws nothing (no segment of non-zero length)");
+    EXPECT_EQ(error_of("M-1e308 0 L1e308 0"),
+              "SVG path data: the path's length overflows a double (segment at offset 11)");
+}
+
+TEST(Svg, ErrorsAreThrownForEveryTruncation) {
+    // Cutting valid data anywhere either still parses or throws grape::Error: never anything
+    // else, and every message names an offset inside the data (or says it draws nothing).
+    const std::string data = "M10,20 c5 5 10-5 15 0s10 10 15 0q5-5 10 0t10 0a5 3 20 1 0 10 0h5v5l-3 3z";
+    for (std::size_t n = 0; n <= data.size(); ++n) {
+        const std::string cut = data.substr(0, n);
+        const std::string message = error_of(cut);
+        if (message.empty()) continue;
+        EXPECT_EQ(message.rfind("SVG path data: ", 0), 0u) << cut;
+        const auto at = message.find(" at offset ");
+        if (at != std::string::npos) {
+            EXPECT_LE(std::stoul(message.substr(at + 11)), cut.size()) << cut;
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Random valid data
+
+// Writes random valid path data, tracking where each part must start and end and which parts
+// share a subpath, so that the parse can be checked against it.
+class RandomPathData {
+public:
+    explicit RandomPathData(unsigned seed) : rng_(seed) {}
+
+    struct Expected {
+        std::string data;
+        std::vector<Vec2> starts;    // of each drawn part
+        std::vector<Vec2> ends;
+        std::vector<int> subpaths;
+    };
+
+    Expected make() {
+        Expected e;
+        current_ = start_ = {};
+        int subpath = -1;
+        const int commands = pick(1, 12);
+        bool moved = false;
+        for (int i = 0; i < commands || !moved || e.starts.empty(); ++i) {
+            const char kind = moved ? "MLHVCSQTAZ"[pick(0, 9)] : 'M';
+            const bool relative = pick(0, 1) == 1;
+            std::string text(1, relative ? static_cast<char>(kind - 'A' + 'a') : kind);
+            if (kind == 'M') {
+                moved = true;
+                ++subpath;
+                const Vec2 p = point();
+                text += pair(p, relative);
+                current_ = start_ = p;
+            } else if (kind == 'Z') {
+                if (current_ != start_) draw(e, subpath, start_);
+                current_ = start_;
+            } else {
+                const Vec2 end = fresh_end();
+                switch (kind) {
+                case 'L': case 'T': text += pair(end, relative); break;
+                case 'H': text += number(relative ? end.x - current_.x : end.x); break;
+                case 'V': text += number(relative ? end.y - current_.y : end.y); break;
+                case 'C': text += pair(point(), relative) + separator() + pair(point(), relative) + separator() + pair(end, relative); break;
+                case 'S': case 'Q': text += pair(point(), relative) + separator() + pair(end, relative); break;
+                case 'A':
+                    text += number(std::abs(coordinate()) + 1) + separator() + number(std::abs(coordinate()) + 1) +
+                            separator() + number(coordinate()) + separator() + (pick(0, 1) ? "1" : "0") +
+                            (pick(0, 1) ? "," : "") + (pick(0, 1) ? "1" : "0") + separator() + pair(end, relative);
+                    break;
+                default: break;
+                }
+                draw(e, subpath, kind == 'H' ? Vec2{end.x, current_.y} : kind == 'V' ? Vec2{current_.x, end.y} : end);
+            }
+            e.data += text + (pick(0, 1) ? " " : "");
+        }
+        return e;
+    }
+
+private:
+    int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+    // Quarters in [−200, 200]: exact in binary, so relative and absolute forms of a point agree.
+    double coordinate() { return pick(-800, 800) / 4.0; }
+    Vec2 point() { return {coordinate(), coordinate()}; }
+    // An endpoint away from the current point on both axes, so H and V draw too.
+    Vec2 fresh_end() {
+        Vec2 p = point();
+        while (p.x == current_.x || p.y == current_.y) p = point();
+        return p;
+    }
+    std::string separator() { return std::array<const char*, 4>{" ", ",", " , ", "\n"}[pick(0, 3)]; }
+    std::string number(double v) {
+        char buffer[64];
+        switch (pick(0, 2)) {
+        case 0: std::snprintf(buffer, sizeof buffer, "%.2f", v); break;
+        case 1: std::snprintf(buffer, sizeof buffer, "%.4e", v); break;
+        default: std::snprintf(buffer, sizeof buffer, "%g", v); break;
+        }
+        return buffer;
+    }
+    std::string pair(Vec2 p, bool relative) {
+        const Vec2 q = relative ? p - current_ : p;
+        return number(q.x) + separator() + number(q.y);
+    }
+    void draw(Expected& e, int subpath, Vec2 end) {
+        e.starts.push_back(current_);
+        e.ends.push_back(end);
+        e.subpaths.push_back(subpath);
+        current_ = end;
+    }
+
+    std::mt19937 rng_;
+    Vec2 current_{};
+    Vec2 start_{};
+};
+
+TEST(Svg, RandomValidDataParsesIntoContinuousSubpaths) {
+    RandomPathData generator(20261122);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const auto expected = generator.make();
+        SCOPED_TRACE(expected.data);
+        std::optional<ComplexPath> parsed;
+        ASSERT_NO_THROW(parsed.emplace(parse_svg_path(expected.data)));
+        const ComplexPath& path = *parsed;
+        ASSERT_EQ(path.parts().size(), expected.starts.size());
+        ASSERT_TRUE(std::isfinite(path.length()));
+        // Coordinates ≤ 200 and arcs scaled up to at most their chord: a few hundred ulp of
+        // 1000 bounds the rounding of the arcs' centres and angles.
+        const double tolerance = 256 * eps * 1000.0;
+        for (std::size_t i = 0; i < path.parts().size(); ++i) {
+            const Path& part = path.parts()[i];
+            expect_near(part.point(0.0), expected.starts[i], tolerance);
+            expect_near(part.point(1.0), expected.ends[i], tolerance);
+            if (i + 1 < path.parts().size() && expected.subpaths[i] == expected.subpaths[i + 1]) {
+                expect_near(part.point(1.0), path.parts()[i + 1].point(0.0), tolerance);
+            }
+        }
+        for (int k = 0; k <= 64; ++k) {
+            ASSERT_TRUE(grape::is_finite(path.point(k / 64.0)));
+            ASSERT_TRUE(grape::is_finite(path.d1(k / 64.0)));
+        }
+    }
+}
+
+}  // namespace
