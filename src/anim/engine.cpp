@@ -1,2 +1,721 @@
-// placeholder until the module lands
-namespace grape {}
+// The engine: creation and validation, the tick's hot loop, events, handles.
+#include "engine_impl.hpp"
+
+#include <grape/error.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace grape {
+
+namespace detail {
+
+namespace {
+
+constexpr std::uint32_t free_bit = 0x80000000u;
+
+// A play counts as finished within this much of its end (in plays): summed frame times
+// such as 60 × 1/60 fall short of 1 by a few ulp, and must still complete on that frame.
+constexpr double snap = 1e-9;
+constexpr double play_end = 1.0 - snap;
+
+std::string number_text(double v) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
+}
+
+bool parameter_free(CurveKind k) noexcept {
+    return k <= CurveKind::bounce_in_out && !(k >= CurveKind::back_in && k <= CurveKind::elastic_in_out);
+}
+
+void validate(std::string_view where, double duration, const AnimationDef& def) {
+    const std::string w(where);
+    if (!(std::isfinite(duration) && duration > 0.0))
+        throw Error(w + ": duration must be positive and finite (got " + number_text(duration) + ")");
+    if (!(std::isfinite(def.delay) && def.delay >= 0.0))
+        throw Error(w + ": delay must be >= 0 and finite (got " + number_text(def.delay) + ")");
+    if (def.repeat < -1)
+        throw Error(w + ": repeat must be >= 0, or -1 for forever (got " + std::to_string(def.repeat) + ")");
+    if (!(std::isfinite(def.time_scale) && def.time_scale >= 0.0))
+        throw Error(w + ": time_scale must be >= 0 and finite (got " + number_text(def.time_scale) + ")");
+}
+
+}  // namespace
+
+// Counts nested handler calls; removals wait until the outermost one has returned, so a
+// handler can kill anything (itself included) without pulling storage from under a caller.
+struct EngineImpl::Dispatch {
+    EngineImpl& engine;
+    explicit Dispatch(EngineImpl& e) noexcept : engine(e) { ++engine.depth_; }
+    ~Dispatch() {
+        if (--engine.depth_ == 0 && !engine.ticking_) engine.finish_dispatch();
+    }
+    Dispatch(const Dispatch&) = delete;
+    Dispatch& operator=(const Dispatch&) = delete;
+};
+
+// --- tables ----------------------------------------------------------------------------------
+
+std::uint32_t EngineImpl::acquire_path(const Path& path) {
+    const PathNode* node = &path.node();
+    if (auto it = path_index_.find(node); it != path_index_.end()) {
+        ++paths_[it->second].refs;
+        return it->second;
+    }
+    PathEntry entry;
+    entry.path = path;
+    entry.node = node;
+    entry.refs = 1;
+    switch (node->kind()) {
+        case PathKind::linear: entry.fast = FastPath::linear; break;
+        case PathKind::cubic_bezier: entry.fast = FastPath::cubic; break;
+        case PathKind::reparametrized: {
+            const auto* r = static_cast<const ReparametrizedNode*>(node);
+            entry.source = &r->source().node();
+            if (entry.source->kind() == PathKind::cubic_bezier) entry.fast = FastPath::reparam_cubic;
+            if (entry.source->kind() == PathKind::linear) entry.fast = FastPath::reparam_linear;
+            break;
+        }
+        default: break;
+    }
+    std::uint32_t index;
+    if (!free_paths_.empty()) {
+        index = free_paths_.back();
+        free_paths_.pop_back();
+        paths_[index] = std::move(entry);
+    } else {
+        index = static_cast<std::uint32_t>(paths_.size());
+        paths_.push_back(std::move(entry));
+        free_paths_.reserve(paths_.size());  // so releasing during a tick never allocates
+    }
+    path_index_.emplace(node, index);
+    return index;
+}
+
+void EngineImpl::release_path(std::uint32_t index) noexcept {
+    PathEntry& e = paths_[index];
+    if (--e.refs != 0) return;
+    path_index_.erase(e.node);
+    e = PathEntry();                // drops the shape if nobody else holds it
+    free_paths_.push_back(index);   // capacity reserved at creation
+}
+
+std::uint16_t EngineImpl::acquire_curve(const Curve& curve) {
+    std::string key = to_string(curve);
+    if (auto it = curve_index_.find(key); it != curve_index_.end()) {
+        ++curves_[it->second].refs;
+        return it->second;
+    }
+    std::uint16_t index;
+    if (!free_curves_.empty()) {
+        index = free_curves_.back();
+        free_curves_.pop_back();
+        curves_[index] = {curve, 1, {}};
+    } else {
+        if (curves_.size() > std::numeric_limits<std::uint16_t>::max())
+            throw Error("Engine: more than 65535 distinct curves with parameters alive at once");
+        index = static_cast<std::uint16_t>(curves_.size());
+        curves_.push_back({curve, 1, {}});
+        free_curves_.reserve(curves_.size());  // so releasing during a tick never allocates
+    }
+    curves_[index].key = key;
+    curve_index_.emplace(std::move(key), index);
+    return index;
+}
+
+void EngineImpl::release_curve(std::uint16_t index) noexcept {
+    if (index == 0) return;
+    CurveEntry& e = curves_[index];
+    if (--e.refs != 0) return;
+    curve_index_.erase(e.key);
+    free_curves_.push_back(index);  // capacity reserved at creation
+    e.curve = Curve();
+    e.key.clear();
+}
+
+// --- evaluation ------------------------------------------------------------------------------
+
+inline double EngineImpl::ease(const Hot& h, double x) const noexcept {
+    switch (h.kind) {
+        case CurveKind::linear: return x;
+        case CurveKind::quad_in: return ease::quad_in(x);
+        case CurveKind::quad_out: return ease::quad_out(x);
+        case CurveKind::quad_in_out: return ease::quad_in_out(x);
+        case CurveKind::cubic_in: return ease::cubic_in(x);
+        case CurveKind::cubic_out: return ease::cubic_out(x);
+        case CurveKind::cubic_in_out: return ease::cubic_in_out(x);
+        case CurveKind::sine_in_out: return ease::sine_in_out(x);
+        default: return curves_[h.curve].curve(x);
+    }
+}
+
+inline Vec2 EngineImpl::point(const PathEntry& e, double u) const noexcept {
+    if (u >= 0.0 && u <= 1.0) {
+        switch (e.fast) {
+            case FastPath::linear: {
+                const auto* n = static_cast<const LinearNode*>(e.node);
+                return n->a + n->delta * u;
+            }
+            case FastPath::cubic: return static_cast<const CubicBezierNode*>(e.node)->point(u);
+            case FastPath::reparam_cubic: {
+                const double v = static_cast<const ReparametrizedNode*>(e.node)->source_u(u);
+                return static_cast<const CubicBezierNode*>(e.source)->point(v);
+            }
+            case FastPath::reparam_linear: {
+                const double v = static_cast<const ReparametrizedNode*>(e.node)->source_u(u);
+                const auto* n = static_cast<const LinearNode*>(e.source);
+                return n->a + n->delta * v;
+            }
+            case FastPath::generic: return e.node->point(u);
+        }
+    }
+    return e.path.point(u);  // outside [0, 1]: along the end tangents
+}
+
+inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept {
+    char* base = static_cast<char*>(h.target);
+    if (h.flags & flag_float) {
+        *reinterpret_cast<float*>(base + h.x_offset) = static_cast<float>(p.x);
+        *reinterpret_cast<float*>(base + h.y_offset) = static_cast<float>(p.y);
+    } else {
+        *reinterpret_cast<double*>(base + h.x_offset) = p.x;
+        *reinterpret_cast<double*>(base + h.y_offset) = p.y;
+    }
+}
+
+double EngineImpl::progress_of(const Hot& h) const noexcept {
+    const double phase = std::clamp(h.phase, 0.0, 1.0);
+    return ease(h, (h.flags & flag_backward) ? 1.0 - phase : phase);
+}
+
+Vec2 EngineImpl::value_of(const Hot& h) const noexcept { return point(paths_[h.path], progress_of(h)); }
+
+double EngineImpl::heading_of(const Hot& h, std::uint32_t slot) const noexcept {
+    if (const Extra* e = extra(slot); e && e->track_heading) return e->heading;
+    const double angle = paths_[h.path].path.heading(progress_of(h));
+    return (h.flags & flag_backward) ? std::remainder(angle + pi, 2.0 * pi) : angle;
+}
+
+// The state at the record's time, written to wherever it goes. Handlers may run.
+void EngineImpl::write_state(std::uint32_t dense) {
+    const Hot& h = hot_[dense];
+    if (h.phase < 0.0) return;  // waiting: nothing is written until the first play starts
+    const double u = progress_of(h);
+    if (!(h.flags & flag_custom)) {
+        if (h.target) write_2d(h, point(paths_[h.path], u));
+        return;
+    }
+    Extra& e = extras_.find(cold_[dense].slot)->second;  // node-based: stable while handlers run
+    if (e.nd) {
+        e.nd->point(u, e.values);
+        char* base = static_cast<char*>(h.target);
+        if (base) {
+            for (std::size_t k = 0; k < e.members.size(); ++k) {
+                if (e.members[k].is_float) *reinterpret_cast<float*>(base + e.members[k].offset) = static_cast<float>(e.values[k]);
+                else *reinterpret_cast<double*>(base + e.members[k].offset) = e.values[k];
+            }
+        }
+        if (e.on_update_nd) {
+            const auto handler = e.on_update_nd;
+            Dispatch d(*this);
+            (*handler)(e.values);
+        }
+        return;
+    }
+    const Path& path = paths_[h.path].path;
+    const Vec2 p = point(paths_[h.path], u);
+    const double angle = path.heading(u);
+    e.heading = (h.flags & flag_backward) ? std::remainder(angle + pi, 2.0 * pi) : angle;
+    if (h.target) {
+        write_2d(h, p);
+        if (e.rotation_offset >= 0) {
+            char* at = static_cast<char*>(h.target) + e.rotation_offset;
+            if (h.flags & flag_float) *reinterpret_cast<float*>(at) = static_cast<float>(e.heading);
+            else *reinterpret_cast<double*>(at) = e.heading;
+        }
+    }
+    if (e.on_update_2d) {
+        const auto handler = e.on_update_2d;
+        Dispatch d(*this);
+        (*handler)(p, e.heading);
+    }
+}
+
+// --- the tick --------------------------------------------------------------------------------
+
+void EngineImpl::tick(double dt) {
+    if (!(std::isfinite(dt) && dt >= 0.0))
+        throw Error("Engine::tick: dt must be finite and >= 0 (got " + number_text(dt) + ")");
+    if (ticking_ || depth_ > 0) throw Error("Engine::tick: called from inside one of the engine's own handlers");
+    struct Ticking {
+        EngineImpl& e;
+        explicit Ticking(EngineImpl& engine) noexcept : e(engine) { e.ticking_ = true; }
+        ~Ticking() {
+            e.ticking_ = false;
+            e.finish_dispatch();
+        }
+    } ticking(*this);
+
+    // Records created by handlers during this tick land past n and start on the next tick.
+    const std::size_t n = hot_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        Hot& h = hot_[i];
+        if (h.flags & (flag_paused | flag_dead)) continue;
+        const double phase = h.phase + dt * h.rate;
+        if (phase < play_end && !(h.flags & flag_custom)) {
+            h.phase = phase;
+            if (phase >= 0.0 && h.target) {
+                const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;
+                write_2d(h, point(paths_[h.path], ease(h, x)));
+            }
+            continue;
+        }
+        advance_slow(static_cast<std::uint32_t>(i), phase);
+    }
+
+    if (!listeners_.empty()) {
+        Dispatch d(*this);
+        const std::size_t count = listeners_.size();
+        for (std::size_t k = 0; k < count; ++k) {
+            if (!listeners_[k].removed) listeners_[k].f(dt);  // the vector never grows here
+        }
+    }
+}
+
+// Loops, completion, waiting custom records and custom writes.
+void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
+    Hot& h = hot_[dense];
+    const Cold& c = cold_[dense];
+    std::uint32_t loops = 0;
+    bool completes = false;
+    const std::uint32_t first_play = h.play;
+    if (phase >= play_end) {
+        const double crossed = std::floor(phase + snap);
+        if (c.plays != 0 && static_cast<double>(h.play) + crossed >= static_cast<double>(c.plays)) {
+            loops = c.plays - 1 - h.play;
+            h.play = c.plays - 1;
+            phase = 1.0;
+            completes = true;
+        } else {
+            // An endless animation may cross more than 2³² plays in one absurd dt; the count
+            // saturates, the play index wraps (keeping its parity for yoyo).
+            loops = crossed >= 4294967295.0 ? UINT32_MAX : static_cast<std::uint32_t>(crossed);
+            h.play += static_cast<std::uint32_t>(std::fmod(crossed, 4294967296.0));
+            phase = std::max(phase - crossed, 0.0);
+        }
+        const bool odd = (h.play & 1u) != 0;
+        const bool backward = ((h.flags & flag_reversed) != 0) != (((h.flags & flag_yoyo) != 0) && odd);
+        h.flags = static_cast<std::uint8_t>(backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+    }
+    h.phase = phase;
+    write_state(dense);
+    if (loops > 0 || completes) fire_events(dense, first_play, loops, completes);
+}
+
+void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, std::uint32_t loops, bool completes) {
+    const std::uint32_t slot = cold_[dense].slot;
+    const std::uint32_t generation = slots_[slot].generation;
+    // The state every handler should find; a handler that seeks, kills or restarts this
+    // animation changes it, and then the remaining events of this update are dropped.
+    const std::uint32_t play = hot_[dense].play;
+    const double phase = hot_[dense].phase;
+    auto unchanged = [&] {
+        const Hot& h = hot_[dense];
+        return slots_[slot].generation == generation && h.play == play && h.phase == phase &&
+               !(h.flags & flag_dead);
+    };
+    if (hot_[dense].flags & flag_listens) {
+        Extra& e = extras_.find(slot)->second;
+        if (loops > 0 && e.on_loop) {
+            const auto handler = e.on_loop;
+            Dispatch d(*this);
+            for (std::uint32_t k = 1; k <= loops; ++k) {
+                (*handler)(static_cast<int>(std::min<std::uint32_t>(first_play + k, INT32_MAX)));
+                if (!unchanged()) return;
+            }
+        }
+        if (completes && e.on_complete) {
+            const auto handler = e.on_complete;
+            Dispatch d(*this);
+            (*handler)();
+            if (!unchanged()) return;  // restarted (or killed) by its own handler
+        }
+    }
+    if (completes) mark_dead(dense);
+}
+
+// --- creation --------------------------------------------------------------------------------
+
+Animation EngineImpl::add(Hot hot, double duration, int repeat, double delay, std::optional<Extra> extra) {
+    std::uint32_t slot;
+    if (free_slot_ != UINT32_MAX) {
+        slot = free_slot_;
+        free_slot_ = slots_[slot].dense & ~free_bit;
+        if (free_slot_ == (UINT32_MAX & ~free_bit)) free_slot_ = UINT32_MAX;
+    } else {
+        if (slots_.size() >= free_bit) throw Error("Engine: too many animations (2^31)");
+        slot = static_cast<std::uint32_t>(slots_.size());
+        slots_.push_back({0, 0});
+    }
+    const auto dense = static_cast<std::uint32_t>(hot_.size());
+    hot.phase = delay > 0.0 ? -delay / duration : 0.0;
+    hot.play = 0;
+    if (hot.flags & flag_reversed) hot.flags |= flag_backward;
+    hot_.push_back(hot);
+    cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot});
+    slots_[slot].dense = dense;
+    if (extra) extras_.insert_or_assign(slot, std::move(*extra));
+    ++live_;
+    const Animation handle(owner_, slot, slots_[slot].generation);
+    {
+        Dispatch d(*this);
+        write_state(dense);  // the start state, unless a delay holds it back
+    }
+    return handle;
+}
+
+Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
+                             std::ptrdiff_t rotation_offset, const Path& path, double duration,
+                             const AnimationDef& def, std::function<void(Vec2, double)> on_update) {
+    validate(target ? "create_2d_animation" : "create_animation", duration, def);
+    if (x_offset > 0xFFFF || y_offset > 0xFFFF)
+        throw Error("create_2d_animation: target.x and target.y must lie in the first 64 KiB of the target (offsets " +
+                    std::to_string(x_offset) + ", " + std::to_string(y_offset) + ")");
+    Hot h{};
+    h.rate = def.time_scale / duration;
+    h.target = target;
+    h.x_offset = static_cast<std::uint16_t>(x_offset);
+    h.y_offset = static_cast<std::uint16_t>(y_offset);
+    h.kind = def.curve.kind();
+    h.flags = static_cast<std::uint8_t>((is_float ? flag_float : 0) | (def.paused ? flag_paused : 0) |
+                                        (def.yoyo ? flag_yoyo : 0) | (def.reversed ? flag_reversed : 0));
+    std::optional<Extra> extra;
+    if (def.heading || on_update) {
+        extra.emplace();
+        extra->track_heading = def.heading;
+        extra->rotation_offset = rotation_offset;
+        if (on_update) extra->on_update_2d = std::make_shared<const std::function<void(Vec2, double)>>(std::move(on_update));
+        h.flags |= flag_custom;
+    }
+    h.path = acquire_path(path);
+    try {
+        h.curve = parameter_free(h.kind) ? 0 : acquire_curve(def.curve);
+    } catch (...) {
+        release_path(h.path);
+        throw;
+    }
+    return add(h, duration, def.repeat, def.delay, std::move(extra));
+}
+
+Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, PathND path, double duration,
+                                const AnimationDef& def, std::function<void(std::span<const double>)> on_update) {
+    const char* where = target ? "create_property_animation" : "create_animation";
+    validate(where, duration, def);
+    if (target && members.size() != path.dimension())
+        throw Error(std::string(where) + ": members and values must match (" + std::to_string(members.size()) +
+                    " members, " + std::to_string(path.dimension()) + " values)");
+    Hot h{};
+    h.rate = def.time_scale / duration;
+    h.target = target;
+    h.kind = def.curve.kind();
+    h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
+                                        (def.reversed ? flag_reversed : 0));
+    Extra extra;
+    extra.values.assign(path.dimension(), 0.0);
+    path.point(def.reversed ? 1.0 : 0.0, extra.values);  // the start values, readable while waiting
+    extra.nd.emplace(std::move(path));
+    extra.members = std::move(members);
+    if (on_update)
+        extra.on_update_nd = std::make_shared<const std::function<void(std::span<const double>)>>(std::move(on_update));
+    h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
+    try {
+        h.curve = parameter_free(h.kind) ? 0 : acquire_curve(def.curve);
+    } catch (...) {
+        release_path(h.path);
+        throw;
+    }
+    return add(h, duration, def.repeat, def.delay, std::move(extra));
+}
+
+// --- handles ---------------------------------------------------------------------------------
+
+const Hot* EngineImpl::find(std::uint32_t slot, std::uint32_t generation) const noexcept {
+    if (slot >= slots_.size()) return nullptr;
+    const Slot& s = slots_[slot];
+    if (s.generation != generation || (s.dense & free_bit)) return nullptr;
+    return &hot_[s.dense];
+}
+
+const Extra* EngineImpl::extra(std::uint32_t slot) const noexcept {
+    const auto it = extras_.find(slot);
+    return it == extras_.end() ? nullptr : &it->second;
+}
+
+Extra& EngineImpl::extra_for(std::uint32_t slot) { return extras_[slot]; }
+
+void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
+    if (std::isnan(seconds)) return;
+    Hot& h = hot_[dense];
+    const Cold& c = cold_[dense];
+    const double position = seconds / c.duration;
+    if (c.plays != 0 && position >= static_cast<double>(c.plays) - snap) {
+        h.play = c.plays - 1;
+        h.phase = 1.0;
+    } else if (position < 0.0) {
+        h.play = 0;
+        h.phase = std::max(position, -1e300);
+    } else {
+        const double whole = std::floor(position + snap);  // as tick counts plays
+        h.play = static_cast<std::uint32_t>(std::fmod(whole, 4294967296.0));
+        h.phase = std::max(position - whole, 0.0);
+    }
+    const bool backward = ((h.flags & flag_reversed) != 0) != (((h.flags & flag_yoyo) != 0) && (h.play & 1u));
+    h.flags = static_cast<std::uint8_t>(backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+    try {
+        Dispatch d(*this);
+        write_state(dense);
+    } catch (...) {  // a throwing on_update handler: the state is set; the error is dropped
+    }
+}
+
+void EngineImpl::set_time_scale(std::uint32_t dense, double scale) noexcept {
+    if (!(std::isfinite(scale) && scale >= 0.0)) return;
+    hot_[dense].rate = scale / cold_[dense].duration;
+}
+
+void EngineImpl::mark_dead(std::uint32_t dense) noexcept {
+    Hot& h = hot_[dense];
+    if (h.flags & flag_dead) return;
+    h.flags |= flag_dead;
+    ++slots_[cold_[dense].slot].generation;  // handles go inert now; storage goes later
+    --live_;
+    ++dead_;
+}
+
+void EngineImpl::kill(std::uint32_t dense) noexcept {
+    mark_dead(dense);
+    if (!ticking_ && depth_ == 0) finish_dispatch();
+}
+
+void EngineImpl::kill_all() noexcept {
+    for (std::uint32_t i = 0; i < hot_.size(); ++i) mark_dead(i);
+    if (!ticking_ && depth_ == 0) finish_dispatch();
+}
+
+void EngineImpl::remove_now(std::uint32_t dense) noexcept {
+    const std::uint32_t slot = cold_[dense].slot;
+    release_path(hot_[dense].path);
+    release_curve(hot_[dense].curve);
+    extras_.erase(slot);
+    slots_[slot].dense = free_bit | (free_slot_ & ~free_bit);
+    free_slot_ = slot;
+    const auto last = static_cast<std::uint32_t>(hot_.size() - 1);
+    if (dense != last) {
+        hot_[dense] = hot_[last];
+        cold_[dense] = cold_[last];
+        slots_[cold_[dense].slot].dense = dense;
+    }
+    hot_.pop_back();
+    cold_.pop_back();
+}
+
+void EngineImpl::compact() noexcept {
+    for (std::uint32_t i = 0; i < hot_.size() && dead_ > 0;) {
+        if (hot_[i].flags & flag_dead) {
+            remove_now(i);  // the last record moves into i; look at i again
+            --dead_;
+        } else {
+            ++i;
+        }
+    }
+    dead_ = 0;
+}
+
+void EngineImpl::finish_dispatch() noexcept {
+    if (dead_ > 0) compact();
+    if (listeners_removed_) {
+        std::erase_if(listeners_, [](const Listener& l) { return l.removed; });
+        std::erase_if(new_listeners_, [](const Listener& l) { return l.removed; });
+        listeners_removed_ = false;
+    }
+    if (!new_listeners_.empty()) {
+        try {
+            for (Listener& l : new_listeners_) listeners_.push_back(std::move(l));
+        } catch (...) {  // out of memory: listeners not yet joined are dropped
+        }
+        new_listeners_.clear();
+    }
+}
+
+std::size_t EngineImpl::on_tick(std::function<void(double)> listener) {
+    const std::size_t id = next_listener_++;
+    if (ticking_ || depth_ > 0) new_listeners_.push_back({id, std::move(listener)});
+    else listeners_.push_back({id, std::move(listener)});
+    return id;
+}
+
+void EngineImpl::remove_tick_listener(std::size_t id) noexcept {
+    for (auto* list : {&listeners_, &new_listeners_}) {
+        for (Listener& l : *list) {
+            if (l.id == id && !l.removed) {
+                l.removed = true;  // not called again; erased once no listener is running
+                listeners_removed_ = true;
+                if (!ticking_ && depth_ == 0) finish_dispatch();
+                return;
+            }
+        }
+    }
+}
+
+std::size_t EngineImpl::storage_bytes() const noexcept {
+    return hot_.capacity() * sizeof(Hot) + cold_.capacity() * sizeof(Cold) + slots_.capacity() * sizeof(Slot);
+}
+
+}  // namespace detail
+
+// --- Engine and Animation: thin forwarding ---------------------------------------------------
+
+Engine::Engine() : impl_(std::make_unique<detail::EngineImpl>(this)) {}
+Engine::~Engine() = default;
+
+void Engine::tick(double dt) { impl_->tick(dt); }
+
+Animation Engine::create_bound_2d(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
+                                  std::ptrdiff_t rotation_offset, const Path& path, double duration,
+                                  const AnimationDef& def) {
+    return impl_->create(target, x_offset, y_offset, is_float, rotation_offset, path, duration, def, {});
+}
+
+Animation Engine::create_bound_nd(void* target, std::vector<detail::MemberRef> members, PathND path,
+                                  double duration, const AnimationDef& def) {
+    return impl_->create_nd(target, std::move(members), std::move(path), duration, def, {});
+}
+
+Animation Engine::create_animation(const Path& path, double duration, const AnimationDef& def,
+                                   std::function<void(Vec2, double)> on_update) {
+    return impl_->create(nullptr, 0, 0, false, -1, path, duration, def, std::move(on_update));
+}
+
+Animation Engine::create_animation(PathND path, double duration, const AnimationDef& def,
+                                   std::function<void(std::span<const double>)> on_update) {
+    return impl_->create_nd(nullptr, {}, std::move(path), duration, def, std::move(on_update));
+}
+
+std::size_t Engine::on_tick(std::function<void(double)> listener) { return impl_->on_tick(std::move(listener)); }
+void Engine::remove_tick_listener(std::size_t id) noexcept { impl_->remove_tick_listener(id); }
+void Engine::kill_all() noexcept { impl_->kill_all(); }
+std::size_t Engine::size() const noexcept { return impl_->size(); }
+std::size_t Engine::storage_bytes() const noexcept { return impl_->storage_bytes(); }
+std::size_t Engine::bytes_per_animation() noexcept {
+    return sizeof(detail::Hot) + sizeof(detail::Cold) + sizeof(detail::Slot);
+}
+
+#define GRAPE_FIND(fallback)                                                        \
+    if (!engine_) return fallback;                                                  \
+    detail::EngineImpl& impl = *engine_->impl_;                                     \
+    const detail::Hot* found = impl.find(slot_, generation_);                       \
+    if (!found) return fallback;                                                    \
+    const std::uint32_t dense = impl.dense_of(slot_);                               \
+    (void)dense
+
+bool Animation::alive() const noexcept {
+    GRAPE_FIND(false);
+    return true;
+}
+
+bool Animation::waiting() const noexcept {
+    GRAPE_FIND(false);
+    return found->phase < 0.0;
+}
+
+bool Animation::paused() const noexcept {
+    GRAPE_FIND(false);
+    return (found->flags & detail::flag_paused) != 0;
+}
+
+Vec2 Animation::value() const noexcept {
+    GRAPE_FIND(Vec2{});
+    if (const detail::Extra* e = impl.extra(slot_); e && e->nd) return {};
+    return impl.value_of(*found);
+}
+
+std::span<const double> Animation::values() const noexcept {
+    GRAPE_FIND(std::span<const double>());
+    const detail::Extra* e = impl.extra(slot_);
+    return e && e->nd ? std::span<const double>(e->values) : std::span<const double>();
+}
+
+double Animation::heading() const noexcept {
+    GRAPE_FIND(0.0);
+    return impl.heading_of(*found, slot_);
+}
+
+double Animation::progress() const noexcept {
+    GRAPE_FIND(0.0);
+    return impl.progress_of(*found);
+}
+
+double Animation::time() const noexcept {
+    GRAPE_FIND(0.0);
+    return (static_cast<double>(found->play) + found->phase) * impl.cold(dense).duration;
+}
+
+int Animation::repetition() const noexcept {
+    GRAPE_FIND(0);
+    return static_cast<int>(std::min<std::uint32_t>(found->play, INT32_MAX));
+}
+
+double Animation::duration() const noexcept {
+    GRAPE_FIND(0.0);
+    return impl.cold(dense).duration;
+}
+
+double Animation::time_scale() const noexcept {
+    GRAPE_FIND(0.0);
+    return found->rate * impl.cold(dense).duration;
+}
+
+void Animation::pause() const noexcept {
+    GRAPE_FIND();
+    impl.hot(dense).flags |= detail::flag_paused;
+}
+
+void Animation::resume() const noexcept {
+    GRAPE_FIND();
+    impl.hot(dense).flags &= static_cast<std::uint8_t>(~detail::flag_paused);
+}
+
+void Animation::seek(double seconds) const noexcept {
+    GRAPE_FIND();
+    impl.seek(dense, seconds);
+}
+
+void Animation::set_time_scale(double scale) const noexcept {
+    GRAPE_FIND();
+    impl.set_time_scale(dense, scale);
+}
+
+void Animation::kill() const noexcept {
+    GRAPE_FIND();
+    impl.kill(dense);
+}
+
+void Animation::on_complete(std::function<void()> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_complete = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_listens;
+}
+
+void Animation::on_loop(std::function<void(int)> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_loop = handler ? std::make_shared<const std::function<void(int)>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_listens;
+}
+
+#undef GRAPE_FIND
+
+}  // namespace grape

@@ -1,0 +1,247 @@
+// grape — animations and the engine: a path (where) played by a curve (when) over time.
+//
+// The `Engine` is an ordinary object the application owns; `tick(dt)` advances every live
+// animation. Animations live in the engine's contiguous storage and are reached through
+// `Animation` handles, which are generation-checked: once an animation has completed or been
+// killed its handles are inert (queries say so, commands do nothing), never dangling.
+// A handle must not outlive its engine.
+//
+//   grape::Engine engine;
+//   grape::SpiralPath spiral({100, 100}, 200, 0);
+//   grape::Animation anim = engine.create_2d_animation(view, spiral, 2.0);  // view.x, view.y
+//   anim.on_complete([] { /* done */ });
+//   engine.tick(1.0 / 60.0);
+//
+// Time is exact: ticking any dt sequence that sums to T lands where seek gives the same
+// time (to rounding), repeats and yoyo included, and one large dt fires every loop event it
+// crosses, in order.
+#pragma once
+
+#include <grape/curve.hpp>
+#include <grape/math.hpp>
+#include <grape/path.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <memory>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+namespace grape {
+
+class Engine;
+
+/// How an animation plays; fill with designated initializers:
+/// `{.curve = Curve::quad_in_out(), .repeat = -1, .yoyo = true}`.
+struct AnimationDef {
+    Curve curve{};            ///< progress over each play's normalized time (default linear)
+    double delay = 0.0;       ///< seconds (animation time) before the first play; ≥ 0
+    int repeat = 0;           ///< extra plays after the first: 0 plays once, −1 forever
+    bool reversed = false;    ///< play from the path's end to its start
+    bool yoyo = false;        ///< every second play runs backwards (reverse on loop)
+    double time_scale = 1.0;  ///< animation seconds per engine second; ≥ 0
+    bool paused = false;      ///< create paused (resume() starts it)
+    bool heading = false;     ///< also track the path's heading (radians); 2-D animations
+                              ///< bound to a target with a `rotation` member write it there
+};
+
+/// A member of T that a property animation drives: a `double T::*` or a `float T::*`.
+template <class T>
+struct Member {
+    Member(double T::*m) noexcept : d(m) {}  // NOLINT: implicit on purpose, {&T::a, &T::b}
+    Member(float T::*m) noexcept : f(m) {}   // NOLINT
+    double T::*d = nullptr;
+    float T::*f = nullptr;
+};
+
+namespace detail {
+class EngineImpl;
+/// Where a property animation writes one value: a byte offset into the target and its type.
+struct MemberRef {
+    std::size_t offset;
+    bool is_float;
+};
+template <class T, class M>
+std::size_t offset_in(const T& object, const M& member) noexcept {
+    return static_cast<std::size_t>(reinterpret_cast<const char*>(&member) - reinterpret_cast<const char*>(&object));
+}
+}  // namespace detail
+
+/// A handle to an animation in an Engine. Default-constructed or stale handles are inert:
+/// queries return neutral values and `alive()` is false; commands do nothing.
+class Animation {
+public:
+    Animation() noexcept = default;
+
+    /// Waiting for its delay, playing or paused (false once completed or killed).
+    bool alive() const noexcept;
+    explicit operator bool() const noexcept { return alive(); }
+    /// Still inside its delay: nothing has been written to the target yet.
+    bool waiting() const noexcept;
+    bool paused() const noexcept;
+
+    /// The current 2-D position (the path's start while waiting; {0, 0} if not alive or N-D).
+    Vec2 value() const noexcept;
+    /// The current values of an N-D animation (empty if not alive or 2-D).
+    std::span<const double> values() const noexcept;
+    /// Direction of travel in radians, atan2 of the path's derivative at the current point,
+    /// turned by π while playing backwards (0 if not alive).
+    double heading() const noexcept;
+    /// Curve progress of the current play (the path parameter u; may leave [0, 1]).
+    double progress() const noexcept;
+    /// Seconds of animation time since the first play began (negative while waiting;
+    /// counts all plays, so it runs to duration·(repeat + 1)).
+    double time() const noexcept;
+    /// Which play is running: 0 for the first, 1 after the first loop, ...
+    int repetition() const noexcept;
+    /// Seconds per play (0 if not alive).
+    double duration() const noexcept;
+    /// Animation seconds per engine second (0 if not alive).
+    double time_scale() const noexcept;
+
+    /// Stops advancing (keeps its state and its target's values).
+    void pause() const noexcept;
+    /// Advances again from where it paused.
+    void resume() const noexcept;
+    /// Jumps to `seconds` of animation time since the first play began (negative: back into
+    /// the delay, that many seconds before the start; past the end of a finite animation:
+    /// its end, and it completes on the next tick). Writes the new state to the target at
+    /// once; fires no event (events come from tick).
+    void seek(double seconds) const noexcept;
+    /// Changes the speed (≥ 0 and finite; other values are ignored).
+    void set_time_scale(double scale) const noexcept;
+    /// Removes the animation now (inside a tick: no further events; storage reclaimed at the
+    /// tick's end). Its target keeps its last values. Completion does not fire.
+    void kill() const noexcept;
+
+    /// Calls `handler` once when the animation completes (after its last play has written its
+    /// end state). The handler may create, pause, seek or kill any animation, this one
+    /// included; seeking this one back into its plays from the handler restarts it.
+    void on_complete(std::function<void()> handler) const;
+    /// Calls `handler(play)` each time a new play starts (play = 1, 2, ...), once per play
+    /// even when one tick crosses several.
+    void on_loop(std::function<void(int)> handler) const;
+
+    friend bool operator==(const Animation&, const Animation&) noexcept = default;
+
+private:
+    friend class Engine;
+    friend class detail::EngineImpl;
+    Animation(Engine* engine, std::uint32_t slot, std::uint32_t generation) noexcept
+        : engine_(engine), slot_(slot), generation_(generation) {}
+    Engine* engine_ = nullptr;
+    std::uint32_t slot_ = 0;
+    std::uint32_t generation_ = 0;
+};
+
+/// Owns and advances animations. Not copyable or movable (handles refer to it).
+///
+/// Order within a tick: every animation that was alive when the tick began advances by dt
+/// (events fire as each one crosses a loop or completes), then tick listeners run.
+/// Handlers may create, pause, resume, seek or kill animations: an animation created during
+/// a tick first advances on the next tick; a killed one gets no further events; a change
+/// to an animation the tick has not reached yet applies before its own update in that tick.
+class Engine {
+public:
+    Engine();
+    ~Engine();
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    /// Advances every live animation by dt engine seconds (finite, ≥ 0; throws grape::Error
+    /// otherwise, or when called from inside one of its own handlers).
+    void tick(double dt);
+
+    /// Moves `target.x` and `target.y` (both double or both float) along a 2-D path for
+    /// `duration` seconds (> 0 and finite) per play. With `def.heading` and a `rotation`
+    /// member of the same type, the heading is written there too.
+    template <class T>
+    Animation create_2d_animation(T& target, const Path& path, double duration, const AnimationDef& def = {});
+
+    /// Moves any double/float members of `target` from `from` to `to` (one value per member).
+    template <class T>
+    Animation create_property_animation(T& target, std::initializer_list<Member<std::type_identity_t<T>>> members,
+                                        std::initializer_list<double> from, std::initializer_list<double> to,
+                                        double duration, const AnimationDef& def = {});
+    /// Moves members of `target` through the keyframes of an N-D path (N = members.size()).
+    template <class T>
+    Animation create_property_animation(T& target, std::initializer_list<Member<std::type_identity_t<T>>> members, PathND path,
+                                        double duration, const AnimationDef& def = {});
+
+    /// An animation bound to nothing: read its state from the handle, or get it in
+    /// `on_update(position, heading)` after each change (tick or seek).
+    Animation create_animation(const Path& path, double duration, const AnimationDef& def = {},
+                               std::function<void(Vec2, double)> on_update = {});
+    /// The N-D form: `on_update(values)` after each change.
+    Animation create_animation(PathND path, double duration, const AnimationDef& def = {},
+                               std::function<void(std::span<const double>)> on_update = {});
+
+    /// Calls `listener(dt)` at the end of every tick; returns an id for remove_tick_listener.
+    std::size_t on_tick(std::function<void(double)> listener);
+    /// Stops a tick listener (safe inside a tick: it is not called again).
+    void remove_tick_listener(std::size_t id) noexcept;
+
+    /// Kills every animation (no events).
+    void kill_all() noexcept;
+    /// Live animations (waiting, playing or paused).
+    std::size_t size() const noexcept;
+    /// Bytes the engine's per-animation storage holds now (capacity included), not counting
+    /// shared paths and curves or handler state.
+    std::size_t storage_bytes() const noexcept;
+    /// Bytes of storage each plain 2-D animation needs (hot + cold + handle slot).
+    static std::size_t bytes_per_animation() noexcept;
+
+private:
+    friend class Animation;
+    Animation create_bound_2d(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
+                              std::ptrdiff_t rotation_offset, const Path& path, double duration,
+                              const AnimationDef& def);
+    Animation create_bound_nd(void* target, std::vector<detail::MemberRef> members, PathND path, double duration,
+                              const AnimationDef& def);
+    std::unique_ptr<detail::EngineImpl> impl_;
+};
+
+// --- templates ------------------------------------------------------------------------------
+
+template <class T>
+Animation Engine::create_2d_animation(T& target, const Path& path, double duration, const AnimationDef& def) {
+    using X = std::remove_cvref_t<decltype(target.x)>;
+    using Y = std::remove_cvref_t<decltype(target.y)>;
+    static_assert(std::is_same_v<X, Y> && (std::is_same_v<X, double> || std::is_same_v<X, float>),
+                  "create_2d_animation: target.x and target.y must both be double or both float");
+    std::ptrdiff_t rotation = -1;
+    if constexpr (requires { target.rotation; }) {
+        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(target.rotation)>, X>) {
+            if (def.heading) rotation = static_cast<std::ptrdiff_t>(detail::offset_in(target, target.rotation));
+        }
+    }
+    return create_bound_2d(&target, detail::offset_in(target, target.x), detail::offset_in(target, target.y),
+                           std::is_same_v<X, float>, rotation, path, duration, def);
+}
+
+template <class T>
+Animation Engine::create_property_animation(T& target, std::initializer_list<Member<std::type_identity_t<T>>> members, PathND path,
+                                            double duration, const AnimationDef& def) {
+    std::vector<detail::MemberRef> refs;
+    refs.reserve(members.size());
+    for (const Member<T>& m : members) {
+        if (m.d) refs.push_back({detail::offset_in(target, target.*(m.d)), false});
+        else refs.push_back({detail::offset_in(target, target.*(m.f)), true});
+    }
+    return create_bound_nd(&target, std::move(refs), std::move(path), duration, def);
+}
+
+template <class T>
+Animation Engine::create_property_animation(T& target, std::initializer_list<Member<std::type_identity_t<T>>> members,
+                                            std::initializer_list<double> from, std::initializer_list<double> to,
+                                            double duration, const AnimationDef& def) {
+    return create_property_animation(target, members,
+                                     PathND(std::span<const double>(from.begin(), from.size()),
+                                            std::span<const double>(to.begin(), to.size())),
+                                     duration, def);
+}
+
+}  // namespace grape

@@ -1,0 +1,173 @@
+// The engine's storage: hot records walked linearly every tick, cold records read on loops,
+// completion and queries, handle slots, shared path and curve tables, and the optional
+// per-animation extras (handlers, N-D targets, heading) kept apart in a map.
+#pragma once
+
+#include <grape/anim.hpp>
+
+#include "../path/path_node.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace grape::detail {
+
+enum HotFlag : std::uint8_t {
+    flag_paused = 1,
+    flag_float = 2,     // the target's members are float (else double)
+    flag_backward = 4,  // the current play runs from the path's end to its start
+    flag_yoyo = 8,
+    flag_reversed = 16,
+    flag_custom = 32,   // written through its Extra (N-D, callback, heading)
+    flag_dead = 64,     // killed or completed during a dispatch; removed afterwards
+    flag_listens = 128, // has loop or complete handlers in its Extra
+};
+
+/// What every tick touches: 40 bytes.
+struct Hot {
+    double phase;            // time within the current play, in plays: [0, 1]; < 0 while waiting
+    double rate;             // plays per engine second: time_scale / duration
+    void* target;            // object whose members receive x, y (null: nothing to write)
+    std::uint32_t path;      // index into the path table
+    std::uint32_t play;      // which play is running, from 0 (wraps at 2³², parity kept)
+    std::uint16_t x_offset;  // byte offsets of the target's x and y
+    std::uint16_t y_offset;
+    std::uint16_t curve;     // index into the curve table (curves with parameters)
+    CurveKind kind;
+    std::uint8_t flags;
+};
+
+/// Read on loops, completion and queries: 16 bytes.
+struct Cold {
+    double duration;      // seconds per play
+    std::uint32_t plays;  // repeat + 1; 0 plays forever
+    std::uint32_t slot;   // the handle slot that refers to this record
+};
+
+/// A handle slot: 8 bytes. `dense` is the record index while alive; free slots chain
+/// through it with the high bit set.
+struct Slot {
+    std::uint32_t dense;
+    std::uint32_t generation;
+};
+
+/// The handlers and targets only some animations have.
+struct Extra {
+    // Shared so that a running handler survives being replaced from inside itself: the
+    // caller holds a copy of the pointer for the duration of the call (no allocation).
+    std::shared_ptr<const std::function<void()>> on_complete;
+    std::shared_ptr<const std::function<void(int)>> on_loop;
+    std::shared_ptr<const std::function<void(Vec2, double)>> on_update_2d;
+    std::shared_ptr<const std::function<void(std::span<const double>)>> on_update_nd;
+    std::ptrdiff_t rotation_offset = -1;  // heading written here (2-D targets), if ≥ 0
+    bool track_heading = false;
+    double heading = 0.0;
+    std::optional<PathND> nd;             // N-D animations
+    std::vector<MemberRef> members;       // N-D targets
+    std::vector<double> values;           // N-D current values
+};
+
+enum class FastPath : std::uint8_t { generic, linear, cubic, reparam_linear, reparam_cubic };
+
+struct PathEntry {
+    Path path;                         // keeps the shape alive
+    const PathNode* node = nullptr;
+    const PathNode* source = nullptr;  // reparametrized kinds: the source node
+    FastPath fast = FastPath::generic;
+    std::uint32_t refs = 0;
+};
+
+struct CurveEntry {
+    Curve curve;
+    std::uint32_t refs = 0;
+    std::string key;  // its name in curve_index_
+};
+
+class EngineImpl {
+public:
+    explicit EngineImpl(Engine* owner) : owner_(owner) {
+        curves_.push_back({Curve(), 1, {}});  // index 0: the formula kinds (never released)
+    }
+
+    void tick(double dt);
+    Animation create(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
+                     std::ptrdiff_t rotation_offset, const Path& path, double duration, const AnimationDef& def,
+                     std::function<void(Vec2, double)> on_update);
+    Animation create_nd(void* target, std::vector<MemberRef> members, PathND path, double duration,
+                        const AnimationDef& def, std::function<void(std::span<const double>)> on_update);
+
+    // handle operations (inert on stale handles)
+    const Hot* find(std::uint32_t slot, std::uint32_t generation) const noexcept;
+    std::uint32_t dense_of(std::uint32_t slot) const noexcept { return slots_[slot].dense; }
+    const Cold& cold(std::uint32_t dense) const noexcept { return cold_[dense]; }
+    Hot& hot(std::uint32_t dense) noexcept { return hot_[dense]; }
+    const Extra* extra(std::uint32_t slot) const noexcept;
+    Extra& extra_for(std::uint32_t slot);
+    Vec2 value_of(const Hot& h) const noexcept;
+    double heading_of(const Hot& h, std::uint32_t slot) const noexcept;
+    double progress_of(const Hot& h) const noexcept;
+    void seek(std::uint32_t dense, double seconds) noexcept;
+    void set_time_scale(std::uint32_t dense, double scale) noexcept;
+    void kill(std::uint32_t dense) noexcept;
+    void kill_all() noexcept;
+
+    std::size_t on_tick(std::function<void(double)> listener);
+    void remove_tick_listener(std::size_t id) noexcept;
+
+    std::size_t size() const noexcept { return live_; }
+    std::size_t storage_bytes() const noexcept;
+
+private:
+    struct Dispatch;  // RAII: counts nested handler calls, compacts when the last one ends
+
+    std::uint32_t acquire_path(const Path& path);
+    void release_path(std::uint32_t index) noexcept;
+    std::uint16_t acquire_curve(const Curve& curve);
+    void release_curve(std::uint16_t index) noexcept;
+    Animation add(Hot hot, double duration, int repeat, double delay, std::optional<Extra> extra);
+
+    double ease(const Hot& h, double x) const noexcept;
+    Vec2 point(const PathEntry& e, double u) const noexcept;
+    void write_2d(const Hot& h, Vec2 p) const noexcept;
+    void write_state(std::uint32_t dense);
+    void advance_slow(std::uint32_t dense, double phase);
+    void fire_events(std::uint32_t dense, std::uint32_t first_play, std::uint32_t loops, bool completes);
+    void mark_dead(std::uint32_t dense) noexcept;
+    void remove_now(std::uint32_t dense) noexcept;
+    void compact() noexcept;
+    void finish_dispatch() noexcept;
+
+    Engine* owner_;
+    std::vector<Hot> hot_;
+    std::vector<Cold> cold_;
+    std::vector<Slot> slots_;
+    std::uint32_t free_slot_ = UINT32_MAX;
+    std::unordered_map<std::uint32_t, Extra> extras_;  // by slot
+
+    std::vector<PathEntry> paths_;
+    std::vector<std::uint32_t> free_paths_;
+    std::unordered_map<const PathNode*, std::uint32_t> path_index_;
+    std::vector<CurveEntry> curves_;
+    std::vector<std::uint16_t> free_curves_;
+    std::unordered_map<std::string, std::uint16_t> curve_index_;
+
+    struct Listener {
+        std::size_t id;
+        std::function<void(double)> f;
+        bool removed = false;  // erased after the dispatch, so a running listener stays intact
+    };
+    std::vector<Listener> listeners_;
+    std::vector<Listener> new_listeners_;  // added during a dispatch; joined afterwards
+    std::size_t next_listener_ = 1;
+    bool listeners_removed_ = false;
+
+    std::size_t live_ = 0;
+    std::size_t dead_ = 0;  // records flagged dead and not yet compacted
+    int depth_ = 0;         // handler calls in progress
+    bool ticking_ = false;
+};
+
+}  // namespace grape::detail
