@@ -1,7 +1,8 @@
-// The word loops are written once as templates over a "vector of 4 words" (GCC/Clang vector
-// extensions: two SSE2 registers in a baseline build, one AVX2 register in the avx2 clone) and
-// instantiated inside functions carrying target attributes. -O2's cheap vectorizer will not
-// vectorize an unknown-length loop by itself, hence the explicit vectors.
+// The word loops are written once as templates over a vector type (GCC/Clang vector
+// extensions: 2 words in an SSE2 register for the baseline and popcnt versions, 4 words in an
+// AVX2 register for the avx2 version) and instantiated inside functions carrying target
+// attributes. -O2's very-cheap vectorizer will not vectorize an unknown-length loop by itself
+// (it would need an epilogue and an aliasing check), hence the explicit vectors.
 #include "word_kernels.hpp"
 
 #include <bit>
@@ -24,52 +25,61 @@ namespace {
 #define GRAPE_INLINE inline
 #endif
 
+enum class Op { and_, or_, xor_, and_not };
+
+// x = x op y. By reference, so no vector is ever passed by value (see below).
+template <Op op, class T>
+GRAPE_INLINE void apply(T& x, const T& y) noexcept {
+    if constexpr (op == Op::and_) x &= y;
+    if constexpr (op == Op::or_) x |= y;
+    if constexpr (op == Op::xor_) x ^= y;
+    if constexpr (op == Op::and_not) x &= ~y;
+}
+
 #if defined(__GNUC__)
-// The helpers pass 32-byte vectors by value, which GCC warns changes the ABI between SSE2 and
-// AVX builds. They are internal and always inlined into each kernel, so no ABI is involved.
-#pragma GCC diagnostic ignored "-Wpsabi"
+// Vectors never cross a function boundary by value: passing a 32-byte vector to a function
+// compiled without AVX uses a different ABI, which at -O0 (no inlining) corrupts the operands.
 using Word2 = Word __attribute__((vector_size(16)));  // one SSE2 register
 using Word4 = Word __attribute__((vector_size(32)));  // one AVX2 register
 
-template <class V>
-GRAPE_INLINE V load(const Word* p) noexcept {
-    V v;
-    std::memcpy(&v, p, sizeof v);  // unaligned load; compiles to one vector move
-    return v;
-}
-template <class V>
-GRAPE_INLINE void store(Word* p, V v) noexcept {
-    std::memcpy(p, &v, sizeof v);
-}
-
 // Two vectors per iteration so the loads of the next pair overlap the stores of this one.
-template <class V, class Op>
-GRAPE_INLINE void binary_loop(Word* a, const Word* b, std::size_t n, Op op) noexcept {
+template <class V, Op op>
+GRAPE_INLINE void binary_loop(Word* a, const Word* b, std::size_t n) noexcept {
     constexpr std::size_t lanes = sizeof(V) / sizeof(Word);
     std::size_t i = 0;
     for (; i + 2 * lanes <= n; i += 2 * lanes) {
-        const V x0 = op(load<V>(a + i), load<V>(b + i));
-        const V x1 = op(load<V>(a + i + lanes), load<V>(b + i + lanes));
-        store(a + i, x0);
-        store(a + i + lanes, x1);
+        V a0, a1, b0, b1;
+        std::memcpy(&a0, a + i, sizeof(V));  // unaligned loads: one vector move each
+        std::memcpy(&a1, a + i + lanes, sizeof(V));
+        std::memcpy(&b0, b + i, sizeof(V));
+        std::memcpy(&b1, b + i + lanes, sizeof(V));
+        apply<op>(a0, b0);
+        apply<op>(a1, b1);
+        std::memcpy(a + i, &a0, sizeof(V));
+        std::memcpy(a + i + lanes, &a1, sizeof(V));
     }
-    for (; i < n; ++i) a[i] = op(a[i], b[i]);
+    for (; i < n; ++i) apply<op>(a[i], b[i]);
 }
 
 template <class V>
 GRAPE_INLINE void flip_loop(Word* a, std::size_t n) noexcept {
     constexpr std::size_t lanes = sizeof(V) / sizeof(Word);
     std::size_t i = 0;
-    for (; i + lanes <= n; i += lanes) store(a + i, ~load<V>(a + i));
+    for (; i + lanes <= n; i += lanes) {
+        V x;
+        std::memcpy(&x, a + i, sizeof(V));
+        x = ~x;
+        std::memcpy(a + i, &x, sizeof(V));
+    }
     for (; i < n; ++i) a[i] = ~a[i];
 }
 #else
 using Word2 = Word;  // no vector extensions: plain word loops
 using Word4 = Word;
 
-template <class V, class Op>
-inline void binary_loop(Word* a, const Word* b, std::size_t n, Op op) noexcept {
-    for (std::size_t i = 0; i < n; ++i) a[i] = op(a[i], b[i]);
+template <class V, Op op>
+inline void binary_loop(Word* a, const Word* b, std::size_t n) noexcept {
+    for (std::size_t i = 0; i < n; ++i) apply<op>(a[i], b[i]);
 }
 template <class V>
 inline void flip_loop(Word* a, std::size_t n) noexcept {
@@ -90,37 +100,32 @@ GRAPE_INLINE std::size_t count_loop(const Word* w, std::size_t n) noexcept {
     return c0 + c1 + c2 + c3;
 }
 
-constexpr auto op_and = [](auto x, auto y) { return x & y; };
-constexpr auto op_or = [](auto x, auto y) { return x | y; };
-constexpr auto op_xor = [](auto x, auto y) { return x ^ y; };
-constexpr auto op_and_not = [](auto x, auto y) { return x & ~y; };
-
 // One set of kernels per instruction set; the macro stamps out identical bodies so that each
 // is compiled (and inlined into) with its own target features.
 #define GRAPE_DEFINE_KERNELS(ns, features, V)                                                                     \
     namespace ns {                                                                                            \
     GRAPE_TARGET(features) std::size_t count(const Word* w, std::size_t n) noexcept { return count_loop(w, n); } \
     GRAPE_TARGET(features) void and_with(Word* a, const Word* b, std::size_t n) noexcept {                    \
-        binary_loop<V>(a, b, n, op_and);                                                                         \
+        binary_loop<V, Op::and_>(a, b, n);                                                                         \
     }                                                                                                         \
     GRAPE_TARGET(features) void or_with(Word* a, const Word* b, std::size_t n) noexcept {                     \
-        binary_loop<V>(a, b, n, op_or);                                                                          \
+        binary_loop<V, Op::or_>(a, b, n);                                                                          \
     }                                                                                                         \
     GRAPE_TARGET(features) void xor_with(Word* a, const Word* b, std::size_t n) noexcept {                    \
-        binary_loop<V>(a, b, n, op_xor);                                                                         \
+        binary_loop<V, Op::xor_>(a, b, n);                                                                         \
     }                                                                                                         \
     GRAPE_TARGET(features) void and_not(Word* a, const Word* b, std::size_t n) noexcept {                     \
-        binary_loop<V>(a, b, n, op_and_not);                                                                     \
+        binary_loop<V, Op::and_not>(a, b, n);                                                                     \
     }                                                                                                         \
     GRAPE_TARGET(features) void flip(Word* a, std::size_t n) noexcept { flip_loop<V>(a, n); }                    \
     }
 
 namespace generic {
 std::size_t count(const Word* w, std::size_t n) noexcept { return count_loop(w, n); }
-void and_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2>(a, b, n, op_and); }
-void or_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2>(a, b, n, op_or); }
-void xor_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2>(a, b, n, op_xor); }
-void and_not(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2>(a, b, n, op_and_not); }
+void and_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2, Op::and_>(a, b, n); }
+void or_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2, Op::or_>(a, b, n); }
+void xor_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2, Op::xor_>(a, b, n); }
+void and_not(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2, Op::and_not>(a, b, n); }
 void flip(Word* a, std::size_t n) noexcept { flip_loop<Word2>(a, n); }
 }  // namespace generic
 
