@@ -162,6 +162,7 @@ int run(const Options& options) {
 
     int frame = 0;
     bool running = true;
+    double phase[4] = {0, 0, 0, 0};  // seconds: simulation, UI building, rasterizing, presenting
     while (running) {
         for (; next_event < script.size() && script[next_event].frame <= frame; ++next_event) {
             SDL_Event e = script[next_event].event;
@@ -184,7 +185,9 @@ int run(const Options& options) {
         if (scripted) event_mouse.apply(io);
         ImGui::NewFrame();
 
+        const auto t_advance = clock::now();
         tabs[current]->advance(frame_dt);
+        const auto t_ui = clock::now();
 
         ImGui::SetNextWindowPos({0.0f, 0.0f});
         ImGui::SetNextWindowSize(io.DisplaySize);
@@ -226,13 +229,20 @@ int run(const Options& options) {
         ImGui::End();
 
         ImGui::Render();
+        const auto t_raster = clock::now();
         SDL_SetRenderDrawColor(sdl.renderer, 250, 248, 244, 255);
         SDL_RenderClear(sdl.renderer);
         ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
         ++frame;
         const bool last = options.frames > 0 && frame >= options.frames;
         if (last && !options.screenshot.empty()) save_screenshot(sdl.renderer, options.screenshot);
+        const auto t_present = clock::now();
         SDL_RenderPresent(sdl.renderer);
+        const auto t_end = clock::now();
+        phase[0] += std::chrono::duration<double>(t_ui - t_advance).count();
+        phase[1] += std::chrono::duration<double>(t_raster - t_ui).count();
+        phase[2] += std::chrono::duration<double>(t_present - t_raster).count();
+        phase[3] += std::chrono::duration<double>(t_end - t_present).count();
         if (last) running = false;
 
         const auto now = clock::now();
@@ -258,10 +268,14 @@ int run(const Options& options) {
         const double p95 = s[std::min(s.size() - 1, s.size() * 95 / 100)];
         std::printf("fps: tab=%s frames=%zu mean_fps=%.1f median_frame_ms=%.2f p95_frame_ms=%.2f\n",
                     tabs[current]->name(), s.size(), double(s.size()) / total, median * 1e3, p95 * 1e3);
+        const double n = double(frame_seconds.size());
+        std::printf("fps: mean ms per frame: simulation %.2f, ui %.2f, rasterizing %.2f, presenting %.2f\n",
+                    phase[0] / n * 1e3, phase[1] / n * 1e3, phase[2] / n * 1e3, phase[3] / n * 1e3);
     }
     if (!options.report.empty()) {
         std::ofstream out(options.report);
         if (!out) throw Error("--report: cannot write '" + options.report + "'");
+        out.precision(17);  // full doubles, so checks can compare closely
         out << "tab: " << tabs[current]->name() << "\nframes: " << frame << "\n";
         tabs[current]->report(out);
     }

@@ -24,7 +24,9 @@ namespace {
 
 constexpr double chain_length = 4.0;  // metres: every chain spans the same width whatever its count
 constexpr double gravity = 9.81;      // m/s²
-constexpr double grab_omega = 25.0;   // rad/s of the mouse spring (k = ω², c = 2ω per unit mass)
+// The mouse holds a particle like a hand as heavy as the whole chain: k = ω²·n, so the chain's
+// weight hardly stretches the spring; critically damped for the particle itself.
+constexpr double grab_omega = 25.0;   // rad/s
 constexpr double air_drag = 0.5;      // N·s/m per particle: tames the whip of the free end
 constexpr double release_angle = 0.5; // rad from the vertical: the chain starts straight, at rest
 
@@ -75,11 +77,11 @@ public:
         const double h = dt / substeps;
         for (int i = 0; i < substeps; ++i) {
             if (grabbed_ >= 0) {
-                // Mouse spring per unit mass, critically damped.
                 const ParticleId id{std::uint32_t(grabbed_)};
                 const Vec2 x = system_->position(id);
                 const Vec2 v = system_->velocity(id);
-                system_->exert_force(id, (mouse_ - x) * (grab_omega * grab_omega) - v * (2.0 * grab_omega));
+                const double n = double(system_->size());
+                system_->exert_force(id, (mouse_ - x) * (grab_omega * grab_omega * n) - v * (2.0 * grab_omega * std::sqrt(n)));
             }
             const StepReport r = system_->step(h);
             status_ = r.status;
@@ -138,6 +140,7 @@ public:
         // Grab the nearest particle within 15 px; hold it until the button is released.
         const ImGuiIO& io = ImGui::GetIO();
         mouse_ = canvas.mouse();
+        last_screen_ = canvas.to_screen(x.back());
         if (grabbed_ < 0 && canvas.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
             double best = 15.0 / canvas.scale();
             for (std::size_t i = 0; i < x.size(); ++i)
@@ -161,7 +164,8 @@ public:
         const auto x = system_->positions();
         out << "particles: " << x.size() << "\nconstraints: " << system_->constraint_count()
             << "\ntime: " << system_->time() << "\nlast: " << x.back().x << ' ' << x.back().y
-            << "\ngrabbed: " << grabbed_ << "\nlink_error: " << link_error_ << "\n";
+            << "\nlast_screen: " << last_screen_.x << ' ' << last_screen_.y << "\nmouse: " << mouse_.x << ' '
+            << mouse_.y << "\ngrabbed: " << grabbed_ << "\nlink_error: " << link_error_ << "\n";
     }
 
 private:
@@ -200,6 +204,7 @@ private:
     std::optional<ParticleSystem> system_;
     int grabbed_ = -1;
     Vec2 mouse_;
+    ImVec2 last_screen_;  // for reports
     SolveStatus status_ = SolveStatus::ok;
     double link_error_ = 0.0;
     double step_ms_ = 0.0;

@@ -117,7 +117,8 @@ public:
         const ParabolaState b = parametric_->state();
         out << "x0: " << x0_ << "\ntime: " << a.t << "\nimplicit: " << a.x.x << ' ' << a.x.y
             << "\nparametric: " << b.x.x << ' ' << b.x.y << "\nimplicit_distance: " << a.distance
-            << "\nparametric_distance: " << b.distance << "\n";
+            << "\nparametric_distance: " << b.distance << "\nimplicit_screen: " << screen_[0].x << ' '
+            << screen_[0].y << "\nparametric_screen: " << screen_[1].x << ' ' << screen_[1].y << "\n";
     }
 
 private:
@@ -166,6 +167,7 @@ private:
         canvas.polyline(curve, colour::path, 2.0f);
         canvas.polyline(trail, colour::faint, 1.5f);
         Vec2 p = run.state().x;
+        screen_[id] = canvas.to_screen(p);
         // Where the particle should be: the curve point below it, joined when it has drifted.
         const Vec2 on_curve{p.x, -p.x * p.x / 100.0};
         if (distance(on_curve, p) * canvas.scale() > 1.0) canvas.line(on_curve, p, colour::marker, 1.5f);
@@ -191,6 +193,7 @@ private:
     bool running_ = true;
     double x0_ = 100.0;
     int dragging_ = -1;
+    ImVec2 screen_[2];  // where the particles were drawn last frame, for reports
     double budget_ = 0.0;
     std::optional<ParabolaRun> implicit_;
     std::optional<ParabolaRun> parametric_;

@@ -196,6 +196,8 @@ public:
 
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
         Canvas canvas(dl, min, max, view_min_, view_max_);
+        screen_offset_ = canvas.offset();
+        screen_scale_ = canvas.scale();
         canvas.grid(grid_step(), colour::grid);
         Entry& e = entries_[current_];
         draw_path(canvas, min, max);
@@ -242,7 +244,9 @@ public:
         const Entry& e = entries_[current_];
         out << "path: " << e.name << "\ncurve: " << curve_text_ << "\narc_length: " << arc_length_ << "\n";
         for (std::size_t i = 0; i < e.controls.size(); ++i)
-            out << "control_" << i << ": " << e.controls[i].x << ' ' << e.controls[i].y << "\n";
+            out << "control_" << i << ": " << e.controls[i].x << ' ' << e.controls[i].y << "\ncontrol_" << i
+                << "_screen: " << screen_offset_.x + e.controls[i].x * screen_scale_ << ' '
+                << screen_offset_.y + e.controls[i].y * screen_scale_ << "\n";
         out << "midpoint: " << e.path.point(0.5).x << ' ' << e.path.point(0.5).y << "\n";
         out << "marker: " << anim_.value().x << ' ' << anim_.value().y << "\nprogress: " << anim_.progress() << "\n";
     }
@@ -468,6 +472,8 @@ private:
     Animation ghost_;
     Vec2 view_min_;
     Vec2 view_max_{1, 1};
+    Vec2 screen_offset_;  // the last frame's world → window mapping, for reports
+    double screen_scale_ = 1.0;
     bool picture_dirty_ = true;
 #ifdef GRAPE_STUDIO_RENDER
     SDL_Renderer* renderer_ = nullptr;
