@@ -282,7 +282,8 @@ struct DriftDef {
     std::optional<double> stiffness{};  ///< ks in 1/s², overrides omega_dt (kd then defaults to 2√ks)
     std::optional<double> damping{};    ///< kd in 1/s, overrides the default
     int projection_iterations = 8;       ///< Newton iterations at most per projection
-    double projection_tolerance = 0.0;   ///< stop when every |C|/|∇C| ≤ this (0: until round-off)
+    /// Stop when every |C|/|∇C| ≤ this, world units (0: at round-off, 8ε·(1 + max |x|)).
+    double projection_tolerance = 0.0;
 };
 
 /// The linear solver for J W Jᵀ λ = b.

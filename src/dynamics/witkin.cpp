@@ -218,8 +218,10 @@ SolveStatus SolverWorkspace::solve() {
             }
         } else {
             ldlt.compute(dense_matrix);
-            const Eigen::VectorXd d = ldlt.vectorD().cwiseAbs();
-            if (ldlt.info() == Eigen::Success && d.minCoeff() > singular_pivot_ratio * d.maxCoeff()) {
+            // Full expressions on vectorD(): no temporary vector, no allocation per solve.
+            const double d_min = ldlt.vectorD().cwiseAbs().minCoeff();
+            const double d_max = ldlt.vectorD().cwiseAbs().maxCoeff();
+            if (ldlt.info() == Eigen::Success && d_min > singular_pivot_ratio * d_max) {
                 lambda = ldlt.solve(rhs);
             } else {
                 // Redundant rows: the minimum-norm least-squares multipliers.
@@ -235,7 +237,7 @@ SolveStatus SolverWorkspace::solve() {
             sparse_ldlt.factorize(sparse_matrix);
             bool ok = sparse_ldlt.info() == Eigen::Success;
             if (ok) {
-                const Eigen::VectorXd d = sparse_ldlt.vectorD().cwiseAbs();
+                const Eigen::VectorXd d = sparse_ldlt.vectorD().cwiseAbs();  // returned by value
                 ok = d.minCoeff() > singular_pivot_ratio * d.maxCoeff();
             }
             if (ok) {
@@ -315,10 +317,15 @@ int SolverWorkspace::project(std::span<Vec2> x, std::span<Vec2> v) {
         return worst_d;
     };
     // Positions: Newton on C(x + W Jᵀ δ) = 0 (mass-weighted, so pinned particles stay put).
+    // Round-off floor of the distance |C|/|∇C| at the scene's coordinate scale: no Newton
+    // iteration can go below it, so reaching it ends the projection.
+    double scale = 1.0;
+    for (const Vec2& p : x) scale = std::max(scale, 1.0 + std::max(std::abs(p.x), std::abs(p.y)));
+    const double tolerance = std::max(drift.projection_tolerance, 8.0 * std::numeric_limits<double>::epsilon() * scale);
     int iterations = 0;
     evaluate_rows(x, v);
     double before = worst_distance();
-    while (iterations < drift.projection_iterations && before > drift.projection_tolerance) {
+    while (iterations < drift.projection_iterations && before > tolerance) {
         assemble();
         for (std::uint32_t r = 0; r < rows; ++r) rhs(r) = -c[r];
         solve();
