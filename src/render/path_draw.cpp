@@ -252,22 +252,30 @@ void draw_path(Canvas& canvas, const Path& path, const PathStyle& style) {
             device_line(canvas, tip, tip - dir * 7.0 - side, arrow);
         }
     }
-    if (style.cues) {
-        std::vector<double> cues;
-        collect_cues(path, 0.0, 1.0, cues);
-        for (double u : cues) {
-            canvas.dot(path.point(u), 4.0, style.cue_color);
-            canvas.text(path.point(u), " " + [&] {
-                char buffer[16];
-                std::snprintf(buffer, sizeof buffer, "%.3g", u);
-                return std::string(buffer);
-            }(), {.color = style.cue_color, .size = 10.0});
-        }
-    }
     if (style.ends) {
         canvas.dot(path.point(1.0), 3.5, style.stroke.color);
         canvas.dot(path.point(0.0), 3.5, style.stroke.color);
         canvas.dot(path.point(0.0), 2.0, colors::white);
+    }
+    if (style.cues) {
+        std::vector<double> cues;
+        collect_cues(path, 0.0, 1.0, cues);
+        // Cues that land on the same spot (nested parts often start together) share one label.
+        std::vector<bool> done(cues.size(), false);
+        for (std::size_t i = 0; i < cues.size(); ++i) {
+            if (done[i]) continue;
+            const Vec2 at = t.apply(path.point(cues[i]));
+            std::string label;
+            for (std::size_t k = i; k < cues.size(); ++k) {
+                if (done[k] || distance(t.apply(path.point(cues[k])), at) > 3.0) continue;
+                done[k] = true;
+                char buffer[24];
+                std::snprintf(buffer, sizeof buffer, "%s%.3g", label.empty() ? "" : ", ", cues[k]);
+                label += buffer;
+            }
+            canvas.dot(path.point(cues[i]), 4.0, style.cue_color);
+            canvas.text(path.point(cues[i]), "  " + label, {.color = style.cue_color, .size = 10.0});
+        }
     }
 }
 
@@ -322,8 +330,8 @@ void draw_plot(Canvas& canvas, const Rect& area, std::span<const PlotSeries> ser
             if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) points.push_back(map(s.x[i], s.y[i]));
         canvas.stroke_polyline(points, s.stroke);
         if (!s.label.empty()) {
-            canvas.stroke_line({right - 150.0, legend_y - 4.0}, {right - 130.0, legend_y - 4.0}, s.stroke);
-            canvas.text({right - 124.0, legend_y}, s.label, {.color = s.stroke.color, .size = 11.0});
+            canvas.stroke_line({right - 190.0, legend_y - 4.0}, {right - 170.0, legend_y - 4.0}, s.stroke);
+            canvas.text({right - 164.0, legend_y}, s.label, {.color = s.stroke.color, .size = 11.0});
             legend_y += 15.0;
         }
     }
