@@ -183,7 +183,7 @@ void lookup_baked(benchmark::State& state, const BakedTable& table, double error
     state.counters["points"] = static_cast<double>(table.size());
 }
 
-// Keeps each run's time (the median when repeated) for the ratio summary.
+// Keeps each run's CPU time (the median when repeated) for the ratio summary.
 class SummaryReporter : public benchmark::ConsoleReporter {
 public:
     void ReportRuns(const std::vector<Run>& runs) override {
@@ -192,7 +192,7 @@ public:
             if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") continue;
             std::string name = run.run_name.function_name;
             if (!run.run_name.args.empty()) name += "/" + run.run_name.args;
-            ns_[name] = run.GetAdjustedRealTime();
+            ns_[name] = run.GetAdjustedCPUTime();  // CPU time: steadier than wall time on a shared machine
             const auto e = run.counters.find("max_err_px");
             if (e != run.counters.end()) error_[name] = e->second.value;
         }
