@@ -325,6 +325,10 @@ void print_summary(const SummaryReporter& reporter) {
             }
         }
         // > 1 means grape is faster than the best peer.
+        if (grape == 0.0 || best_peer == 0.0) {  // filtered out
+            std::printf(" | -\n");
+            continue;
+        }
         const double speedup = row.bytes ? grape / best_peer : best_peer / grape;
         std::printf(" | %.2fx", speedup);
         if (row.bytes && memcpy_gbs > 0) std::printf("  (grape = %.2f x memcpy)", grape / memcpy_gbs);

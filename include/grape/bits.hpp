@@ -48,44 +48,52 @@ public:
 
         SetBitIterator() noexcept = default;
         /// Index of the current set bit.
-        std::size_t operator*() const noexcept {
-            return word_index_ * word_bits + static_cast<std::size_t>(std::countr_zero(current_));
-        }
+        std::size_t operator*() const noexcept { return base_ + static_cast<std::size_t>(std::countr_zero(current_)); }
+        /// Moves to the next set bit (or to the end).
         SetBitIterator& operator++() noexcept {
             current_ &= current_ - 1;  // drop the lowest set bit
-            while (current_ == 0 && ++word_index_ < word_count_) current_ = words_[word_index_];
+            if (current_ == 0) next_word();
             return *this;
         }
+        /// Moves to the next set bit, returning the old position.
         SetBitIterator operator++(int) noexcept {
             SetBitIterator old = *this;
             ++*this;
             return old;
         }
+        /// Same position.
         friend bool operator==(const SetBitIterator& a, const SetBitIterator& b) noexcept {
-            return a.word_index_ == b.word_index_ && a.current_ == b.current_;
+            return a.word_ == b.word_ && a.current_ == b.current_;
         }
+        /// Past the last set bit.
         friend bool operator==(const SetBitIterator& it, std::default_sentinel_t) noexcept {
-            return it.word_index_ >= it.word_count_;
+            return it.word_ == it.end_;
         }
 
     private:
         friend class BitVector;
-        SetBitIterator(const Word* words, std::size_t word_count, std::size_t first) noexcept
-            : words_(words), word_index_(first), word_count_(word_count) {
-            current_ = word_index_ < word_count_ ? words_[word_index_] : 0;
-            while (current_ == 0 && ++word_index_ < word_count_) current_ = words_[word_index_];
-            if (word_index_ >= word_count_) word_index_ = word_count_;
+        SetBitIterator(const Word* begin, const Word* end) noexcept : word_(begin), end_(end) {
+            if (word_ != end_) {
+                current_ = *word_;
+                if (current_ == 0) next_word();
+            }
         }
-        const Word* words_ = nullptr;
-        std::size_t word_index_ = 0;
-        std::size_t word_count_ = 0;
-        Word current_ = 0;
+        void next_word() noexcept {
+            while (++word_ != end_) {
+                base_ += word_bits;
+                if ((current_ = *word_) != 0) return;
+            }
+        }
+        const Word* word_ = nullptr;  // the word holding the current bit; end_ when done
+        const Word* end_ = nullptr;
+        Word current_ = 0;            // the bits of *word_ not yet visited
+        std::size_t base_ = 0;        // index of bit 0 of *word_
     };
 
     /// The set bits as a range: `for (std::size_t i : bits.set_bits())`.
     class SetBits {
     public:
-        SetBitIterator begin() const noexcept { return {words_, word_count_, 0}; }
+        SetBitIterator begin() const noexcept { return {words_, words_ + word_count_}; }
         std::default_sentinel_t end() const noexcept { return {}; }
 
     private:
