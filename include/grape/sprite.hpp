@@ -8,8 +8,10 @@
 //
 // SpritePlayer uses the seed's remainder algorithm: each step takes the integer part of the
 // rate and accumulates the fraction in a remainder in (−1, 1) that carries ±1 frame when it
-// reaches ±1, so no multiplication or modulo is needed and the frame after n steps equals
-// start + trunc(rate·n) (mirror-symmetric for negative rates), wrapped.
+// reaches ±1, so no multiplication or modulo is needed and the frame after n steps is
+// start + trunc(rate·n), wrapped: reverse play is the mirror image of forward play. It is
+// exact for rates whose fractions add exactly in binary (0.5, 0.25, 1.375, …); a rate such as
+// 0.1 is already rounded when stored, so at exact multiples the frame may trail by one.
 #pragma once
 
 #include <cstddef>
@@ -34,7 +36,7 @@ public:
 /// What happens at the ends of the frame range.
 enum class PlayMode : std::uint8_t {
     loop,       ///< wrap around at both ends (the seed's behaviour)
-    once,       ///< stop at the last frame (first, when the rate is negative) and report completion
+    once,       ///< stop at the last frame (first, when the rate is negative; start there) and report completion
     ping_pong,  ///< bounce between the ends: 0 1 2 3 2 1 0 1 …
 };
 
