@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <iterator>
+#include <ranges>
 #include <random>
 #include <sstream>
 #include <string>
@@ -209,6 +211,24 @@ TEST(BitVector, ResizeGivesNewBitsTheValueAndDropsCutBits) {
     w.reserve(10'000);
     EXPECT_GE(w.memory_bytes(), 10'000u / 8);
     EXPECT_EQ(w.size(), 200u);
+}
+
+TEST(BitVector, SetBitsIsAForwardRange) {
+    static_assert(std::forward_iterator<BitVector::SetBitIterator>);
+    static_assert(std::ranges::forward_range<BitVector::SetBits>);
+    const BitVector v = BitVector::from_string("0110000000000000000000000000000000000000000000000000000000000000000000001");
+    const auto bits = v.set_bits();
+    EXPECT_EQ(std::ranges::distance(bits), 3);
+    auto it = bits.begin();
+    const auto first = it++;  // post-increment returns the old position
+    EXPECT_EQ(*first, 1u);
+    EXPECT_EQ(*it, 2u);
+    EXPECT_TRUE(first != it);
+    EXPECT_TRUE(bits.begin() == first);
+    EXPECT_EQ(*std::ranges::next(bits.begin(), 2), 72u);
+    EXPECT_TRUE(std::ranges::next(bits.begin(), 3) == bits.end());
+    EXPECT_TRUE(BitVector(500).set_bits().begin() == std::default_sentinel);  // all zero words
+    EXPECT_TRUE(BitVector().set_bits().begin() == std::default_sentinel);     // no words at all
 }
 
 TEST(BitVector, FindNextFromAnyIndex) {
