@@ -136,14 +136,19 @@ protected:
 
 /// The arc-length reparametrization of any node: u ↦ source parameter v with
 /// s(v) = u·L to 1e-9·L. The table holds, per span of v, the quintic Hermite model of s(v)
-/// (from s, |x′| and (x′·x″)/|x′|, checked against quadrature at construction); lookup is a
-/// bucket index in s, then a few safeguarded Newton steps on the span's polynomial.
+/// (from s, |x′| and (x′·x″)/|x′|, checked against quadrature at construction) and the
+/// quintic Hermite model of its inverse, checked against the forward model. Lookup is a
+/// bucket index in s and one polynomial; spans where the source stops (|x′| = 0 at an end,
+/// where the inverse has a square-root shape) solve the forward model by safeguarded Newton.
 class ReparametrizedNode final : public PathNode {
 public:
-    /// One span of the table: v = v0 + dv·t and s(t) = s0 + t·(k1 + t·(k2 + t·(k3 + t·(k4 + t·k5)))).
+    /// One span of the table. With σ = (s − s0)·inv_ds in [0, 1]: t = σ·(j1 + σ·(j2 + ...)),
+    /// v = v0 + dv·t; the forward model is s(t) = s0 + t·(k1 + t·(k2 + t·(k3 + t·(k4 + t·k5)))).
     struct Span {
-        double v0, dv, s0, ds;  // ds = s(1) − s(0)
-        double k1, k2, k3, k4, k5;
+        double s0, inv_ds, v0, dv;
+        double j1, j2, j3, j4, j5;
+        double ds, k1, k2, k3, k4, k5;
+        bool newton;  ///< the inverse model is not accurate here: solve the forward one
     };
 
     explicit ReparametrizedNode(Path source);
@@ -156,7 +161,11 @@ public:
         if (b >= buckets_.size()) b = buckets_.size() - 1;
         std::size_t i = buckets_[b];
         while (i + 1 < spans_.size() && spans_[i + 1].s0 <= s) ++i;
-        return solve_span(spans_[i], s);
+        const Span& sp = spans_[i];
+        if (sp.newton) return solve_span(sp, s);
+        const double g = std::clamp((s - sp.s0) * sp.inv_ds, 0.0, 1.0);
+        const double t = g * (sp.j1 + g * (sp.j2 + g * (sp.j3 + g * (sp.j4 + g * sp.j5))));
+        return sp.v0 + sp.dv * t;
     }
     Vec2 point(double u) const noexcept override { return source_node_->point(source_u(u)); }
     Vec2 d1(double u) const noexcept override;
@@ -197,6 +206,9 @@ private:
 
     void build();
     double build_span_checked(double va, double vb, double sa, int depth, double total);
+    // Fits the span's inverse model; false when it misses although the path moves at both
+    // ends (splitting the span will help), true when done (inverse or Newton).
+    static bool fit_inverse(Span& sp, double total) noexcept;
 
     Path source_;
     const PathNode* source_node_;
