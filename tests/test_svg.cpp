@@ -324,6 +324,29 @@ TEST(Svg, ZeroLengthSegmentsAreSkipped) {
     EXPECT_EQ(path.length(), 20.0);
     // A Bézier that returns to its start still has length: it is kept.
     EXPECT_EQ(parse_svg_path("M0 0 C 0 10 10 10 0 0").parts().size(), 1u);
+    // A segment shorter than 2⁻⁵² of the whole would get a cue span no u can land in (here a
+    // denormal one, whose inverse overflows): it is left out as well.
+    const ComplexPath sliver = parse_svg_path("M0 0 L1e-300 0 L1e10 0");
+    ASSERT_EQ(sliver.parts().size(), 1u);
+    EXPECT_EQ(sliver.parts()[0].point(0.0), (Vec2{1e-300, 0.0}));
+}
+
+TEST(Svg, ExtremeMagnitudesGiveNoNaN) {
+    // Data the fuzzer produced (tiny segments beside ones 1e200 times longer) and its kin: the
+    // path's points stay finite and its derivatives are never NaN (they may be huge).
+    for (const char* data : {"m10,10 h80 v10 h0 -.5e220 h80 v10 h80 v80 h-80 z",
+                             "m10,10 h 0,-10 Z M0 100\tM 1e2,1e262.55 162.45 L 172.55 152.45 A 30 50 -45 0 1 215.1 1",
+                             "M0 0 L1e-300 0 L1e10 0", "M0 0 C1e-320 0 0 1e-320 1e-320 1e-320",
+                             "M-1e307 0 A 1e-300 1e300 45 1 1 1e307 1 L0 0"}) {
+        SCOPED_TRACE(data);
+        const ComplexPath path = parse_svg_path(data);
+        for (int k = 0; k <= 64; ++k) {
+            const double u = k / 64.0;
+            EXPECT_TRUE(grape::is_finite(path.point(u)));
+            EXPECT_FALSE(std::isnan(path.d1(u).x) || std::isnan(path.d1(u).y));
+            EXPECT_FALSE(std::isnan(path.d2(u).x) || std::isnan(path.d2(u).y));
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------

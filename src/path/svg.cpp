@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 namespace grape::detail {
@@ -478,17 +479,28 @@ ComplexPath parse_svg_path(std::string_view data) {
     if (segments.empty()) {
         throw Error("SVG path data: draws nothing (no segment of non-zero length)");
     }
-    std::vector<Path> parts;
-    parts.reserve(segments.size());
+    std::vector<Path> drawn;
+    drawn.reserve(segments.size());
     double total = 0.0;
     for (const detail::SvgSegment& s : segments) {
-        parts.push_back(to_path(s));
-        total += parts.back().length();
+        drawn.push_back(to_path(s));
+        total += drawn.back().length();
         // Cues are length ratios: an infinite length would make them NaN.
         if (!std::isfinite(total)) {
             throw Error("SVG path data: the path's length overflows a double (segment at offset " +
                         std::to_string(s.offset) + ")");
         }
+    }
+    // A segment shorter than the rounding error of the whole length (2⁻⁵²·L) would get a cue
+    // span no u can land in, and 1/span can overflow; leaving it out moves nothing by more
+    // than that rounding error.
+    std::vector<Path> parts;
+    parts.reserve(drawn.size());
+    for (Path& part : drawn) {
+        if (part.length() > std::numeric_limits<double>::epsilon() * total) parts.push_back(std::move(part));
+    }
+    if (parts.empty()) {  // every segment's length underflowed to zero
+        throw Error("SVG path data: draws nothing (no segment of non-zero length)");
     }
     return ComplexPath::by_length(std::move(parts));
 }
