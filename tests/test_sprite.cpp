@@ -459,6 +459,14 @@ TEST(TileSheet, GridErrorsNameTheField) {
                  {"frame_count 5", "columns*rows (4)"});
 }
 
+#ifndef NDEBUG
+TEST(TileSheetDeathTest, DebugBuildsAssertFrameIndices) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    const TileSheet sheet({.width = 8, .height = 8, .columns = 2, .rows = 2});
+    EXPECT_DEATH((void)sheet.frame(4), "frame index out of range");
+}
+#endif
+
 TEST(TileSheet, RectangleList) {
     const TileSheet atlas(64, 32, {{0, 0, 16, 16}, {16, 0, 48, 32}, {0, 16, 8, 8}});
     EXPECT_EQ(atlas.frame_count(), 3u);
