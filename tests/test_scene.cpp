@@ -516,6 +516,39 @@ TEST(SceneFiles, CatalogueScenesLoadAndMatch) {
     expect_same_path(path_in("seed_bezier.json", "bezier_reparametrized"), sc::seed_bezier(true), "bezier by length");
 }
 
+std::string read_text(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The documentation's complete example is a valid scene, and the schema names every path
+// kind the loader reads (and nothing it would refuse as unknown).
+TEST(SceneFiles, DocumentationExampleAndSchemaAgreeWithTheLoader) {
+    const auto root = std::filesystem::path(__FILE__).parent_path().parent_path();
+    const std::string doc = read_text(root / "docs" / "scene-format.md");
+    const auto begin = doc.find("```json\n");
+    ASSERT_NE(begin, std::string::npos);
+    const auto end = doc.find("```", begin + 8);
+    const Scene example = grape::load_scene(doc.substr(begin + 8, end - begin - 8));
+    EXPECT_EQ(example.paths.size(), 5u);
+    EXPECT_EQ(example.animations.size(), 3u);
+    EXPECT_EQ(example.simulations.size(), 1u);
+    const std::string schema = read_text(root / "docs" / "scene.schema.json");
+    for (const char* kind : {"linear", "circle", "elliptical_arc", "spiral", "sine_wave", "quadratic_bezier", "cubic_bezier",
+                             "linear_spline", "cosine_spline", "hermite_spline", "catmull_rom_spline", "physics", "svg", "complex"}) {
+        EXPECT_NE(schema.find(std::string("\"const\": \"") + kind + "\""), std::string::npos) << kind;
+        // The loader knows the kind: with no other fields it complains about a field, not the kind.
+        try {
+            (void)grape::path_from_json(std::string(R"({"kind": ")") + kind + "\"}");
+            ADD_FAILURE() << kind;
+        } catch (const grape::Error& e) {
+            EXPECT_EQ(std::string(e.what()).find("unknown path kind"), std::string::npos) << e.what();
+        }
+    }
+}
+
 #ifdef GRAPE_SCENE_DYNAMICS
 // The seed's parabola as a scene runs exactly like the catalogue's implicit parabola run.
 TEST(SceneSimulation, ParabolaMatchesTheCatalogue) {
