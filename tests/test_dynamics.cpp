@@ -763,6 +763,7 @@ TEST(BeadOnPath, ComplexPathJoinsKeepTheSpeedAlongThePath) {
     EXPECT_NEAR(bead.position().x, 100, 1e-9);
     EXPECT_NEAR(bead.position().y, 50, 1e-9);
     EXPECT_NEAR(bead.u(), 0.5 + 0.5 * 50.0 / 300.0, 1e-12);
+    EXPECT_NEAR(bead.u_rate(), 0.5 * 50.0 / 300.0, 1e-15);  // the second half of u spans 300 px
     EXPECT_EQ(bead.crossings(), 1);
     // And back: a negative speed crosses the join the other way.
     Bead back(track, {.u = 0.5 + 0.5 * 30.0 / 300.0, .speed = -60});

@@ -89,7 +89,7 @@ double Bead::u() const noexcept {
 
 double Bead::u_rate() const noexcept {
     const Part& p = parts_[part_];
-    return bounded_ ? local_rate_ / (p.u1 - p.u0) : local_rate_;
+    return bounded_ ? local_rate_ * (p.u1 - p.u0) : local_rate_;
 }
 
 Vec2 Bead::position() const noexcept { return frame(local_u_).point; }
