@@ -45,14 +45,16 @@ constexpr std::array<Integrator, 6> integrators{Integrator::euler,    Integrator
                                                 Integrator::velocity_verlet, Integrator::rk45};
 
 // A strip of cloth: columns × rows unit masses, `spacing` apart, the top row pinned, held by
-// distance constraints along rows and columns.
+// distance constraints along rows and columns, released sheared to one side.
 ParticleSystem cloth_strip(int columns, int rows, double spacing, const ParticleSystemDef& def) {
     ParticleSystem system(def);
     std::vector<ParticleId> ids;
     const double x0 = -0.5 * spacing * (columns - 1);
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < columns; ++c)
-            ids.push_back(system.add_particle({.position = {x0 + c * spacing, r * spacing},
+            // Sheared by the release angle (every link keeps its length), so it starts swinging.
+            ids.push_back(system.add_particle({.position = {x0 + (c + r * std::sin(release_angle)) * spacing,
+                                                            r * std::cos(release_angle) * spacing},
                                                .mass = r == 0 ? std::numeric_limits<double>::infinity() : 1.0}));
     auto at = [&](int c, int r) { return ids[std::size_t(r * columns + c)]; };
     for (int r = 0; r < rows; ++r)
