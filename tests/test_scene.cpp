@@ -1,6 +1,7 @@
 // scene: JSON load/save. Loaded objects are checked against the numbers in the file,
 // save → load is checked to give bit-identical paths, and every kind of bad input is checked
 // to name its JSON pointer and the reason.
+#include <grape/anim.hpp>
 #include <grape/error.hpp>
 #include <grape/scene.hpp>
 
@@ -547,6 +548,54 @@ TEST(SceneFiles, DocumentationExampleAndSchemaAgreeWithTheLoader) {
             EXPECT_EQ(std::string(e.what()).find("unknown path kind"), std::string::npos) << e.what();
         }
     }
+}
+
+// SceneAnimation's closed-form timing agrees with the anim engine playing the same
+// animation (random timings, curves, repeat, yoyo and reverse; fixed seed).
+void expect_agreement_with_engine(const std::vector<std::string>& curves) {
+    std::mt19937_64 rng(6);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int round = 0; round < 40; ++round) {
+        grape::SceneAnimation a;
+        a.path = grape::CubicBezierPath({20, 20}, {400, 200}, {400, 600}, {600, 600});
+        a.curve = grape::parse_curve(curves[rng() % curves.size()]);
+        a.duration = 0.3 + 2.0 * unit(rng);
+        a.delay = unit(rng);
+        a.repeat = static_cast<int>(rng() % 4) - 1;
+        a.yoyo = rng() % 2 == 0;
+        a.reversed = rng() % 2 == 0;
+        grape::Engine engine;
+        Vec2 last{};
+        engine.create_animation(a.path, a.duration,
+                                {.curve = a.curve, .delay = a.delay, .repeat = a.repeat, .reversed = a.reversed, .yoyo = a.yoyo},
+                                [&](Vec2 p, double) { last = p; });
+        const double dt = 1.0 / 64.0;  // exact in binary: engine time is k/64 with no drift
+        for (int k = 1; k <= 64 * 8; ++k) {
+            engine.tick(dt);
+            if (k * dt <= a.delay) continue;  // nothing written while waiting
+            const Vec2 expected = a.position(k * dt);
+            // Both evaluate the same curve and path at a play fraction computed in different
+            // orders: a few ulps of τ, times |path′| ≤ ~1200 and the curve slope (≤ ~10 for
+            // elastic and back), stays under 1e-9.
+            ASSERT_NEAR(last.x, expected.x, 1e-9) << "round " << round << " t = " << k * dt << " curve " << to_string(a.curve);
+            ASSERT_NEAR(last.y, expected.y, 1e-9) << "round " << round << " t = " << k * dt << " curve " << to_string(a.curve);
+        }
+    }
+}
+
+TEST(SceneAnimation, AgreesWithTheEngine) {
+    expect_agreement_with_engine({"linear", "quad-in", "quad-out", "quad-in-out", "cubic-in", "cubic-out", "cubic-in-out",
+                                  "sine-in-out", "back-out(2.5)", "elastic-in(1.2,0.4)", "cubic-bezier(0.25,0.1,0.25,1)",
+                                  "steps(4,jump-end)"});
+}
+
+// Disabled: the anim engine (src/anim/engine.cpp, EngineImpl::ease) plays the parameter-free
+// Penner curves it does not inline (quart, quint, sine-in/out, expo, circ, bounce) through
+// curves_[0] instead of their own formula, so a bounce-in-out animation moves linearly.
+// Enable once the engine evaluates every curve kind.
+TEST(SceneAnimation, DISABLED_AgreesWithTheEngineForEveryNamedCurve) {
+    const auto names = grape::curve_names();
+    expect_agreement_with_engine({names.begin(), names.end()});
 }
 
 #ifdef GRAPE_SCENE_DYNAMICS
