@@ -193,7 +193,7 @@ int run(const Options& options) {
         ImGui::SetNextWindowSize(io.DisplaySize);
         ImGui::Begin("grape studio", nullptr,
                      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                         ImGuiWindowFlags_NoBringToFrontOnFocus);
+                         ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoBackground);
         if (ImGui::BeginTabBar("tabs")) {
             for (std::size_t i = 0; i < tabs.size(); ++i) {
                 const ImGuiTabItemFlags flags = (frame == 0 && i == current) ? ImGuiTabItemFlags_SetSelected : 0;
@@ -202,7 +202,9 @@ int run(const Options& options) {
                     Canvas::release_handle();
                     current = i;
                 }
+                ImGui::PushStyleColor(ImGuiCol_ChildBg, ImGui::GetStyleColorVec4(ImGuiCol_WindowBg));
                 ImGui::BeginChild("controls", {panel_width, 0.0f}, true);
+                ImGui::PopStyleColor();
                 ImGui::PushItemWidth(-140.0f);
                 tabs[i]->controls();
                 ImGui::PopItemWidth();
@@ -218,7 +220,6 @@ int run(const Options& options) {
                 ImGui::InvisibleButton("area", {max.x - min.x, max.y - min.y});
                 ImDrawList* draw_list = ImGui::GetWindowDrawList();
                 draw_list->PushClipRect(min, max, true);
-                draw_list->AddRectFilled(min, max, colour::background);
                 tabs[i]->draw(draw_list, min, max);
                 draw_list->PopClipRect();
                 ImGui::EndChild();
@@ -230,6 +231,9 @@ int run(const Options& options) {
 
         ImGui::Render();
         const auto t_raster = clock::now();
+        // The clear is the only full-window fill: with the software renderer every ImGui
+        // rectangle is a textured, blended triangle pair, so the window and the canvas draw
+        // no background of their own (about a third of the frame time at 1200 × 760).
         SDL_SetRenderDrawColor(sdl.renderer, 250, 248, 244, 255);
         SDL_RenderClear(sdl.renderer);
         ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
