@@ -620,4 +620,30 @@ TEST(DebugDraw, ParticlesAreDiscsAtTheirPositions) {
     EXPECT_EQ(image.pixel(45, 40), grape::colors::white);
 }
 
+// The animated SVG is well-formed XML with one circle per mover, whose discrete cx/cy values
+// are the mover's positions mapped by the transform, frame by frame.
+TEST(AnimatedSvg, MoversStepThroughTheirMappedPositions) {
+    const grape::LinearPath line({0, 0}, {10, 5});
+    const grape::Path paths[] = {line, grape::CirclePath({5, 5}, 3, 0, 2 * grape::pi)};
+    const Color path_colors[] = {grape::colors::red};
+    grape::SvgMover mover{.color = grape::colors::green, .label = "a <b> & \"c\""};
+    for (int k = 0; k < 5; ++k) mover.positions.push_back(line.point(k / 4.0));
+    grape::SvgMover stuck{.positions = {Vec2{std::nan(""), 1.0}}};
+    const grape::SvgMover movers[] = {mover, stuck};
+    const grape::Affine t = grape::Affine::translation({20, 10}) * grape::Affine::scaling(10, 10);
+    const std::string svg = grape::animated_svg(200, 100, t, paths, path_colors, movers, 2.5, "title & more");
+    std::string why;
+    ASSERT_TRUE(well_formed_xml(svg, why)) << why;
+    EXPECT_NE(svg.find("dur=\"2.5s\""), std::string::npos);
+    EXPECT_NE(svg.find("values=\"20.00;45.00;70.00;95.00;120.00\""), std::string::npos) << svg;  // x = 20 + 10·(0 … 10)
+    EXPECT_NE(svg.find("values=\"10.00;22.50;35.00;47.50;60.00\""), std::string::npos) << svg;  // y = 10 + 10·(0 … 5)
+    EXPECT_EQ(svg.find("nan"), std::string::npos);  // a non-finite position is never written
+    std::size_t circles = 0;
+    for (auto at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+    EXPECT_EQ(circles, 2u);
+    std::size_t drawn = 0;
+    for (auto at = svg.find("<path"); at != std::string::npos; at = svg.find("<path", at + 1)) ++drawn;
+    EXPECT_EQ(drawn, 2u);
+}
+
 }  // namespace

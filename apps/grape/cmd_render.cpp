@@ -193,86 +193,32 @@ std::string lower_extension(const std::filesystem::path& p) {
     return e;
 }
 
-std::string xml_escape(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
-
-std::string svg_number(double v) { return format("%.2f", v); }
-
-// An animated SVG: the paths drawn once, each animation and particle a circle whose centre
-// steps through its positions at the frame times (SMIL <animate>, looping).
-std::string animated_svg(const Scene& scene, const Bounds& world, double t0, int frames, double fps) {
-    const double w = scene.view.width, h = scene.view.height;
-    const Affine t = fit(world, {0, 0, w, h}, 30);
-    const double seconds = frames / fps;
-    std::ostringstream svg;
-    svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(w) << "\" height=\"" << svg_number(h)
-        << "\" viewBox=\"0 0 " << svg_number(w) << ' ' << svg_number(h) << "\">\n"
-        << "<title>" << xml_escape(scene.name) << "</title>\n"
-        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    const auto polyline = [&](const Path& path, Color c) {
-        svg << "<path fill=\"none\" stroke-width=\"1.5\" stroke=\"rgb(" << int(c.r * 255) << ',' << int(c.g * 255) << ','
-            << int(c.b * 255) << ")\" d=\"";
-        const auto points = path.flatten(0.25 / t.max_stretch());
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const Vec2 p = t.apply(points[i]);
-            svg << (i == 0 ? "M" : " L") << svg_number(p.x) << ' ' << svg_number(p.y);
-        }
-        svg << "\"/>\n";
-    };
-    std::size_t colour = 0;
-    for (const NamedPath& p : scene.paths) polyline(p.path, palette_color(colour++));
+// The animated SVG of a scene: its paths once, and every animation and particle as a marker
+// stepping through its positions at the frame times.
+std::string scene_animated_svg(const Scene& scene, const Bounds& world, double t0, int frames, double fps) {
+    const Affine t = fit(world, {0, 0, scene.view.width, scene.view.height}, 30);
+    std::vector<Path> paths;
+    for (const NamedPath& p : scene.paths) paths.push_back(p.path);
     for (const SceneAnimation& a : scene.animations)
-        if (a.path_name.empty()) polyline(a.path, palette_color(colour++));
-    const auto mover = [&](const std::vector<Vec2>& track, Color c, std::string_view label) {
-        std::string xs, ys;
-        for (std::size_t i = 0; i < track.size(); ++i) {
-            const Vec2 p = t.apply(track[i]);
-            xs += (i ? ";" : "") + svg_number(p.x);
-            ys += (i ? ";" : "") + svg_number(p.y);
-        }
-        const Vec2 first = t.apply(track.front());
-        svg << "<circle r=\"5\" stroke=\"black\" fill=\"rgb(" << int(c.r * 255) << ',' << int(c.g * 255) << ','
-            << int(c.b * 255) << ")\" cx=\"" << svg_number(first.x) << "\" cy=\"" << svg_number(first.y) << "\">";
-        if (!label.empty()) svg << "<title>" << xml_escape(label) << "</title>";
-        for (const char* attribute : {"cx", "cy"}) {
-            svg << "<animate attributeName=\"" << attribute << "\" dur=\"" << format("%.6g", seconds)
-                << "s\" repeatCount=\"indefinite\" calcMode=\"discrete\" values=\""
-                << (attribute[1] == 'x' ? xs : ys) << "\"/>";
-        }
-        svg << "</circle>\n";
-    };
+        if (a.path_name.empty()) paths.push_back(a.path);
+    std::vector<SvgMover> movers;
     for (std::size_t i = 0; i < scene.animations.size(); ++i) {
-        std::vector<Vec2> track;
-        for (int f = 0; f < frames; ++f) track.push_back(scene.animations[i].position(t0 + f / fps));
-        mover(track, palette_color(i + 1), scene.animations[i].name);
+        SvgMover m{.color = palette_color(i + 1), .label = scene.animations[i].name};
+        for (int f = 0; f < frames; ++f) m.positions.push_back(scene.animations[i].position(t0 + f / fps));
+        movers.push_back(std::move(m));
     }
     SimulationRunner sims(scene);
-    std::vector<std::vector<std::vector<Vec2>>> tracks(scene.simulations.size());  // [simulation][particle][frame]
+    const std::size_t first_particle = movers.size();
     for (std::size_t i = 0; i < scene.simulations.size(); ++i)
-        tracks[i].resize(scene.simulations[i].particles.size());
+        for (std::size_t k = 0; k < scene.simulations[i].particles.size(); ++k)
+            movers.push_back({.color = palette_color(i), .label = scene.simulations[i].name});
     for (int f = 0; f < frames; ++f) {
         sims.advance_to(t0 + f / fps);
-        for (std::size_t i = 0; i < scene.simulations.size(); ++i) {
-            const auto p = sims.positions(i);
-            for (std::size_t k = 0; k < p.size(); ++k) tracks[i][k].push_back(p[k]);
-        }
+        std::size_t m = first_particle;
+        for (std::size_t i = 0; i < scene.simulations.size(); ++i)
+            for (Vec2 p : sims.positions(i)) movers[m++].positions.push_back(p);
     }
-    for (std::size_t i = 0; i < tracks.size(); ++i)
-        for (const auto& track : tracks[i]) mover(track, palette_color(i), scene.simulations[i].name);
-    svg << "</svg>\n";
-    return svg.str();
+    return animated_svg(scene.view.width, scene.view.height, t, paths, palette, movers, frames / fps, scene.name);
 }
 
 void write_text_file(const std::filesystem::path& file, const std::string& text) {
@@ -318,7 +264,7 @@ void run_render(const RenderOptions& o) {
     const Bounds world = scene_bounds(scene, t_end);
 
     if (o.frames > 0 && ext == ".svg") {
-        write_text_file(out, animated_svg(scene, world, o.time, frames, o.fps));
+        write_text_file(out, scene_animated_svg(scene, world, o.time, frames, o.fps));
         std::cout << "wrote " << out.string() << " (" << frames << " frames at " << o.fps << " fps, animated SVG)\n";
         return;
     }

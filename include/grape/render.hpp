@@ -277,6 +277,23 @@ void draw_sprite(Canvas& canvas, const Image& sheet_image, const TileSheetSprite
 void draw_tile_sheet(Canvas& canvas, const Image& sheet_image, const TileSheetSprite& sprite, Vec2 at,
                      double scale = 1.0);
 
+/// A marker that moves in an animated SVG: where it is at each frame.
+struct SvgMover {
+    std::vector<Vec2> positions = {};  ///< one per frame, world units
+    Color color = colors::blue;    ///< fill colour
+    std::string label = {};        ///< shown as the marker's tooltip ("" for none)
+    double radius = 5.0;           ///< output units
+};
+
+/// A looping SMIL-animated SVG document `width` × `height` (output units): the paths drawn
+/// once (flattened within a quarter of an output unit, colours cycling through
+/// `path_colors`), and each mover a circle stepping through its positions, all frames in
+/// `seconds`. `transform` maps world units to output units. Non-finite positions are drawn
+/// at the origin rather than written as NaN.
+std::string animated_svg(double width, double height, const Affine& transform, std::span<const Path> paths,
+                         std::span<const Color> path_colors, std::span<const SvgMover> movers, double seconds,
+                         std::string_view title = {});
+
 /// A line chart of y over x (one series), for diagnostics such as energy over time.
 struct PlotSeries {
     std::span<const double> x;          ///< abscissae (same size as y)
