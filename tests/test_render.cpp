@@ -646,4 +646,32 @@ TEST(AnimatedSvg, MoversStepThroughTheirMappedPositions) {
     EXPECT_EQ(drawn, 2u);
 }
 
+TEST(Canvas, ClipLimitsDrawingUntilPop) {
+    Canvas canvas(60, 60);
+    canvas.push();
+    canvas.clip({10, 20, 30, 15});
+    canvas.fill_rect({0, 0, 60, 60}, {});
+    canvas.pop();
+    canvas.fill_rect({50, 50, 10, 10}, {});  // after pop: unclipped again
+    const Image image = canvas.to_image();
+    for (int y = 0; y < 60; ++y)
+        for (int x = 0; x < 60; ++x) {
+            const bool inside = (x >= 10 && x < 40 && y >= 20 && y < 35) || (x >= 50 && y >= 50);
+            EXPECT_EQ(ink(image, x, y), inside ? 1.0 : 0.0) << x << "," << y;
+        }
+}
+
+TEST(DrawPath, TangentArrowsPointAlongTheDerivative) {
+    // A straight line from (20, 50) to (180, 50): two arrows (u = 0 and 1) of 30 units to the right.
+    Canvas canvas(240, 100);
+    grape::draw_path(canvas, grape::LinearPath({20, 50}, {180, 50}),
+                     {.stroke = {.color = grape::colors::white}, .tangents = 2, .tangent_length = 30,
+                      .tangent_color = grape::colors::black, .ends = false});
+    const Image image = canvas.to_image();
+    EXPECT_GT(ink(image, 35, 50), 0.5);   // along the first arrow
+    EXPECT_GT(ink(image, 205, 50), 0.5);  // along the second, past the end of the path
+    EXPECT_LT(ink(image, 15, 50), 0.1);   // nothing behind the start
+    EXPECT_LT(ink(image, 215, 50), 0.1);  // nor past the second tip (180 + 30 + 1.5 width)
+}
+
 }  // namespace

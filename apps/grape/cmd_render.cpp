@@ -344,9 +344,14 @@ void demo_pictures(const DemoContext& context) {
         canvas.set_transform(Affine::translation({50, 60}));
         const auto gallery = scenes::path_gallery();
         std::size_t i = 0;
+        std::vector<Vec2> labelled;  // paths that start together get their labels stacked
         for (const auto& [name, path] : gallery) {
-            draw_path(canvas, path, {.stroke = {.color = palette_color(i++), .width = 2}, .ticks = 0.05, .tick_length = 6});
-            canvas.text(path.point(0.0) + Vec2{0, -9}, name, label);
+            draw_path(canvas, path, {.stroke = {.color = palette_color(i), .width = 2}, .ticks = 0.05, .tick_length = 6});
+            const Vec2 start = path.point(0.0);
+            const auto same = std::count_if(labelled.begin(), labelled.end(), [&](Vec2 p) { return distance(p, start) < 1.0; });
+            labelled.push_back(start);
+            canvas.text(start + Vec2{0, -9.0 - 11.0 * static_cast<double>(same)}, name,
+                        {.color = palette_color(i++), .size = 10});
         }
         canvas.set_transform({});
         canvas.text({20, 28}, "Every path kind (ticks every 0.05 of u; hollow start, filled end)", title);
