@@ -175,6 +175,48 @@ TEST(Engine, TickingAnyDtSequenceEqualsSeek) {
     EXPECT_EQ(cases, 3 * 2 * 2 * 2 * 2 * 3);
 }
 
+TEST(Engine, SixtyFramesOfOneSixtiethFinishAOneSecondPlayExactlyOnce) {
+    // 60 × (1/60) sums to 1 − 1.1e-16 in doubles; the play must still end on that frame.
+    for (int steps : {1, 60, 1000, 10000}) {
+        Engine engine;
+        Point p;
+        int completes = 0;
+        engine.create_2d_animation(p, grape::LinearPath({0, 0}, {1, 0}), 1.0).on_complete([&] { ++completes; });
+        for (int i = 0; i < steps; ++i) engine.tick(1.0 / steps);
+        EXPECT_EQ(completes, 1) << steps;
+        EXPECT_EQ(p.x, 1.0) << steps;
+    }
+}
+
+TEST(Engine, ArcLengthBezierMatchesThePathWithinItsTolerance) {
+    // Cubic A of the reference set: length 200 exactly. The engine evaluates arc-length
+    // paths from its own table of the source parameter, checked at build time to 1e-10·L;
+    // between the checked points the Hermite error stays of the same size: 2e-10·L.
+    const grape::CubicBezierPath rep({0, 0}, {0, 100}, {100, 100}, {100, 0}, true);
+    const double tolerance = 2e-10 * 200.0;
+    Engine engine;
+    Point p;
+    engine.create_2d_animation(p, rep, 1.0, {.repeat = -1});
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 0.01);
+    double t = 0.0;
+    for (int i = 0; i < 2000; ++i) {
+        const double dt = unit(rng);
+        engine.tick(dt);
+        t += dt;
+        const double u = t - std::floor(t);
+        if (u < 1e-6 || u > 1 - 1e-6) continue;  // at a play boundary the two sides differ
+        const Vec2 truth = rep.point(u);
+        ASSERT_NEAR(p.x, truth.x, tolerance + 1e-12) << u;
+        ASSERT_NEAR(p.y, truth.y, tolerance + 1e-12) << u;
+    }
+    // A quarter of the length is at (10.589254, 48.352395) (closed-form reference).
+    Animation a = engine.create_animation(rep, 1.0);
+    a.seek(0.25);
+    EXPECT_NEAR(a.value().x, 10.589254, 1e-6);
+    EXPECT_NEAR(a.value().y, 48.352395, 1e-6);
+}
+
 TEST(Engine, ReversedPlaysTheSameStatesBackwards) {
     const auto bez = unit_bezier();
     const Curve curve = grape::parse_curve("cubic-in");

@@ -60,6 +60,62 @@ struct EngineImpl::Dispatch {
 
 // --- tables ----------------------------------------------------------------------------------
 
+namespace {
+
+inline double hermite_v(const double* table, double steps, double u) noexcept {
+    const double s = u * steps;
+    double k = std::floor(s);
+    if (k >= steps) k = steps - 1.0;
+    const double t = s - k;
+    const double* e = table + 2 * static_cast<std::size_t>(k);
+    const double t2 = t * t;
+    const double t3 = t2 * t;
+    return (2.0 * t3 - 3.0 * t2 + 1.0) * e[0] + (t3 - 2.0 * t2 + t) * e[1] + (3.0 * t2 - 2.0 * t3) * e[2] +
+           (t3 - t2) * e[3];
+}
+
+// Doubles K until the Hermite table of v(u) lands within 1e-10·length of the node's own
+// solve at three points inside every step; gives up (generic path) where the source stops
+// (dv/du unbounded) or K would pass 16384.
+bool build_reparam_table(const ReparametrizedNode& r, PathEntry& entry) {
+    const PathNode& source = *entry.source;
+    const double length = r.length();
+    if (!(length > 0.0)) return false;
+    for (int steps = 64; steps <= 16384; steps *= 2) {
+        const double k_steps = steps;
+        std::vector<double> table(2 * static_cast<std::size_t>(steps + 1));
+        bool finite = true;
+        for (int k = 0; k <= steps && finite; ++k) {
+            const double v = r.source_u(k / k_steps);
+            const double speed = grape::length(source.d1(v));
+            finite = speed > 1e-12 * length;
+            table[2 * k] = v;
+            table[2 * k + 1] = finite ? length / speed / k_steps : 0.0;
+        }
+        if (!finite) return false;
+        bool good = true;
+        for (int k = 0; k < steps && good; ++k) {
+            for (double t : {0.25, 0.5, 0.75}) {
+                const double u = (k + t) / k_steps;
+                const Vec2 exact = source.point(r.source_u(u));
+                const Vec2 fast = source.point(hermite_v(table.data(), k_steps, u));
+                if (distance(exact, fast) > 1e-10 * length) {
+                    good = false;
+                    break;
+                }
+            }
+        }
+        if (good) {
+            entry.table = std::move(table);
+            entry.steps = k_steps;
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
 std::uint32_t EngineImpl::acquire_path(const Path& path) {
     const PathNode* node = &path.node();
     if (auto it = path_index_.find(node); it != path_index_.end()) {
@@ -76,20 +132,39 @@ std::uint32_t EngineImpl::acquire_path(const Path& path) {
         case PathKind::reparametrized: {
             const auto* r = static_cast<const ReparametrizedNode*>(node);
             entry.source = &r->source().node();
-            if (entry.source->kind() == PathKind::cubic_bezier) entry.fast = FastPath::reparam_cubic;
-            if (entry.source->kind() == PathKind::linear) entry.fast = FastPath::reparam_linear;
+            const PathKind source_kind = entry.source->kind();
+            if ((source_kind == PathKind::cubic_bezier || source_kind == PathKind::linear) &&
+                build_reparam_table(*r, entry)) {
+                entry.fast = source_kind == PathKind::cubic_bezier ? FastPath::reparam_cubic : FastPath::reparam_linear;
+            }
             break;
         }
         default: break;
+    }
+    PathFast fast;
+    fast.fast = entry.fast;
+    fast.node = node;
+    fast.table = entry.table.data();  // the vector's buffer survives moving the entry
+    fast.steps = entry.steps;
+    const PathNode* shape = entry.source ? entry.source : node;
+    if (fast.fast == FastPath::linear || fast.fast == FastPath::reparam_linear) {
+        const auto* n = static_cast<const LinearNode*>(shape);
+        fast.c[0] = n->a;
+        fast.c[1] = n->delta;
+    } else if (fast.fast == FastPath::cubic || fast.fast == FastPath::reparam_cubic) {
+        const auto* n = static_cast<const CubicBezierNode*>(shape);
+        for (int k = 0; k < 4; ++k) fast.c[k] = n->c[k];
     }
     std::uint32_t index;
     if (!free_paths_.empty()) {
         index = free_paths_.back();
         free_paths_.pop_back();
         paths_[index] = std::move(entry);
+        path_fast_[index] = fast;
     } else {
         index = static_cast<std::uint32_t>(paths_.size());
         paths_.push_back(std::move(entry));
+        path_fast_.push_back(fast);
         free_paths_.reserve(paths_.size());  // so releasing during a tick never allocates
     }
     path_index_.emplace(node, index);
@@ -101,6 +176,7 @@ void EngineImpl::release_path(std::uint32_t index) noexcept {
     if (--e.refs != 0) return;
     path_index_.erase(e.node);
     e = PathEntry();                // drops the shape if nobody else holds it
+    path_fast_[index] = PathFast();
     free_paths_.push_back(index);   // capacity reserved at creation
 }
 
@@ -139,8 +215,8 @@ void EngineImpl::release_curve(std::uint16_t index) noexcept {
 
 // --- evaluation ------------------------------------------------------------------------------
 
-inline double EngineImpl::ease(const Hot& h, double x) const noexcept {
-    switch (h.kind) {
+inline double EngineImpl::ease(CurveKind kind, std::uint16_t curve, double x) const noexcept {
+    switch (kind) {
         case CurveKind::linear: return x;
         case CurveKind::quad_in: return ease::quad_in(x);
         case CurveKind::quad_out: return ease::quad_out(x);
@@ -149,54 +225,51 @@ inline double EngineImpl::ease(const Hot& h, double x) const noexcept {
         case CurveKind::cubic_out: return ease::cubic_out(x);
         case CurveKind::cubic_in_out: return ease::cubic_in_out(x);
         case CurveKind::sine_in_out: return ease::sine_in_out(x);
-        default: return curves_[h.curve].curve(x);
+        default: return curves_[curve].curve(x);
     }
 }
 
-inline Vec2 EngineImpl::point(const PathEntry& e, double u) const noexcept {
+// The same arithmetic as LinearNode::point and CubicBezierNode::point, on copied coefficients.
+inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
     if (u >= 0.0 && u <= 1.0) {
-        switch (e.fast) {
-            case FastPath::linear: {
-                const auto* n = static_cast<const LinearNode*>(e.node);
-                return n->a + n->delta * u;
-            }
-            case FastPath::cubic: return static_cast<const CubicBezierNode*>(e.node)->point(u);
+        const PathFast& f = path_fast_[path];
+        switch (f.fast) {
+            case FastPath::linear: return f.c[0] + f.c[1] * u;
+            case FastPath::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
             case FastPath::reparam_cubic: {
-                const double v = static_cast<const ReparametrizedNode*>(e.node)->source_u(u);
-                return static_cast<const CubicBezierNode*>(e.source)->point(v);
+                const double v = hermite_v(f.table, f.steps, u);
+                return ((f.c[3] * v + f.c[2]) * v + f.c[1]) * v + f.c[0];
             }
-            case FastPath::reparam_linear: {
-                const double v = static_cast<const ReparametrizedNode*>(e.node)->source_u(u);
-                const auto* n = static_cast<const LinearNode*>(e.source);
-                return n->a + n->delta * v;
-            }
-            case FastPath::generic: return e.node->point(u);
+            case FastPath::reparam_linear: return f.c[0] + f.c[1] * hermite_v(f.table, f.steps, u);
+            case FastPath::generic: return f.node->point(u);
         }
     }
-    return e.path.point(u);  // outside [0, 1]: along the end tangents
+    return paths_[path].path.point(u);  // outside [0, 1]: along the end tangents
 }
 
 inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept {
-    char* base = static_cast<char*>(h.target);
+    char* x = h.target;
     if (h.flags & flag_float) {
-        *reinterpret_cast<float*>(base + h.x_offset) = static_cast<float>(p.x);
-        *reinterpret_cast<float*>(base + h.y_offset) = static_cast<float>(p.y);
+        *reinterpret_cast<float*>(x) = static_cast<float>(p.x);
+        *reinterpret_cast<float*>(x + h.y_offset) = static_cast<float>(p.y);
     } else {
-        *reinterpret_cast<double*>(base + h.x_offset) = p.x;
-        *reinterpret_cast<double*>(base + h.y_offset) = p.y;
+        *reinterpret_cast<double*>(x) = p.x;
+        *reinterpret_cast<double*>(x + h.y_offset) = p.y;
     }
 }
 
-double EngineImpl::progress_of(const Hot& h) const noexcept {
+double EngineImpl::progress_of(std::uint32_t dense) const noexcept {
+    const Hot& h = hot_[dense];
     const double phase = std::clamp(h.phase, 0.0, 1.0);
-    return ease(h, (h.flags & flag_backward) ? 1.0 - phase : phase);
+    return ease(h.kind, cold_[dense].curve, (h.flags & flag_backward) ? 1.0 - phase : phase);
 }
 
-Vec2 EngineImpl::value_of(const Hot& h) const noexcept { return point(paths_[h.path], progress_of(h)); }
+Vec2 EngineImpl::value_of(std::uint32_t dense) const noexcept { return point(hot_[dense].path, progress_of(dense)); }
 
-double EngineImpl::heading_of(const Hot& h, std::uint32_t slot) const noexcept {
-    if (const Extra* e = extra(slot); e && e->track_heading) return e->heading;
-    const double angle = paths_[h.path].path.heading(progress_of(h));
+double EngineImpl::heading_of(std::uint32_t dense) const noexcept {
+    const Hot& h = hot_[dense];
+    if (const Extra* e = extra(cold_[dense].slot); e && e->track_heading) return e->heading;
+    const double angle = paths_[h.path].path.heading(progress_of(dense));
     return (h.flags & flag_backward) ? std::remainder(angle + pi, 2.0 * pi) : angle;
 }
 
@@ -204,15 +277,15 @@ double EngineImpl::heading_of(const Hot& h, std::uint32_t slot) const noexcept {
 void EngineImpl::write_state(std::uint32_t dense) {
     const Hot& h = hot_[dense];
     if (h.phase < 0.0) return;  // waiting: nothing is written until the first play starts
-    const double u = progress_of(h);
+    const double u = progress_of(dense);
     if (!(h.flags & flag_custom)) {
-        if (h.target) write_2d(h, point(paths_[h.path], u));
+        if (h.target) write_2d(h, point(h.path, u));
         return;
     }
     Extra& e = extras_.find(cold_[dense].slot)->second;  // node-based: stable while handlers run
     if (e.nd) {
         e.nd->point(u, e.values);
-        char* base = static_cast<char*>(h.target);
+        char* base = h.target;
         if (base) {
             for (std::size_t k = 0; k < e.members.size(); ++k) {
                 if (e.members[k].is_float) *reinterpret_cast<float*>(base + e.members[k].offset) = static_cast<float>(e.values[k]);
@@ -227,13 +300,13 @@ void EngineImpl::write_state(std::uint32_t dense) {
         return;
     }
     const Path& path = paths_[h.path].path;
-    const Vec2 p = point(paths_[h.path], u);
+    const Vec2 p = point(h.path, u);
     const double angle = path.heading(u);
     e.heading = (h.flags & flag_backward) ? std::remainder(angle + pi, 2.0 * pi) : angle;
     if (h.target) {
         write_2d(h, p);
-        if (e.rotation_offset >= 0) {
-            char* at = static_cast<char*>(h.target) + e.rotation_offset;
+        if (e.write_rotation) {
+            char* at = h.target + e.rotation_offset;
             if (h.flags & flag_float) *reinterpret_cast<float*>(at) = static_cast<float>(e.heading);
             else *reinterpret_cast<double*>(at) = e.heading;
         }
@@ -262,19 +335,45 @@ void EngineImpl::tick(double dt) {
 
     // Records created by handlers during this tick land past n and start on the next tick.
     const std::size_t n = hot_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        Hot& h = hot_[i];
-        if (h.flags & (flag_paused | flag_dead)) continue;
-        const double phase = h.phase + dt * h.rate;
-        if (phase < play_end && !(h.flags & flag_custom)) {
-            h.phase = phase;
-            if (phase >= 0.0 && h.target) {
-                const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;
-                write_2d(h, point(paths_[h.path], ease(h, x)));
+    std::size_t i = 0;
+    while (i < n) {
+        // The common case runs in a tight loop over local pointers. Anything else (paused,
+        // dead, custom writes, waiting, a play ending, nothing to write to) leaves the loop
+        // for the general path, after which the pointers are reloaded: handlers may have
+        // grown the storage.
+        Hot* const hot = hot_.data();
+        Cold* const cold = cold_.data();
+        const PathFast* const fast = path_fast_.data();
+        for (; i < n; ++i) {
+            Hot& h = hot[i];
+            double phase = h.phase + dt * h.rate;
+            if ((h.flags & (flag_paused | flag_dead | flag_custom | flag_listens)) || !(phase >= 0.0) || !h.target) break;
+            if (phase >= play_end) {
+                // A new play that nobody listens for, reached within this tick: handled here.
+                Cold& c = cold[i];
+                if (phase >= 2.0 - snap || (c.plays != 0 && c.play + 1 >= c.plays)) break;
+                ++c.play;
+                phase = std::max(phase - 1.0, 0.0);
+                if (h.flags & flag_yoyo) h.flags ^= flag_backward;
             }
-            continue;
+            h.phase = phase;
+            const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;
+            const double u = parameter_free(h.kind) ? ease(h.kind, 0, x) : ease(h.kind, cold[i].curve, x);
+            const PathFast& f = fast[h.path];
+            Vec2 p;
+            if (f.fast == FastPath::linear && u >= 0.0 && u <= 1.0) p = f.c[0] + f.c[1] * u;
+            else if (f.fast == FastPath::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+            else p = point(h.path, u);
+            write_2d(h, p);
         }
-        advance_slow(static_cast<std::uint32_t>(i), phase);
+        if (i == n) break;
+        Hot& h = hot_[i];
+        if (!(h.flags & (flag_paused | flag_dead))) {
+            const double phase = h.phase + dt * h.rate;
+            if (phase < 0.0) h.phase = phase;  // still waiting: nothing to write
+            else advance_slow(static_cast<std::uint32_t>(i), phase);
+        }
+        ++i;
     }
 
     if (!listeners_.empty()) {
@@ -289,25 +388,25 @@ void EngineImpl::tick(double dt) {
 // Loops, completion, waiting custom records and custom writes.
 void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
     Hot& h = hot_[dense];
-    const Cold& c = cold_[dense];
+    Cold& c = cold_[dense];
     std::uint32_t loops = 0;
     bool completes = false;
-    const std::uint32_t first_play = h.play;
+    const std::uint32_t first_play = c.play;
     if (phase >= play_end) {
         const double crossed = std::floor(phase + snap);
-        if (c.plays != 0 && static_cast<double>(h.play) + crossed >= static_cast<double>(c.plays)) {
-            loops = c.plays - 1 - h.play;
-            h.play = c.plays - 1;
+        if (c.plays != 0 && static_cast<double>(c.play) + crossed >= static_cast<double>(c.plays)) {
+            loops = c.plays - 1 - c.play;
+            c.play = c.plays - 1;
             phase = 1.0;
             completes = true;
         } else {
             // An endless animation may cross more than 2³² plays in one absurd dt; the count
             // saturates, the play index wraps (keeping its parity for yoyo).
             loops = crossed >= 4294967295.0 ? UINT32_MAX : static_cast<std::uint32_t>(crossed);
-            h.play += static_cast<std::uint32_t>(std::fmod(crossed, 4294967296.0));
+            c.play += static_cast<std::uint32_t>(std::fmod(crossed, 4294967296.0));
             phase = std::max(phase - crossed, 0.0);
         }
-        const bool odd = (h.play & 1u) != 0;
+        const bool odd = (c.play & 1u) != 0;
         const bool backward = ((h.flags & flag_reversed) != 0) != (((h.flags & flag_yoyo) != 0) && odd);
         h.flags = static_cast<std::uint8_t>(backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
     }
@@ -321,11 +420,11 @@ void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, std:
     const std::uint32_t generation = slots_[slot].generation;
     // The state every handler should find; a handler that seeks, kills or restarts this
     // animation changes it, and then the remaining events of this update are dropped.
-    const std::uint32_t play = hot_[dense].play;
+    const std::uint32_t play = cold_[dense].play;
     const double phase = hot_[dense].phase;
     auto unchanged = [&] {
         const Hot& h = hot_[dense];
-        return slots_[slot].generation == generation && h.play == play && h.phase == phase &&
+        return slots_[slot].generation == generation && cold_[dense].play == play && h.phase == phase &&
                !(h.flags & flag_dead);
     };
     if (hot_[dense].flags & flag_listens) {
@@ -350,7 +449,8 @@ void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, std:
 
 // --- creation --------------------------------------------------------------------------------
 
-Animation EngineImpl::add(Hot hot, double duration, int repeat, double delay, std::optional<Extra> extra) {
+Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay,
+                          std::optional<Extra> extra) {
     std::uint32_t slot;
     if (free_slot_ != UINT32_MAX) {
         slot = free_slot_;
@@ -363,10 +463,9 @@ Animation EngineImpl::add(Hot hot, double duration, int repeat, double delay, st
     }
     const auto dense = static_cast<std::uint32_t>(hot_.size());
     hot.phase = delay > 0.0 ? -delay / duration : 0.0;
-    hot.play = 0;
     if (hot.flags & flag_reversed) hot.flags |= flag_backward;
     hot_.push_back(hot);
-    cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot});
+    cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot, 0, curve});
     slots_[slot].dense = dense;
     if (extra) extras_.insert_or_assign(slot, std::move(*extra));
     ++live_;
@@ -382,14 +481,14 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
                              std::ptrdiff_t rotation_offset, const Path& path, double duration,
                              const AnimationDef& def, std::function<void(Vec2, double)> on_update) {
     validate(target ? "create_2d_animation" : "create_animation", duration, def);
-    if (x_offset > 0xFFFF || y_offset > 0xFFFF)
-        throw Error("create_2d_animation: target.x and target.y must lie in the first 64 KiB of the target (offsets " +
-                    std::to_string(x_offset) + ", " + std::to_string(y_offset) + ")");
+    const auto y_from_x = static_cast<std::ptrdiff_t>(y_offset) - static_cast<std::ptrdiff_t>(x_offset);
+    if (y_from_x < -32768 || y_from_x > 32767)
+        throw Error("create_2d_animation: target.x and target.y must lie within 32 KiB of each other (got " +
+                    std::to_string(y_from_x) + " bytes apart)");
     Hot h{};
     h.rate = def.time_scale / duration;
-    h.target = target;
-    h.x_offset = static_cast<std::uint16_t>(x_offset);
-    h.y_offset = static_cast<std::uint16_t>(y_offset);
+    h.target = target ? static_cast<char*>(target) + x_offset : nullptr;
+    h.y_offset = static_cast<std::int16_t>(y_from_x);
     h.kind = def.curve.kind();
     h.flags = static_cast<std::uint8_t>((is_float ? flag_float : 0) | (def.paused ? flag_paused : 0) |
                                         (def.yoyo ? flag_yoyo : 0) | (def.reversed ? flag_reversed : 0));
@@ -397,18 +496,20 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
     if (def.heading || on_update) {
         extra.emplace();
         extra->track_heading = def.heading;
-        extra->rotation_offset = rotation_offset;
+        extra->write_rotation = target && rotation_offset >= 0;
+        extra->rotation_offset = rotation_offset - static_cast<std::ptrdiff_t>(x_offset);
         if (on_update) extra->on_update_2d = std::make_shared<const std::function<void(Vec2, double)>>(std::move(on_update));
         h.flags |= flag_custom;
     }
     h.path = acquire_path(path);
+    std::uint16_t curve = 0;
     try {
-        h.curve = parameter_free(h.kind) ? 0 : acquire_curve(def.curve);
+        curve = parameter_free(h.kind) ? 0 : acquire_curve(def.curve);
     } catch (...) {
         release_path(h.path);
         throw;
     }
-    return add(h, duration, def.repeat, def.delay, std::move(extra));
+    return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
 }
 
 Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, PathND path, double duration,
@@ -420,7 +521,7 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
                     " members, " + std::to_string(path.dimension()) + " values)");
     Hot h{};
     h.rate = def.time_scale / duration;
-    h.target = target;
+    h.target = static_cast<char*>(target);
     h.kind = def.curve.kind();
     h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
                                         (def.reversed ? flag_reversed : 0));
@@ -432,13 +533,14 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     if (on_update)
         extra.on_update_nd = std::make_shared<const std::function<void(std::span<const double>)>>(std::move(on_update));
     h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
+    std::uint16_t curve = 0;
     try {
-        h.curve = parameter_free(h.kind) ? 0 : acquire_curve(def.curve);
+        curve = parameter_free(h.kind) ? 0 : acquire_curve(def.curve);
     } catch (...) {
         release_path(h.path);
         throw;
     }
-    return add(h, duration, def.repeat, def.delay, std::move(extra));
+    return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
 }
 
 // --- handles ---------------------------------------------------------------------------------
@@ -460,20 +562,20 @@ Extra& EngineImpl::extra_for(std::uint32_t slot) { return extras_[slot]; }
 void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
     if (std::isnan(seconds)) return;
     Hot& h = hot_[dense];
-    const Cold& c = cold_[dense];
+    Cold& c = cold_[dense];
     const double position = seconds / c.duration;
     if (c.plays != 0 && position >= static_cast<double>(c.plays) - snap) {
-        h.play = c.plays - 1;
+        c.play = c.plays - 1;
         h.phase = 1.0;
     } else if (position < 0.0) {
-        h.play = 0;
+        c.play = 0;
         h.phase = std::max(position, -1e300);
     } else {
         const double whole = std::floor(position + snap);  // as tick counts plays
-        h.play = static_cast<std::uint32_t>(std::fmod(whole, 4294967296.0));
+        c.play = static_cast<std::uint32_t>(std::fmod(whole, 4294967296.0));
         h.phase = std::max(position - whole, 0.0);
     }
-    const bool backward = ((h.flags & flag_reversed) != 0) != (((h.flags & flag_yoyo) != 0) && (h.play & 1u));
+    const bool backward = ((h.flags & flag_reversed) != 0) != (((h.flags & flag_yoyo) != 0) && (c.play & 1u));
     h.flags = static_cast<std::uint8_t>(backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
     try {
         Dispatch d(*this);
@@ -509,7 +611,7 @@ void EngineImpl::kill_all() noexcept {
 void EngineImpl::remove_now(std::uint32_t dense) noexcept {
     const std::uint32_t slot = cold_[dense].slot;
     release_path(hot_[dense].path);
-    release_curve(hot_[dense].curve);
+    release_curve(cold_[dense].curve);
     extras_.erase(slot);
     slots_[slot].dense = free_bit | (free_slot_ & ~free_bit);
     free_slot_ = slot;
@@ -640,7 +742,7 @@ bool Animation::paused() const noexcept {
 Vec2 Animation::value() const noexcept {
     GRAPE_FIND(Vec2{});
     if (const detail::Extra* e = impl.extra(slot_); e && e->nd) return {};
-    return impl.value_of(*found);
+    return impl.value_of(dense);
 }
 
 std::span<const double> Animation::values() const noexcept {
@@ -651,22 +753,22 @@ std::span<const double> Animation::values() const noexcept {
 
 double Animation::heading() const noexcept {
     GRAPE_FIND(0.0);
-    return impl.heading_of(*found, slot_);
+    return impl.heading_of(dense);
 }
 
 double Animation::progress() const noexcept {
     GRAPE_FIND(0.0);
-    return impl.progress_of(*found);
+    return impl.progress_of(dense);
 }
 
 double Animation::time() const noexcept {
     GRAPE_FIND(0.0);
-    return (static_cast<double>(found->play) + found->phase) * impl.cold(dense).duration;
+    return (static_cast<double>(impl.cold(dense).play) + found->phase) * impl.cold(dense).duration;
 }
 
 int Animation::repetition() const noexcept {
     GRAPE_FIND(0);
-    return static_cast<int>(std::min<std::uint32_t>(found->play, INT32_MAX));
+    return static_cast<int>(std::min<std::uint32_t>(impl.cold(dense).play, INT32_MAX));
 }
 
 double Animation::duration() const noexcept {

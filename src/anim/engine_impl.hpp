@@ -26,25 +26,24 @@ enum HotFlag : std::uint8_t {
     flag_listens = 128, // has loop or complete handlers in its Extra
 };
 
-/// What every tick touches: 40 bytes.
+/// What every tick touches: 32 bytes.
 struct Hot {
-    double phase;            // time within the current play, in plays: [0, 1]; < 0 while waiting
-    double rate;             // plays per engine second: time_scale / duration
-    void* target;            // object whose members receive x, y (null: nothing to write)
-    std::uint32_t path;      // index into the path table
-    std::uint32_t play;      // which play is running, from 0 (wraps at 2³², parity kept)
-    std::uint16_t x_offset;  // byte offsets of the target's x and y
-    std::uint16_t y_offset;
-    std::uint16_t curve;     // index into the curve table (curves with parameters)
+    double phase;           // time within the current play, in plays: [0, 1]; < 0 while waiting
+    double rate;            // plays per engine second: time_scale / duration
+    char* target;           // 2-D: the target's x member; N-D: the target (null: nothing to write)
+    std::uint32_t path;     // index into the path table
+    std::int16_t y_offset;  // 2-D: address of y minus address of x
     CurveKind kind;
     std::uint8_t flags;
 };
 
-/// Read on loops, completion and queries: 16 bytes.
+/// Read on loops, completion, curves with parameters and queries: 24 bytes.
 struct Cold {
-    double duration;      // seconds per play
-    std::uint32_t plays;  // repeat + 1; 0 plays forever
-    std::uint32_t slot;   // the handle slot that refers to this record
+    double duration;       // seconds per play
+    std::uint32_t plays;   // repeat + 1; 0 plays forever
+    std::uint32_t slot;    // the handle slot that refers to this record
+    std::uint32_t play;    // which play is running, from 0 (wraps at 2³², parity kept)
+    std::uint16_t curve;   // index into the curve table (curves with parameters)
 };
 
 /// A handle slot: 8 bytes. `dense` is the record index while alive; free slots chain
@@ -62,7 +61,8 @@ struct Extra {
     std::shared_ptr<const std::function<void(int)>> on_loop;
     std::shared_ptr<const std::function<void(Vec2, double)>> on_update_2d;
     std::shared_ptr<const std::function<void(std::span<const double>)>> on_update_nd;
-    std::ptrdiff_t rotation_offset = -1;  // heading written here (2-D targets), if ≥ 0
+    bool write_rotation = false;          // 2-D targets: the heading goes to x + rotation_offset
+    std::ptrdiff_t rotation_offset = 0;
     bool track_heading = false;
     double heading = 0.0;
     std::optional<PathND> nd;             // N-D animations
@@ -78,6 +78,22 @@ struct PathEntry {
     const PathNode* source = nullptr;  // reparametrized kinds: the source node
     FastPath fast = FastPath::generic;
     std::uint32_t refs = 0;
+    // Reparametrized kinds: v(u) and dv/du·h at K + 1 even steps h = 1/K, so the hot loop
+    // finds the source parameter by one cubic Hermite step instead of the node's Newton
+    // solve. Built per shared path, kept only when it matches the node's solve within
+    // 1e-10·length in position.
+    std::vector<double> table;
+    double steps = 0.0;  // K
+};
+
+/// What the hot loop reads of a shared path: one or two cache lines, the linear and cubic
+/// coefficients copied in so that most updates never touch the node.
+struct PathFast {
+    Vec2 c[4];                       // linear: start, delta; cubic: power-basis coefficients
+    const double* table = nullptr;   // reparametrized: PathEntry::table
+    double steps = 0.0;
+    const PathNode* node = nullptr;  // generic evaluation inside [0, 1]
+    FastPath fast = FastPath::generic;
 };
 
 struct CurveEntry {
@@ -106,9 +122,9 @@ public:
     Hot& hot(std::uint32_t dense) noexcept { return hot_[dense]; }
     const Extra* extra(std::uint32_t slot) const noexcept;
     Extra& extra_for(std::uint32_t slot);
-    Vec2 value_of(const Hot& h) const noexcept;
-    double heading_of(const Hot& h, std::uint32_t slot) const noexcept;
-    double progress_of(const Hot& h) const noexcept;
+    Vec2 value_of(std::uint32_t dense) const noexcept;
+    double heading_of(std::uint32_t dense) const noexcept;
+    double progress_of(std::uint32_t dense) const noexcept;
     void seek(std::uint32_t dense, double seconds) noexcept;
     void set_time_scale(std::uint32_t dense, double scale) noexcept;
     void kill(std::uint32_t dense) noexcept;
@@ -127,10 +143,10 @@ private:
     void release_path(std::uint32_t index) noexcept;
     std::uint16_t acquire_curve(const Curve& curve);
     void release_curve(std::uint16_t index) noexcept;
-    Animation add(Hot hot, double duration, int repeat, double delay, std::optional<Extra> extra);
+    Animation add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay, std::optional<Extra> extra);
 
-    double ease(const Hot& h, double x) const noexcept;
-    Vec2 point(const PathEntry& e, double u) const noexcept;
+    double ease(CurveKind kind, std::uint16_t curve, double x) const noexcept;
+    Vec2 point(std::uint32_t path, double u) const noexcept;
     void write_2d(const Hot& h, Vec2 p) const noexcept;
     void write_state(std::uint32_t dense);
     void advance_slow(std::uint32_t dense, double phase);
@@ -148,6 +164,7 @@ private:
     std::unordered_map<std::uint32_t, Extra> extras_;  // by slot
 
     std::vector<PathEntry> paths_;
+    std::vector<PathFast> path_fast_;  // same index as paths_
     std::vector<std::uint32_t> free_paths_;
     std::unordered_map<const PathNode*, std::uint32_t> path_index_;
     std::vector<CurveEntry> curves_;

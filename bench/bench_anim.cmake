@@ -1,0 +1,1 @@
+grape_bench(anim grape::anim grape_scenes)

@@ -1,0 +1,237 @@
+// N live 2-D animations, quad-in-out, repeating with yoyo, bound to plain structs, ticked at
+// 60 Hz: grape's engine along (a) linear paths, (b) cubic Béziers, (c) arc-length
+// reparametrized cubic Béziers; tweeny doing the same journeys on two floats (linear and
+// quad-in-out); and a hand-written loop over plain structs with the same arithmetic (the
+// floor). Paths are shared: 1024 distinct shapes (scenes::bench_paths), animation i takes
+// shape i % 1024. Reports ns per animation update and bytes per animation, then a summary
+// with the ratios.
+#include <grape/anim.hpp>
+
+#include "seed_animations.hpp"
+
+#include <benchmark/benchmark.h>
+
+// tweeny 3's headers are not self-contained under g++ 12.
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <tweeny/tweeny.h>
+
+#include <atomic>
+#include <ctime>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+// Live heap bytes, to measure bytes per animation the same way for every contender.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+namespace {
+std::atomic<long long> live_bytes{0};
+}
+void* operator new(std::size_t size) {
+    void* p = std::malloc(size + 16);
+    if (!p) throw std::bad_alloc();
+    *static_cast<std::size_t*>(p) = size;
+    live_bytes.fetch_add(static_cast<long long>(size), std::memory_order_relaxed);
+    return static_cast<char*>(p) + 16;
+}
+void operator delete(void* p) noexcept {
+    if (!p) return;
+    char* base = static_cast<char*>(p) - 16;
+    live_bytes.fetch_sub(static_cast<long long>(*reinterpret_cast<std::size_t*>(base)), std::memory_order_relaxed);
+    std::free(base);
+}
+void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
+
+namespace {
+
+using grape::scenes::BenchPathKind;
+constexpr std::size_t distinct_paths = 1024;
+constexpr double frame = 1.0 / 60.0;
+
+struct Result {
+    double ns_per_update = 0;
+    double bytes_per_animation = 0;
+};
+std::map<std::string, Result> results;  // "name/N"
+
+std::string key(const char* name, std::int64_t n) { return std::string(name) + "/" + std::to_string(n); }
+
+// Times the loop body ourselves too (steady clock), so the summary can print ratios.
+template <class Step>
+void run(benchmark::State& state, const char* name, double bytes, Step&& step) {
+    const auto n = state.range(0);
+    double seconds = 0;
+    std::int64_t frames = 0;
+    // Thread CPU time: the machine is shared, and wall time counts the other jobs' turns.
+    auto now = [] {
+        timespec ts{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+    };
+    for (auto _ : state) {
+        const double t0 = now();
+        step();
+        seconds += now() - t0;
+        ++frames;
+    }
+    const double ns = seconds * 1e9 / static_cast<double>(frames * n);
+    state.counters["ns_per_update"] = ns;
+    state.counters["bytes_per_anim"] = bytes;
+    state.SetItemsProcessed(frames * n);
+    Result& r = results[key(name, n)];
+    r.ns_per_update = ns;
+    r.bytes_per_animation = bytes;
+}
+
+void grape_engine(benchmark::State& state, BenchPathKind kind, const char* name) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    const auto segments = grape::scenes::bench_segments(distinct_paths);
+    const auto paths = grape::scenes::bench_paths(kind, segments);  // shared shapes: not counted
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    const long long before = live_bytes.load();
+    auto engine = std::make_unique<grape::Engine>();
+    grape::scenes::create_bench_animations(*engine, targets, paths, grape::Curve::quad_in_out());
+    const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
+    engine->tick(frame);
+    run(state, name, bytes, [&] {
+        engine->tick(frame);
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
+void BM_grape_linear(benchmark::State& s) { grape_engine(s, BenchPathKind::linear, "grape_linear"); }
+void BM_grape_cubic(benchmark::State& s) { grape_engine(s, BenchPathKind::cubic_bezier, "grape_cubic"); }
+void BM_grape_reparam_cubic(benchmark::State& s) {
+    grape_engine(s, BenchPathKind::reparametrized_cubic_bezier, "grape_reparam_cubic");
+}
+
+// tweeny: each tween owns its two start and two end floats; integer duration in ms
+// (during(1000·d)), stepped by the fraction of its duration, yoyo by hand (tweeny 3 has no
+// loops): the sign flips at either end.
+struct FloatTarget {
+    float x = 0, y = 0;
+};
+
+template <class Easing>
+void tweeny_bench(benchmark::State& state, Easing easing, const char* name) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    const auto segments = grape::scenes::bench_segments(distinct_paths);
+    std::vector<FloatTarget> targets(n);
+    const long long before = live_bytes.load();
+    using Tween = tweeny::tween<float, float>;
+    auto tweens = std::make_unique<std::vector<Tween>>();
+    auto step_of = std::make_unique<std::vector<float>>(n);  // signed fraction per frame
+    tweens->reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& s = segments[i % distinct_paths];
+        const double d = grape::scenes::bench_duration(i);
+        tweens->push_back(tweeny::from(static_cast<float>(s.from.x), static_cast<float>(s.from.y))
+                              .to(static_cast<float>(s.to.x), static_cast<float>(s.to.y))
+                              .during(static_cast<std::uint16_t>(1000.0 * d))
+                              .via(easing, easing));
+        (*step_of)[i] = static_cast<float>(frame / d);
+    }
+    const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
+    run(state, name, bytes, [&] {
+        for (std::size_t i = 0; i < n; ++i) {
+            Tween& t = (*tweens)[i];
+            float& dp = (*step_of)[i];
+            const auto& v = t.step(dp);
+            targets[i].x = v[0];
+            targets[i].y = v[1];
+            const float p = t.progress();
+            if ((dp > 0 && p >= 1.0f) || (dp < 0 && p <= 0.0f)) dp = -dp;
+        }
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
+void BM_tweeny_linear(benchmark::State& s) { tweeny_bench(s, tweeny::easing::linear, "tweeny_linear"); }
+void BM_tweeny_quad(benchmark::State& s) { tweeny_bench(s, tweeny::easing::quadraticInOut, "tweeny_quad"); }
+
+// The floor: plain structs, the shared segments, quad-in-out, yoyo; nothing else.
+struct Plain {
+    double phase;
+    double rate;
+    std::uint32_t segment;
+    bool backward;
+};
+
+void BM_floor(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    const auto segments = grape::scenes::bench_segments(distinct_paths);
+    std::vector<grape::Vec2> a(distinct_paths), delta(distinct_paths);
+    for (std::size_t k = 0; k < distinct_paths; ++k) {
+        a[k] = segments[k].from;
+        delta[k] = segments[k].to - segments[k].from;
+    }
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    const long long before = live_bytes.load();
+    auto anims = std::make_unique<std::vector<Plain>>(n);
+    for (std::size_t i = 0; i < n; ++i)
+        (*anims)[i] = {0.0, 1.0 / grape::scenes::bench_duration(i), static_cast<std::uint32_t>(i % distinct_paths), false};
+    const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
+    run(state, "floor", bytes, [&] {
+        Plain* p = anims->data();
+        for (std::size_t i = 0; i < n; ++i) {
+            double phase = p[i].phase + frame * p[i].rate;
+            if (phase >= 1.0) {
+                phase -= 1.0;
+                p[i].backward = !p[i].backward;
+            }
+            p[i].phase = phase;
+            const double x = p[i].backward ? 1.0 - phase : phase;
+            const double e = grape::ease::quad_in_out(x);
+            const grape::Vec2 v = a[p[i].segment] + delta[p[i].segment] * e;
+            targets[i].x = v.x;
+            targets[i].y = v.y;
+        }
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
+void sizes(benchmark::internal::Benchmark* b) {
+    b->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+}
+
+BENCHMARK(BM_floor)->Apply(sizes);
+BENCHMARK(BM_grape_linear)->Apply(sizes);
+BENCHMARK(BM_grape_cubic)->Apply(sizes);
+BENCHMARK(BM_grape_reparam_cubic)->Apply(sizes);
+BENCHMARK(BM_tweeny_linear)->Apply(sizes);
+BENCHMARK(BM_tweeny_quad)->Apply(sizes);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    // Summary: updates per second relative to tweeny quad-in-out (higher is better) and to
+    // the floor (1 = as fast as the hand-written loop). Repetitions overwrite: the last run.
+    std::printf("\n%-22s %9s %12s %12s %14s %12s\n", "contender", "N", "ns/update", "bytes/anim",
+                "x tweeny_quad", "floor/this");
+    for (std::int64_t n : {1000, 100000, 1000000}) {
+        const auto tw = results.find(key("tweeny_quad", n));
+        const auto fl = results.find(key("floor", n));
+        for (const char* name : {"floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "tweeny_linear",
+                                 "tweeny_quad"}) {
+            const auto it = results.find(key(name, n));
+            if (it == results.end()) continue;
+            const double r = it->second.ns_per_update;
+            std::printf("%-22s %9lld %12.2f %12.1f %14.2f %12.2f\n", name, static_cast<long long>(n), r,
+                        it->second.bytes_per_animation, tw != results.end() ? tw->second.ns_per_update / r : 0.0,
+                        fl != results.end() ? fl->second.ns_per_update / r : 0.0);
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,81 @@
+// The GSAP peer of bench/bench_anim.cpp: N tweens of plain objects {x, y} over random
+// segments in a 1000 × 1000 box, power2.inOut (= quad-in-out), repeating forever with
+// yoyo, play lengths 1 + 2·(i mod 1000)/1000 s, 1024 distinct segments, driven at 60 Hz by
+// gsap.updateRoot(t) after removing it from GSAP's own ticker. Modes:
+//   tween        x and y tweened to the segment's end (GSAP's core, two numbers)
+//   motion       MotionPathPlugin along "M from L to" (GSAP measures paths by arc length)
+//   motion-cubic MotionPathPlugin along the same cubic Bézier as bench_anim's (b)/(c)
+// Reports CPU ns per tween update and heap bytes per tween (after gc).
+// Usage: node --expose-gc bench.js [mode...] [--n 1000,100000,1000000]
+'use strict';
+const { gsap } = require('gsap');
+const { MotionPathPlugin } = require('gsap/MotionPathPlugin');
+
+MotionPathPlugin.headless = true;  // no DOM in Node
+gsap.registerPlugin(MotionPathPlugin);
+gsap.ticker.remove(gsap.updateRoot);
+gsap.ticker.lagSmoothing(0);
+
+const args = process.argv.slice(2);
+let sizes = [1000, 100000, 1000000];
+const modes = [];
+for (let i = 0; i < args.length; ++i) {
+  if (args[i] === '--n') sizes = args[++i].split(',').map(Number);
+  else modes.push(args[i]);
+}
+if (modes.length === 0) modes.push('tween', 'motion', 'motion-cubic');
+
+// Segments from a fixed-seed generator (not bench_anim's mt19937_64: only the kind of
+// journey matters for timing).
+function segments(count) {
+  let s = 12345;
+  const next = () => { s = (Math.imul(s, 1103515245) + 12345) >>> 0; return (s / 4294967296) * 1000; };
+  const out = [];
+  for (let i = 0; i < count; ++i) out.push({ x0: next(), y0: next(), x1: next(), y1: next() });
+  return out;
+}
+
+function cubicPath(s) {
+  // Controls at a third and two thirds of the chord pushed 0.4·chord to either side,
+  // as scenes::bench_paths does.
+  const dx = s.x1 - s.x0, dy = s.y1 - s.y0;
+  const px = -dy * 0.4, py = dx * 0.4;
+  const c1 = [s.x0 + dx / 3 + px, s.y0 + dy / 3 + py];
+  const c2 = [s.x0 + dx * 2 / 3 - px, s.y0 + dy * 2 / 3 - py];
+  return `M${s.x0},${s.y0} C${c1[0]},${c1[1]} ${c2[0]},${c2[1]} ${s.x1},${s.y1}`;
+}
+
+const frame = 1 / 60;
+let clock = 0;
+
+function run(mode, n) {
+  const segs = segments(1024);
+  global.gc();
+  const before = process.memoryUsage().heapUsed;
+  const targets = new Array(n);
+  const tweens = new Array(n);
+  for (let i = 0; i < n; ++i) {
+    const s = segs[i % 1024];
+    const target = { x: s.x0, y: s.y0 };
+    targets[i] = target;
+    const vars = { duration: 1 + 2 * (i % 1000) / 1000, ease: 'power2.inOut', repeat: -1, yoyo: true };
+    if (mode === 'tween') { vars.x = s.x1; vars.y = s.y1; }
+    else if (mode === 'motion') vars.motionPath = { path: `M${s.x0},${s.y0} L${s.x1},${s.y1}` };
+    else vars.motionPath = { path: cubicPath(s) };
+    tweens[i] = gsap.to(target, vars);
+  }
+  global.gc();
+  const bytes = (process.memoryUsage().heapUsed - before) / n;
+  for (let k = 0; k < 3; ++k) { clock += frame; gsap.updateRoot(clock); }  // warm-up
+  const frames = Math.max(10, Math.min(2000, Math.round(3e7 / n)));
+  const t0 = process.cpuUsage();
+  for (let k = 0; k < frames; ++k) { clock += frame; gsap.updateRoot(clock); }
+  const t1 = process.cpuUsage(t0);
+  const ns = ((t1.user + t1.system) * 1000) / (frames * n);
+  if (!Number.isFinite(targets[n - 1].x)) throw new Error('no motion');
+  console.log(`gsap_${mode.padEnd(13)} N=${String(n).padStart(8)}  ns/update ${ns.toFixed(1).padStart(8)}  bytes/tween ${bytes.toFixed(0).padStart(6)}`);
+  for (const t of tweens) t.kill();
+}
+
+console.log(`GSAP ${gsap.version}, Node ${process.version}`);
+for (const mode of modes) for (const n of sizes) run(mode, n);
