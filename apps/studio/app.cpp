@@ -135,7 +135,7 @@ int run(const Options& options) {
                                                                    : load_script(options.script);
     const bool scripted = !options.script.empty();
     sdl.window = SDL_CreateWindow("grape studio", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, options.width,
-                                  options.height, SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+                                  options.height, SDL_WINDOW_RESIZABLE);
     if (!sdl.window) throw Error(std::string("SDL_CreateWindow failed: ") + SDL_GetError());
     // The software renderer: no GPU or OpenGL needed, the same pixels everywhere.
     sdl.renderer = SDL_CreateRenderer(sdl.window, -1, SDL_RENDERER_SOFTWARE);

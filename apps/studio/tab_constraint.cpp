@@ -82,6 +82,12 @@ public:
         changed |= ImGui::Combo("integrator", &integrator_, names, int(integrators.size()));
         ImGui::SliderFloat("dt (s)", &step_, 1.0f / 480.0f, 1.0f / 15.0f, "%.4f", ImGuiSliderFlags_Logarithmic);
         changed |= ImGui::SliderFloat("gravity (px/s^2)", &gravity_, 50.0f, 2000.0f, "%.0f");
+        changed |= ImGui::SliderFloat("sideways force", &force_x_, -300.0f, 300.0f, "%.0f");
+        static const char* lefts[] = {"implicit (Witkin solver)", "seed's formula as written"};
+        changed |= ImGui::Combo("left side", &left_method_, lefts, 2);
+        if (left_method_ == 1 && force_x_ != 0.0f)
+            ImGui::TextWrapped("The seed's closed form has -100*x*Fx where J^T lambda gives -50*x*Fx: "
+                               "with a sideways force it pushes the bead off the curve.");
         changed |= ImGui::Checkbox("feedback ks, kd (Baumgarte)", &feedback_);
         if (feedback_) changed |= ImGui::SliderFloat("omega*dt", &omega_dt_, 0.01f, 0.5f, "%.2f");
         ImGui::SliderFloat("speed (x real time)", &speed_, 0.25f, 60.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
@@ -107,7 +113,8 @@ public:
 
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
         const float mid = 0.5f * (min.x + max.x);
-        side(dl, min, {mid - 4.0f, max.y}, *implicit_, trail_implicit_, 0, "implicit (Witkin)");
+        side(dl, min, {mid - 4.0f, max.y}, *implicit_, trail_implicit_, 0,
+             left_method_ == 0 ? "implicit (Witkin)" : "implicit (the seed's closed-form force)");
         side(dl, {mid + 4.0f, min.y}, max, *parametric_, trail_parametric_, 1, "parametric (Lagrange)");
         dl->AddLine({mid, min.y + 8.0f}, {mid, max.y - 8.0f}, colour::grid, 2.0f);
     }
@@ -129,7 +136,8 @@ private:
         setup.g = gravity_;
         setup.drift = feedback_ ? DriftDef{.method = DriftControl::baumgarte, .omega_dt = omega_dt_}
                                 : DriftDef{.method = DriftControl::none};
-        setup.method = ParabolaMethod::implicit;
+        setup.force_x = force_x_;
+        setup.method = left_method_ == 0 ? ParabolaMethod::implicit : ParabolaMethod::seed;
         implicit_.emplace(setup);
         setup.method = ParabolaMethod::parametric;
         parametric_.emplace(setup);
@@ -187,6 +195,8 @@ private:
     int integrator_ = 3;  // rk4, as in the seed's demo
     float step_ = 1.0f / 60.0f;
     float gravity_ = 500.0f;
+    float force_x_ = 0.0f;  // a constant sideways force (wind), px/s² on the unit mass
+    int left_method_ = 0;
     bool feedback_ = false;
     float omega_dt_ = 0.05f;
     float speed_ = 1.0f;
