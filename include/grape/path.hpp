@@ -48,11 +48,13 @@ std::string_view to_string(PathKind kind) noexcept;
 
 /// A 2-D path. Outside [0, 1] it extends along its end tangents:
 /// point(u) = point(0) + u·d1(0) for u < 0 and point(1) + (u − 1)·d1(1) for u > 1,
-/// so overshooting easing curves (back, elastic) carry motion past the ends.
-/// A default-constructed Path stays at the origin.
+/// so overshooting easing curves (back, elastic) carry motion past the ends (a path that
+/// stops at an end, like a cosine spline, stays there). A default-constructed Path stays at
+/// the origin. Where a path is not smooth (spline knots, complex-path cues) d1 and d2 are
+/// those of the piece that starts there. A NaN u gives a meaningless point, never a crash.
 class Path {
 public:
-    Path();
+    Path();  ///< the origin, standing still
 
     /// Position at parameter u.
     Vec2 point(double u) const noexcept;
@@ -65,9 +67,12 @@ public:
 
     /// Arc length over u in [0, 1] (computed once at construction, to ~1e-13 relative).
     double length() const noexcept;
-    /// Arc length from 0 to u, u clamped to [0, 1].
+    /// Arc length from 0 to u, u clamped to [0, 1] (closed form or quadrature: a query, not
+    /// for per-frame loops — use reparametrized() there).
     double length_at(double u) const noexcept;
-    /// The u in [0, 1] where length_at(u) == s (s clamped to [0, length()]).
+    /// The u in [0, 1] where length_at(u) == s (s clamped to [0, length()]), to ~1e-15 in u
+    /// (Newton on length_at with bisection safeguard). Where the path stands still over a
+    /// stretch of u, one of the u in it.
     double u_at_length(double s) const noexcept;
 
     /// Axis-aligned box holding the path over [0, 1] (tight: from the analytic extremes
@@ -75,13 +80,18 @@ public:
     Bounds bounds() const noexcept;
 
     /// A polyline from point(0) to point(1) that stays within `tolerance` of the path
-    /// (distance from every path point to the polyline), with few points.
-    /// Throws grape::Error if tolerance is not positive and finite.
+    /// (distance from every path point to the polyline), with few points: straight kinds give
+    /// their corners, circles even angle steps, the rest adaptive subdivision by measured
+    /// deviation and curvature. A complex path whose parts do not meet (SVG subpaths) gets a
+    /// straight segment across each gap. Tolerances below 1e-12 of the path's size are raised
+    /// to it. Throws grape::Error if tolerance is not positive and finite.
     std::vector<Vec2> flatten(double tolerance) const;
 
     /// The same shape moving at constant speed: point(u) of the result lies at arc length
-    /// u·length() along this path (to 1e-9·length()), with consistent derivatives.
-    /// Works for every kind; reparametrizing a reparametrized path returns it unchanged.
+    /// u·length() along this path (to 1e-9·length()), with consistent derivatives (|d1| is
+    /// length() everywhere, d2 is the chain rule's). Works for every kind; costs a table
+    /// built once (tens of µs for a Bézier, a few KB) and one polynomial per evaluation.
+    /// Reparametrizing a reparametrized path returns it unchanged.
     Path reparametrized() const;
 
     /// Which kind of path this is.
@@ -104,9 +114,9 @@ private:
 /// A straight segment from `start` to `end`; u is proportional to distance.
 class LinearPath : public Path {
 public:
-    LinearPath(Vec2 start, Vec2 end);
-    Vec2 start() const noexcept;
-    Vec2 end() const noexcept;
+    LinearPath(Vec2 start, Vec2 end);  ///< throws if a point is not finite
+    Vec2 start() const noexcept;  ///< point at u = 0
+    Vec2 end() const noexcept;  ///< point at u = 1
 };
 
 /// An arc of a circle: point = centre + radius·(cos θ, sin θ), θ from `start_angle` to
@@ -114,11 +124,11 @@ public:
 /// than 2π apart. With y down, increasing angles turn clockwise on screen.
 class CirclePath : public Path {
 public:
-    CirclePath(Vec2 centre, double radius, double start_angle, double end_angle);
-    Vec2 centre() const noexcept;
-    double radius() const noexcept;
-    double start_angle() const noexcept;
-    double end_angle() const noexcept;
+    CirclePath(Vec2 centre, double radius, double start_angle, double end_angle);  ///< radius > 0; angles in radians
+    Vec2 centre() const noexcept;  ///< centre, world units
+    double radius() const noexcept;  ///< radius, world units
+    double start_angle() const noexcept;  ///< angle at u = 0, radians
+    double end_angle() const noexcept;  ///< angle at u = 1, radians
 };
 
 /// An arc of an ellipse with semi-axes `rx` and `ry` turned by `rotation` radians about
@@ -126,42 +136,45 @@ public:
 /// `end_angle` (either direction, several turns allowed). SVG's `A` command becomes one.
 class EllipticalArcPath : public Path {
 public:
+    /// rx, ry > 0; angles in radians.
     EllipticalArcPath(Vec2 centre, double rx, double ry, double rotation, double start_angle,
                       double end_angle);
-    Vec2 centre() const noexcept;
-    double rx() const noexcept;
-    double ry() const noexcept;
-    double rotation() const noexcept;
-    double start_angle() const noexcept;
-    double end_angle() const noexcept;
+    Vec2 centre() const noexcept;  ///< centre, world units
+    double rx() const noexcept;  ///< semi-axis along the rotated x, world units
+    double ry() const noexcept;  ///< semi-axis along the rotated y, world units
+    double rotation() const noexcept;  ///< rotation of the axes, radians
+    double start_angle() const noexcept;  ///< parametric angle at u = 0, radians
+    double end_angle() const noexcept;  ///< parametric angle at u = 1, radians
 };
 
 /// A circle whose radius goes linearly from `start_radius` to `end_radius` while the angle
 /// goes from `start_angle` to `end_angle` (default: one full turn from 0).
 class SpiralPath : public Path {
 public:
+    /// Radii ≥ 0; angles in radians.
     SpiralPath(Vec2 centre, double start_radius, double end_radius, double start_angle = 0.0,
                double end_angle = 2.0 * pi);
-    Vec2 centre() const noexcept;
-    double start_radius() const noexcept;
-    double end_radius() const noexcept;
-    double start_angle() const noexcept;
-    double end_angle() const noexcept;
+    Vec2 centre() const noexcept;  ///< centre, world units
+    double start_radius() const noexcept;  ///< radius at u = 0 (≥ 0)
+    double end_radius() const noexcept;  ///< radius at u = 1 (≥ 0)
+    double start_angle() const noexcept;  ///< angle at u = 0, radians
+    double end_angle() const noexcept;  ///< angle at u = 1, radians
 };
 
 /// A sine wave along the segment start → end: `frequency` full waves over the segment,
 /// displaced by amplitude·sin(2π·frequency·u) along the segment's left-hand perpendicular.
 class SineWavePath : public Path {
 public:
-    SineWavePath(Vec2 start, Vec2 end, double frequency, double amplitude);
-    Vec2 start() const noexcept;
-    Vec2 end() const noexcept;
-    double frequency() const noexcept;
-    double amplitude() const noexcept;
+    SineWavePath(Vec2 start, Vec2 end, double frequency, double amplitude);  ///< start ≠ end
+    Vec2 start() const noexcept;  ///< start of the base segment
+    Vec2 end() const noexcept;  ///< end of the base segment
+    double frequency() const noexcept;  ///< full waves along the segment
+    double amplitude() const noexcept;  ///< peak displacement, world units
 };
 
 /// Quadratic Bézier through p0 and p2 with control point p1. With `reparametrize`, the
-/// path is the arc-length reparametrization (constant speed), as the seed's flag did.
+/// path is the arc-length reparametrization (constant speed, kind() reparametrized), as the
+/// seed's flag did; control() still gives the control points.
 class QuadraticBezierPath : public Path {
 public:
     QuadraticBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, bool reparametrize = false);
@@ -181,67 +194,74 @@ public:
 /// Points come as Vec2s or, as in the seed, as flat x, y pairs (an odd count is an error).
 class LinearSplinePath : public Path {
 public:
-    explicit LinearSplinePath(std::span<const Vec2> points);
-    explicit LinearSplinePath(std::span<const double> xy);
+    explicit LinearSplinePath(std::span<const Vec2> points);  ///< n ≥ 2 finite points
+    explicit LinearSplinePath(std::span<const double> xy);    ///< x0, y0, x1, y1, ...
     LinearSplinePath(std::initializer_list<double> xy) : LinearSplinePath(std::span<const double>(xy)) {}
-    std::span<const Vec2> points() const noexcept;
+    std::span<const Vec2> points() const noexcept;  ///< the points passed through
 };
 
 /// Cosine interpolation between successive points (zero velocity at every point).
 class CosineSplinePath : public Path {
 public:
-    explicit CosineSplinePath(std::span<const Vec2> points);
-    explicit CosineSplinePath(std::span<const double> xy);
+    explicit CosineSplinePath(std::span<const Vec2> points);  ///< n ≥ 2 finite points
+    explicit CosineSplinePath(std::span<const double> xy);    ///< x0, y0, x1, y1, ...
     CosineSplinePath(std::initializer_list<double> xy) : CosineSplinePath(std::span<const double>(xy)) {}
-    std::span<const Vec2> points() const noexcept;
+    std::span<const Vec2> points() const noexcept;  ///< the points passed through
 };
 
 /// Cubic Hermite spline through points with the given tangents (one per point, as d/du of a
 /// segment's local parameter in [0, 1]).
 class HermiteSplinePath : public Path {
 public:
-    HermiteSplinePath(std::span<const Vec2> points, std::span<const Vec2> tangents);
-    HermiteSplinePath(std::span<const double> xy, std::span<const double> tangent_xy);
+    HermiteSplinePath(std::span<const Vec2> points, std::span<const Vec2> tangents);  ///< one tangent per point
+    HermiteSplinePath(std::span<const double> xy, std::span<const double> tangent_xy);  ///< as flat pairs
     HermiteSplinePath(std::initializer_list<double> xy, std::initializer_list<double> tangent_xy)
         : HermiteSplinePath(std::span<const double>(xy), std::span<const double>(tangent_xy)) {}
-    std::span<const Vec2> points() const noexcept;
-    std::span<const Vec2> tangents() const noexcept;
+    std::span<const Vec2> points() const noexcept;  ///< the points passed through
+    std::span<const Vec2> tangents() const noexcept;  ///< d/dt of each segment's local t at each point
 };
 
 /// Catmull–Rom parametrization: knot spacing |Δp|^α with α = 0, ½, 1.
 enum class CatmullRom { uniform, centripetal, chordal };
 
-/// Catmull–Rom spline through the points (end segments use mirrored phantom points).
-/// Centripetal never forms cusps or self-intersections within a segment.
+/// Catmull–Rom spline through the points (end segments use mirrored phantom points), in the
+/// Barry–Goldman form with knot spacing |Δp|^α; each segment still takes an equal share of u
+/// and its derivatives carry the segment's knot spacing. Centripetal never forms cusps or
+/// self-intersections within a segment. Coincident neighbours (spacing 0) fall back to
+/// spacing 1 there.
 class CatmullRomSplinePath : public Path {
 public:
     explicit CatmullRomSplinePath(std::span<const Vec2> points, CatmullRom type = CatmullRom::uniform);
     explicit CatmullRomSplinePath(std::span<const double> xy, CatmullRom type = CatmullRom::uniform);
     CatmullRomSplinePath(std::initializer_list<double> xy, CatmullRom type = CatmullRom::uniform)
         : CatmullRomSplinePath(std::span<const double>(xy), type) {}
-    std::span<const Vec2> points() const noexcept;
-    CatmullRom type() const noexcept;
+    std::span<const Vec2> points() const noexcept;  ///< the points passed through
+    CatmullRom type() const noexcept;  ///< knot spacing
 };
 
 /// A projectile: position + velocity·t + ½·acceleration·t², t = u·seconds.
 class PhysicsPath : public Path {
 public:
-    PhysicsPath(Vec2 position, Vec2 velocity, Vec2 acceleration, double seconds);
-    Vec2 position() const noexcept;
-    Vec2 velocity() const noexcept;
-    Vec2 acceleration() const noexcept;
-    double seconds() const noexcept;
+    PhysicsPath(Vec2 position, Vec2 velocity, Vec2 acceleration, double seconds);  ///< seconds > 0
+    Vec2 position() const noexcept;  ///< position at t = 0, world units
+    Vec2 velocity() const noexcept;  ///< velocity at t = 0, units per second
+    Vec2 acceleration() const noexcept;  ///< constant acceleration, units per second²
+    double seconds() const noexcept;  ///< time the whole path represents (u = t / seconds)
 };
 
 /// Several paths as one. Part i spans u in [cues[i], cues[i+1]) of the whole, the last part
 /// ends at 1. Cues start at 0, never decrease and stay in [0, 1]; a part whose span is empty
-/// is skipped. Complex paths are paths, so they nest.
+/// is skipped (not travelled, not counted in length or bounds). Derivatives follow the chain
+/// rule: d1 = part.d1(v) / span. Parts need not meet; complex paths are paths, so they nest.
 class ComplexPath : public Path {
 public:
-    ComplexPath(std::vector<Path> parts, std::vector<double> cues);
-    /// Cues from the parts' lengths, so one easing curve applies evenly over the whole.
+    ComplexPath(std::vector<Path> parts, std::vector<double> cues);  ///< one cue per part
+    /// Cues from the parts' lengths, so one easing curve applies evenly over the whole
+    /// (zero-length parts get empty spans; if all are zero, u is shared evenly).
     static ComplexPath by_length(std::vector<Path> parts);
+    /// The parts as given (including skipped ones).
     std::span<const Path> parts() const noexcept;
+    /// The cues as given.
     std::span<const double> cues() const noexcept;
 };
 
@@ -253,7 +273,7 @@ ComplexPath parse_svg_path(std::string_view data);
 /// A scalar from `from` to `to`: value(u) = from + (to − from)·u, extended linearly outside [0, 1].
 class Path1D {
 public:
-    Path1D(double from, double to);
+    Path1D(double from, double to);  ///< both finite
     double value(double u) const noexcept { return from_ + (to_ - from_) * u; }
     double d1(double) const noexcept { return to_ - from_; }
     double from() const noexcept { return from_; }

@@ -342,7 +342,35 @@ Bounds CubicSplineNode::compute_bounds() const {
     return box;
 }
 
-void CubicSplineNode::interior_breaks(std::vector<double>& out) const { even_breaks(segments.size(), out); }
+void CubicSplineNode::interior_breaks(std::vector<double>& out) const {
+    // Segment joins, and cusps inside segments (x′ = y′ = 0, a kink in the speed) so that
+    // quadrature and the arc-length table meet them at a break.
+    const double n = static_cast<double>(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const Segment& s = segments[i];
+        if (i > 0) out.push_back(static_cast<double>(i) / n);
+        const double scale = grape::length(s.c1) + grape::length(s.c2) + grape::length(s.c3);
+        double cusps[4];
+        int count = 0;
+        for (int axis = 0; axis < 2; ++axis) {
+            const auto get = [axis](Vec2 v) { return axis == 0 ? v.x : v.y; };
+            double roots[2];
+            const int m = quadratic_roots(3.0 * get(s.c3), 2.0 * get(s.c2), get(s.c1), roots);
+            for (int k = 0; k < m; ++k) {
+                const double t = roots[k];
+                const Vec2 d = (3.0 * s.c3 * t + 2.0 * s.c2) * t + s.c1;
+                if (t > 1e-9 && t < 1.0 - 1e-9 && grape::length(d) <= 1e-9 * scale) cusps[count++] = t;
+            }
+        }
+        for (int a = 1; a < count; ++a) {
+            for (int b = a; b > 0 && cusps[b] < cusps[b - 1]; --b) std::swap(cusps[b], cusps[b - 1]);
+        }
+        for (int k = 0; k < count; ++k) {
+            const double u = (static_cast<double>(i) + cusps[k]) / n;
+            if (u > out.back() + 1e-12) out.push_back(u);
+        }
+    }
+}
 
 // --- ComplexNode --------------------------------------------------------------------------
 
