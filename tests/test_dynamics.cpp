@@ -557,7 +557,8 @@ TEST(Chain, HundredLinksHeldByProjection) {
 TEST(Chain, DenseSparseAndConjugateGradientSolversAgree) {
     // One evaluation of a 30-link chain (swinging: nonzero velocities) by each linear solver.
     std::vector<std::vector<Vec2>> results;
-    for (LinearSolver solver : {LinearSolver::dense, LinearSolver::sparse_direct, LinearSolver::conjugate_gradient}) {
+    for (LinearSolver solver : {LinearSolver::dense, LinearSolver::sparse_direct, LinearSolver::conjugate_gradient,
+                                LinearSolver::automatic}) {
         auto system = chain(30, 1.0, 9.81, {.solver = {.method = solver}});
         for (int i = 0; i < 10; ++i) system.step(1.0 / 60);
         std::vector<Vec2> a(system.size());
@@ -571,11 +572,14 @@ TEST(Chain, DenseSparseAndConjugateGradientSolversAgree) {
         EXPECT_NEAR(results[0][i].y, results[1][i].y, 1e-9);
         EXPECT_NEAR(results[0][i].x, results[2][i].x, 1e-8);
         EXPECT_NEAR(results[0][i].y, results[2][i].y, 1e-8);
+        EXPECT_NEAR(results[0][i].x, results[3][i].x, 1e-9);
+        EXPECT_NEAR(results[0][i].y, results[3][i].y, 1e-9);
     }
 }
 
 TEST(Constraints, RedundantConstraintsAreSolvedWithoutNaN) {
-    for (LinearSolver solver : {LinearSolver::dense, LinearSolver::sparse_direct, LinearSolver::conjugate_gradient}) {
+    for (LinearSolver solver : {LinearSolver::dense, LinearSolver::sparse_direct, LinearSolver::conjugate_gradient,
+                                LinearSolver::automatic}) {
         // A pendulum held twice (anchor + an identical user constraint) and a rod stated twice.
         ParticleSystem twice({.solver = {.method = solver}});
         ParticleSystem once({.solver = {.method = solver}});
@@ -603,6 +607,35 @@ TEST(Constraints, RedundantConstraintsAreSolvedWithoutNaN) {
             EXPECT_NEAR(twice.positions()[i].x, once.positions()[i].x, 1e-9);
             EXPECT_NEAR(twice.positions()[i].y, once.positions()[i].y, 1e-9);
         }
+    }
+}
+
+TEST(Constraints, LargeRedundantChainFallsBackToConjugateGradient) {
+    // 300 links, each stated twice in a row (600 rows, banded): the envelope Cholesky meets a
+    // zero pivot and its conjugate-gradient fallback solves the consistent singular system.
+    auto once = chain(300, 1.0, 9.81, {.drift = {.method = DriftControl::none}});
+    ParticleSystem twice({.drift = {.method = DriftControl::none}});
+    twice.add_particle({.mass = std::numeric_limits<double>::infinity()});
+    for (std::uint32_t k = 1; k <= 300; ++k) {
+        twice.add_particle({.position = {static_cast<double>(k), 0.0}});
+        twice.add_distance({k - 1}, {k}, 1.0);
+        twice.add_distance({k}, {k - 1}, 1.0);  // the same link again, next to it: still banded
+    }
+    twice.add_gravity({0, 9.81});
+    for (int i = 0; i < 30; ++i) {  // swing a little so the velocity terms matter
+        once.step(1.0 / 240);
+    }
+    for (std::size_t k = 0; k < once.size(); ++k) {
+        twice.set_position({static_cast<std::uint32_t>(k)}, once.positions()[k]);
+        twice.set_velocity({static_cast<std::uint32_t>(k)}, once.velocities()[k]);
+    }
+    std::vector<Vec2> a2(twice.size()), a1(once.size());
+    EXPECT_EQ(twice.evaluate(a2), SolveStatus::singular);
+    EXPECT_EQ(once.evaluate(a1), SolveStatus::ok);
+    for (std::size_t i = 0; i < a1.size(); ++i) {
+        // Accelerations O(10); CG to 1e-13 relative on a system of condition ~n² = 1e5.
+        EXPECT_NEAR(a2[i].x, a1[i].x, 1e-6);
+        EXPECT_NEAR(a2[i].y, a1[i].y, 1e-6);
     }
 }
 

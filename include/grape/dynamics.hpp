@@ -204,16 +204,16 @@ struct DriftDef {
 
 /// The linear solver for J W Jᵀ λ = b.
 enum class LinearSolver {
-    automatic,           ///< dense up to dense_limit constraint rows, sparse direct above
-    dense,               ///< Eigen LDLT; complete orthogonal decomposition when singular
-    sparse_direct,       ///< Eigen simplicial LDLT; conjugate gradient when singular
+    automatic,           ///< Cholesky in envelope storage when small or banded (chains), else sparse_direct
+    dense,               ///< dense Cholesky; minimum-norm least squares when rows are redundant
+    sparse_direct,       ///< Eigen simplicial LDLT (fill-reducing order); conjugate gradient when singular
     conjugate_gradient,  ///< Eigen conjugate gradient on the sparse J W Jᵀ, warm-started
 };
 
 /// Linear-solver settings.
 struct SolverDef {
     LinearSolver method = LinearSolver::automatic;  ///< see LinearSolver
-    std::size_t dense_limit = 48;  ///< rows up to which `automatic` solves densely
+    std::size_t dense_limit = 48;  ///< rows up to which `automatic` always uses the envelope Cholesky
     double cg_tolerance = 1e-13;   ///< conjugate gradient: relative residual |r|/|b|
     int cg_max_iterations = 0;     ///< conjugate gradient: 0 means 4 × rows
 };

@@ -8,9 +8,9 @@
 namespace grape::detail {
 
 namespace {
-// Pivots below this fraction of the largest one mark J W Jᵀ as singular (redundant rows):
-// a regular system of moderate condition keeps its pivots far above it, while a redundant
-// row's pivot is round-off, ~1e-16 of the largest.
+// Pivots below this fraction of their diagonal entry mark J W Jᵀ as singular (redundant
+// rows): a regular system of moderate condition keeps its pivots far above it, while a
+// redundant row's pivot is round-off, ~1e-16 of its diagonal.
 constexpr double singular_pivot_ratio = 1e-11;
 
 std::span<const Vec2> as_vec2(std::span<const double> values) noexcept {
@@ -89,26 +89,50 @@ void SolverWorkspace::build_topology() {
     for (std::uint32_t b = 0; b < blocks; ++b) blocks_of[block_particle[b]].push_back(b);
 
     const SolverDef& solver = s.def_.solver;
-    dense = solver.method == LinearSolver::dense ||
-            (solver.method == LinearSolver::automatic && rows <= solver.dense_limit);
-    contributions.clear();
-    std::vector<Eigen::Triplet<double>> triplets;
-    for (std::uint32_t p = 0; p < blocks_of.size(); ++p) {
-        for (auto bi : blocks_of[p]) {
-            for (auto bj : blocks_of[p]) {
-                const auto i = block_row[bi], j = block_row[bj];
-                contributions.push_back({0, bi, bj, p});
-                if (!dense) triplets.emplace_back(static_cast<int>(i), static_cast<int>(j), 1.0);
-            }
-        }
-    }
-    // The diagonal is always present, so rows touching only pinned particles still have a slot.
-    const auto m = static_cast<Eigen::Index>(rows);
-    if (dense) {
-        dense_matrix = Eigen::MatrixXd::Zero(m, m);
-        for (auto& k : contributions)
-            k.value = block_row[k.block_i] + block_row[k.block_j] * static_cast<std::uint32_t>(rows);
+    // Envelope of the lower triangle: the first column each row couples to.
+    first.resize(rows);
+    for (std::uint32_t r = 0; r < rows; ++r) first[r] = r;
+    if (solver.method == LinearSolver::dense) {
+        std::fill(first.begin(), first.end(), 0u);
     } else {
+        for (std::uint32_t p = 0; p < blocks_of.size(); ++p)
+            for (auto bi : blocks_of[p])
+                for (auto bj : blocks_of[p]) {
+                    const auto i = block_row[bi], j = block_row[bj];
+                    if (j < first[i]) first[i] = j;
+                }
+    }
+    std::size_t envelope = 0;
+    for (std::uint32_t r = 0; r < rows; ++r) envelope += r - first[r] + 1;
+    skyline = solver.method == LinearSolver::dense ||
+              (solver.method == LinearSolver::automatic &&
+               (rows <= solver.dense_limit || envelope <= 16 * static_cast<std::size_t>(rows)));
+    contributions.clear();
+    const auto m = static_cast<Eigen::Index>(rows);
+    if (skyline) {
+        offset.resize(rows + 1);
+        offset[0] = 0;
+        for (std::uint32_t r = 0; r < rows; ++r) offset[r + 1] = offset[r] + (r - first[r] + 1);
+        sky_matrix.assign(envelope, 0.0);
+        sky_factor.assign(envelope, 0.0);
+        sky_work.assign(rows, 0.0);
+        sky_inverse_diagonal.assign(rows, 0.0);
+        for (std::uint32_t p = 0; p < blocks_of.size(); ++p)
+            for (auto bi : blocks_of[p])
+                for (auto bj : blocks_of[p]) {
+                    const auto i = block_row[bi], j = block_row[bj];
+                    if (j <= i)
+                        contributions.push_back({static_cast<std::uint32_t>(offset[i] + (j - first[i])), bi, bj, p});
+                }
+    } else {
+        std::vector<Eigen::Triplet<double>> triplets;
+        for (std::uint32_t p = 0; p < blocks_of.size(); ++p)
+            for (auto bi : blocks_of[p])
+                for (auto bj : blocks_of[p]) {
+                    contributions.push_back({0, bi, bj, p});
+                    triplets.emplace_back(static_cast<int>(block_row[bi]), static_cast<int>(block_row[bj]), 1.0);
+                }
+        // The diagonal is always present, so rows touching only pinned particles still have a slot.
         for (std::uint32_t r = 0; r < rows; ++r) triplets.emplace_back(static_cast<int>(r), static_cast<int>(r), 1.0);
         sparse_matrix.resize(m, m);
         sparse_matrix.setFromTriplets(triplets.begin(), triplets.end());
@@ -197,48 +221,134 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
 
 void SolverWorkspace::assemble() {
     const auto& w = owner->inverse_masses_;
-    double* values = dense ? dense_matrix.data() : sparse_matrix.valuePtr();
-    const std::size_t count = dense ? rows * rows : static_cast<std::size_t>(sparse_matrix.nonZeros());
+    double* values = skyline ? sky_matrix.data() : sparse_matrix.valuePtr();
+    const std::size_t count = skyline ? sky_matrix.size() : static_cast<std::size_t>(sparse_matrix.nonZeros());
     std::fill(values, values + count, 0.0);
     for (const auto& k : contributions) values[k.value] += w[k.particle] * dot(jacobian[k.block_i], jacobian[k.block_j]);
 }
 
-SolveStatus SolverWorkspace::solve() {
-    const auto m = static_cast<Eigen::Index>(rows);
-    const SolverDef& def = owner->def_.solver;
-    SolveStatus status = SolveStatus::ok;
-    if (dense) {
-        if (m == 1) {  // one row (a bead, a pendulum): no factorization needed
-            const double a = dense_matrix(0, 0);
-            if (a > 0.0) {
-                lambda(0) = rhs(0) / a;
+bool SolverWorkspace::factor_skyline() noexcept {
+    // Unpivoted Cholesky: J W Jᵀ is symmetric positive definite unless rows are redundant.
+    // Each pivot L_ii² is the part of A_ii not explained by the rows before it: a tiny ratio
+    // means row i is (numerically) a combination of them.
+    // The solves are serial chains of dependent operations, so the factor keeps 1/L_ii
+    // (multiplications instead of divisions on the critical path).
+    const double* a = sky_matrix.data();
+    double* l = sky_factor.data();
+    double* inverse = sky_inverse_diagonal.data();
+    for (std::size_t i = 0; i < rows; ++i) {
+        double* li = l + offset[i] - first[i];  // li[k] = L(i, k) for k ≥ first[i]
+        for (std::size_t j = first[i]; j <= i; ++j) {
+            const double* lj = l + offset[j] - first[j];
+            double sum = a[offset[i] + j - first[i]];
+            for (std::size_t k = std::max(first[i], first[j]); k < j; ++k) sum -= li[k] * lj[k];
+            if (j < i) {
+                li[j] = sum * inverse[j];
             } else {
-                lambda(0) = 0.0;
-                status = SolveStatus::singular;
-            }
-        } else {
-            ldlt.compute(dense_matrix);
-            // Full expressions on vectorD(): no temporary vector, no allocation per solve.
-            const double d_min = ldlt.vectorD().cwiseAbs().minCoeff();
-            const double d_max = ldlt.vectorD().cwiseAbs().maxCoeff();
-            if (ldlt.info() == Eigen::Success && d_min > singular_pivot_ratio * d_max) {
-                lambda = ldlt.solve(rhs);
-            } else {
-                // Redundant rows: the minimum-norm least-squares multipliers.
-                Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(dense_matrix);
-                cod.setThreshold(singular_pivot_ratio);
-                lambda = cod.solve(rhs);
-                status = SolveStatus::singular;
+                const double diagonal = a[offset[i] + i - first[i]];
+                if (!(sum > singular_pivot_ratio * diagonal)) return false;
+                li[i] = std::sqrt(sum);
+                inverse[i] = 1.0 / li[i];
             }
         }
+    }
+    return true;
+}
+
+void SolverWorkspace::solve_skyline() noexcept {
+    const double* l = sky_factor.data();
+    const double* inverse = sky_inverse_diagonal.data();
+    double* y = sky_work.data();
+    for (std::size_t i = 0; i < rows; ++i) {  // L y = rhs
+        const double* li = l + offset[i] - first[i];
+        double sum = rhs(static_cast<Eigen::Index>(i));
+        for (std::size_t k = first[i]; k < i; ++k) sum -= li[k] * y[k];
+        y[i] = sum * inverse[i];
+    }
+    for (std::size_t i = rows; i-- > 0;) {  // Lᵀ λ = y, column by column
+        const double* li = l + offset[i] - first[i];
+        y[i] *= inverse[i];
+        for (std::size_t k = first[i]; k < i; ++k) y[k] -= li[k] * y[i];
+    }
+    for (std::size_t i = 0; i < rows; ++i) lambda(static_cast<Eigen::Index>(i)) = y[i];
+}
+
+SolveStatus SolverWorkspace::solve_skyline_singular() {
+    const auto m = static_cast<Eigen::Index>(rows);
+    const SolverDef& def = owner->def_.solver;
+    if (rows <= 256) {
+        // Redundant rows: the minimum-norm least-squares multipliers.
+        Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, m);
+        for (std::size_t i = 0; i < rows; ++i)
+            for (std::size_t j = first[i]; j <= i; ++j)
+                a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+                    a(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) = sky_matrix[offset[i] + j - first[i]];
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(a);
+        cod.setThreshold(singular_pivot_ratio);
+        lambda = cod.solve(rhs);
+        return SolveStatus::singular;
+    }
+    // Large: Jacobi-preconditioned conjugate gradient on the envelope storage, warm-started.
+    auto multiply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+        y.setZero();
+        for (std::size_t i = 0; i < rows; ++i)
+            for (std::size_t j = first[i]; j <= i; ++j) {
+                const double v = sky_matrix[offset[i] + j - first[i]];
+                y(static_cast<Eigen::Index>(i)) += v * x(static_cast<Eigen::Index>(j));
+                if (j != i) y(static_cast<Eigen::Index>(j)) += v * x(static_cast<Eigen::Index>(i));
+            }
+    };
+    Eigen::VectorXd inverse_diagonal(m), r(m), z(m), p(m), q(m);
+    for (std::size_t i = 0; i < rows; ++i) {
+        const double d = sky_matrix[offset[i] + i - first[i]];
+        inverse_diagonal(static_cast<Eigen::Index>(i)) = d > 0.0 ? 1.0 / d : 1.0;
+    }
+    lambda = lambda_previous;
+    multiply(lambda, q);
+    r = rhs - q;
+    z = inverse_diagonal.cwiseProduct(r);
+    p = z;
+    double rz = r.dot(z);
+    const double target = def.cg_tolerance * def.cg_tolerance * rhs.squaredNorm();
+    const int limit = def.cg_max_iterations > 0 ? def.cg_max_iterations : static_cast<int>(4 * rows);
+    int iterations = 0;
+    while (r.squaredNorm() > target && iterations < limit) {
+        multiply(p, q);
+        const double pq = p.dot(q);
+        if (!(pq > 0.0)) break;  // p in the null space: nothing left to reduce
+        const double alpha = rz / pq;
+        lambda += alpha * p;
+        r -= alpha * q;
+        z = inverse_diagonal.cwiseProduct(r);
+        const double rz_next = r.dot(z);
+        p = z + (rz_next / rz) * p;
+        rz = rz_next;
+        ++iterations;
+    }
+    cg_iterations += iterations;
+    return r.squaredNorm() > target ? SolveStatus::not_converged : SolveStatus::singular;
+}
+
+SolveStatus SolverWorkspace::solve() {
+    const SolverDef& def = owner->def_.solver;
+    SolveStatus status = SolveStatus::ok;
+    if (skyline && rows == 1) {  // one row (a bead on a curve, a pendulum): a division
+        const double a = sky_matrix[0];
+        lambda(0) = a > 0.0 ? rhs(0) / a : 0.0;
+        if (!(a > 0.0)) status = SolveStatus::singular;
+    } else if (skyline) {
+        if (factor_skyline()) solve_skyline();
+        else status = solve_skyline_singular();
     } else {
         bool use_cg = def.method == LinearSolver::conjugate_gradient;
         if (!use_cg) {
             sparse_ldlt.factorize(sparse_matrix);
             bool ok = sparse_ldlt.info() == Eigen::Success;
             if (ok) {
-                const Eigen::VectorXd d = sparse_ldlt.vectorD().cwiseAbs();  // returned by value
-                ok = d.minCoeff() > singular_pivot_ratio * d.maxCoeff();
+                // The same test on the pivots D_ii against the diagonal (vectorD() returns a copy).
+                const Eigen::VectorXd d = sparse_ldlt.vectorD();
+                const Eigen::VectorXd a = sparse_matrix.diagonal();
+                ok = (d.array() > singular_pivot_ratio * a.array()).all();
             }
             if (ok) {
                 lambda = sparse_ldlt.solve(rhs);

@@ -32,15 +32,20 @@ struct SolverWorkspace final : SecondOrderSystem {
         std::uint32_t particle;
     };
     std::vector<Contribution> contributions;
-    bool dense = true;
+    // Small or narrow-banded systems (a chain in creation order has bandwidth 1) are factored
+    // in skyline (envelope) storage of the lower triangle: row i holds columns first[i]..i,
+    // and Cholesky fill-in stays inside that envelope. Anything else goes to Eigen's sparse
+    // solvers.
+    bool skyline = true;
+    std::vector<std::uint32_t> first;    // per row: first stored column
+    std::vector<std::size_t> offset;     // per row: index of (i, first[i]) in the arrays below
+    std::vector<double> sky_matrix, sky_factor, sky_inverse_diagonal, sky_work;
 
     // -- per evaluation --
     std::vector<Vec2> jacobian;  // per block
     std::vector<double> c, c_dot, jdot_v, gradient_norm2;  // per row
     std::vector<Vec2> user_x, user_v;                       // scratch for user constraints
 
-    Eigen::MatrixXd dense_matrix;
-    Eigen::LDLT<Eigen::MatrixXd> ldlt;
     Eigen::SparseMatrix<double> sparse_matrix;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> sparse_ldlt;
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
@@ -60,6 +65,10 @@ struct SolverWorkspace final : SecondOrderSystem {
     void evaluate_rows(std::span<const Vec2> x, std::span<const Vec2> v);
     // J W Jᵀ from the current J and inverse masses.
     void assemble();
+    // Skyline Cholesky of sky_matrix into sky_factor; false when a pivot is (numerically) zero.
+    bool factor_skyline() noexcept;
+    void solve_skyline() noexcept;                 // lambda = A⁻¹ rhs with the factor
+    SolveStatus solve_skyline_singular();          // least squares (small) or CG (large)
     // Solves J W Jᵀ λ = rhs into `lambda`.
     SolveStatus solve();
     void note(SolveStatus status) noexcept;
