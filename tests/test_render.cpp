@@ -410,6 +410,12 @@ TEST(Canvas, PushAndPopRestoreTheTransform) {
     EXPECT_EQ(canvas.transform().apply({1, 0}), (Vec2{2, 0}));
     canvas.pop();  // unbalanced: resets instead of failing
     EXPECT_EQ(canvas.transform().apply({1, 0}), (Vec2{1, 0}));
+    // Singular and non-finite transforms are refused; drawing still works afterwards.
+    canvas.set_transform(grape::Affine::scaling(0, 3));
+    canvas.set_transform(grape::Affine::translation({std::nan(""), 0}));
+    EXPECT_EQ(canvas.transform().apply({1, 0}), (Vec2{1, 0}));
+    canvas.fill_rect({0, 0, 10, 10}, {});
+    EXPECT_EQ(ink(canvas.to_image(), 5, 5), 1.0);
 }
 
 TEST(Plot, DrawsSeriesInsideItsArea) {
@@ -672,6 +678,29 @@ TEST(DrawPath, TangentArrowsPointAlongTheDerivative) {
     EXPECT_GT(ink(image, 205, 50), 0.5);  // along the second, past the end of the path
     EXPECT_LT(ink(image, 15, 50), 0.1);   // nothing behind the start
     EXPECT_LT(ink(image, 215, 50), 0.1);  // nor past the second tip (180 + 30 + 1.5 width)
+}
+
+// Non-finite input to any primitive is skipped, and the canvas keeps drawing afterwards
+// (cairo would otherwise enter an error state and silently drop everything that follows).
+TEST(Canvas, NonFiniteInputIsSkipped) {
+    const double nan = std::nan("");
+    Canvas canvas(40, 40);
+    canvas.stroke_line({nan, 0}, {10, 10}, {});
+    canvas.fill_polygon(std::vector<Vec2>{{0, 0}, {nan, 5}, {5, 0}}, {});
+    canvas.stroke_circle({5, 5}, nan, {});
+    canvas.fill_circle({nan, 5}, 3, {});
+    canvas.dot({5, nan}, 3, grape::colors::black);
+    canvas.stroke_rect({nan, 0, 5, 5}, {});
+    canvas.fill_rect({0, 0, nan, 5}, {});
+    canvas.clip({0, 0, nan, 1});
+    canvas.text({nan, 3}, "x", {});
+    canvas.draw_image(Image(2, 2, grape::colors::black), {0, 0, 2, 2}, {0, 0, nan, 4});
+    canvas.stroke_line({0, 0}, {10, 10}, {.width = nan});  // falls back to width 1
+    canvas.fill_rect({20, 20, 10, 10}, {});
+    const Image image = canvas.to_image();
+    EXPECT_EQ(ink(image, 25, 25), 1.0);
+    EXPECT_GT(ink(image, 5, 5), 0.3);  // the fallback-width line
+    EXPECT_EQ(ink(image, 35, 5), 0.0);
 }
 
 }  // namespace

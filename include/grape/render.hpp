@@ -177,7 +177,8 @@ public:
     void push();
     /// Restores what the matching push() saved; without one, resets the transform.
     void pop();
-    /// Replaces the world-to-output transform.
+    /// Replaces the world-to-output transform. A singular or non-finite one is ignored (the
+    /// current transform stays): it would map the world onto a line and poison cairo's state.
     void set_transform(const Affine& transform) noexcept;
     /// The current world-to-output transform.
     Affine transform() const noexcept;

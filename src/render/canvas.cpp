@@ -273,8 +273,11 @@ void Canvas::pop() {
 
 void Canvas::set_transform(const Affine& t) noexcept {
     const cairo_matrix_t m{t.xx, t.yx, t.xy, t.yy, t.x0, t.y0};
-    // A singular matrix would put cairo into an error state for good: refuse it quietly.
-    if (std::isfinite(t.xx * t.yy - t.xy * t.yx) && t.xx * t.yy - t.xy * t.yx != 0.0) cairo_set_matrix(state_->cr, &m);
+    // A singular or non-finite matrix would put cairo into an error state for good: refuse it.
+    const double det = t.xx * t.yy - t.xy * t.yx;
+    const bool finite = std::isfinite(t.xx) && std::isfinite(t.yx) && std::isfinite(t.xy) && std::isfinite(t.yy) &&
+                        std::isfinite(t.x0) && std::isfinite(t.y0);
+    if (finite && std::isfinite(det) && det != 0.0) cairo_set_matrix(state_->cr, &m);
 }
 
 Affine Canvas::transform() const noexcept {
@@ -285,7 +288,14 @@ Affine Canvas::transform() const noexcept {
 
 void Canvas::concat(const Affine& t) noexcept { set_transform(transform() * t); }
 
+namespace {
+bool finite_rect(const Rect& r) noexcept {
+    return std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.width) && std::isfinite(r.height);
+}
+}  // namespace
+
 void Canvas::clip(const Rect& area) noexcept {
+    if (!finite_rect(area)) return;
     cairo_rectangle(state_->cr, area.x, area.y, area.width, area.height);
     cairo_clip(state_->cr);
 }
@@ -343,12 +353,14 @@ void Canvas::dot(Vec2 centre, double radius, Color color) {
 }
 
 void Canvas::stroke_rect(const Rect& r, const StrokeStyle& style) {
+    if (!finite_rect(r)) return;
     cairo_new_path(state_->cr);
     cairo_rectangle(state_->cr, r.x, r.y, r.width, r.height);
     detail::stroke(state_->cr, style);
 }
 
 void Canvas::fill_rect(const Rect& r, const FillStyle& style) {
+    if (!finite_rect(r)) return;
     cairo_new_path(state_->cr);
     cairo_rectangle(state_->cr, r.x, r.y, r.width, r.height);
     detail::fill(state_->cr, style);
@@ -392,6 +404,7 @@ void Canvas::text(Vec2 at, std::string_view utf8, const TextStyle& style) {
 }
 
 void Canvas::draw_image(const Image& image, const Rect& source, const Rect& target, bool smooth) {
+    if (!finite_rect(source) || !finite_rect(target)) return;
     if (!(source.width > 0.0 && source.height > 0.0 && target.width != 0.0 && target.height != 0.0)) return;
     cairo_t* cr = state_->cr;
     cairo_surface_t* s = surface_from_image(image);
