@@ -5,7 +5,7 @@
 //  * implicit (Witkin): a ParticleSystem with a constraint C(q) = 0. Each evaluation solves
 //    J W Jᵀ λ = −J̇q̇ − J W Q − ks·C − kd·Ċ and applies the constraint force Jᵀλ, which does
 //    no work along any legal velocity. Any number of particles and constraints, solved
-//    together (dense direct for small systems, sparse for large ones).
+//    together (Cholesky for small or banded systems, Eigen's sparse solvers for large ones).
 //  * generalized coordinates (Lagrange): a Bead with one coordinate u on a parametric curve
 //    x(u) (any grape::Path), q̈ = (x′·F/m − (x′·x″) q̇²)/|x′|². On the curve by construction.
 //
@@ -50,7 +50,7 @@ namespace grape {
 /// C and its first and second derivatives at one point.
 struct CurveSample {
     double value = 0.0;  ///< C(x, y), in the curve's own units
-    Vec2 gradient{};       ///< ∇C
+    Vec2 gradient{};     ///< ∇C
     double hxx = 0.0;    ///< ∂²C/∂x²
     double hxy = 0.0;    ///< ∂²C/∂x∂y
     double hyy = 0.0;    ///< ∂²C/∂y²
@@ -166,9 +166,9 @@ struct ConstraintId {
 
 /// A new particle.
 struct ParticleDef {
-    Vec2 position{};        ///< world units
-    Vec2 velocity{};        ///< world units per second
-    double mass = 1.0;    ///< positive; +infinity pins the particle (inverse mass 0)
+    Vec2 position{};     ///< world units
+    Vec2 velocity{};     ///< world units per second
+    double mass = 1.0;   ///< positive; +infinity pins the particle (inverse mass 0)
 };
 
 /// A damped spring between two particles: F = −(k·(|d| − L) + c·(ḋ·d̂))·d̂ on b, opposite on a.
