@@ -690,6 +690,16 @@ TEST(PathErrors, EveryBadInputNamesTheArgumentAndReason) {
                  "SineWavePath: start and end must differ (both (1, 1)): the wave needs a direction");
     EXPECT_ERROR(grape::SineWavePath({0, 0}, {1, 1}, nan, 1), "SineWavePath: frequency must be finite (got nan)");
     EXPECT_ERROR(grape::SineWavePath({0, 0}, {1, 1}, 1, inf), "SineWavePath: amplitude must be finite (got inf)");
+    EXPECT_ERROR(grape::SineWavePath({0, 0}, {1, 1}, 2e6, 1),
+                 "SineWavePath: frequency must be at most a million waves (got 2000000)");
+    EXPECT_ERROR(grape::CirclePath({0, 0}, 1, 0, 1e7 * pi),
+                 "CirclePath: end_angle − start_angle must be at most a million turns (got 31415926.535897933 radians)");
+    EXPECT_ERROR(grape::SpiralPath({0, 0}, 1, 2, 0, -1e7 * pi),
+                 "SpiralPath: end_angle − start_angle must be at most a million turns (got -31415926.535897933 radians)");
+    EXPECT_ERROR(grape::LinearPath({-1e308, 0}, {1e308, 0}),
+                 "Path (linear): the length overflows a double; coordinates or parameters are too large");
+    EXPECT_ERROR(grape::PhysicsPath({0, 0}, {1, 1}, {0, 1e300}, 1e200),
+                 "Path (physics): the length overflows a double; coordinates or parameters are too large");
     EXPECT_ERROR(grape::QuadraticBezierPath({0, 0}, {nan, 0}, {1, 1}), "QuadraticBezierPath: p1 must be finite (got (nan, 0))");
     EXPECT_ERROR(grape::CubicBezierPath({0, 0}, {0, 0}, {0, 0}, {inf, 0}), "CubicBezierPath: p3 must be finite (got (inf, 0))");
     EXPECT_ERROR(grape::LinearSplinePath({1, 2, 3}),

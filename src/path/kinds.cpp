@@ -380,7 +380,8 @@ ComplexNode::ComplexNode(std::vector<Path> parts_in, std::vector<double> cues_in
     for (std::size_t i = 0; i < parts.size(); ++i) {
         const double start = cues[i];
         const double end = i + 1 < parts.size() ? cues[i + 1] : 1.0;
-        if (!(end > start)) continue;  // an empty span: the part is skipped
+        // An empty span is skipped; so is one too thin for 1/width (adjacent doubles).
+        if (!(end > start) || !std::isfinite(1.0 / (end - start))) continue;
         const PathNode* node = &parts[i].node();
         pieces_.push_back(Piece{node, start, end - start, 1.0 / (end - start), s});
         starts_.push_back(start);

@@ -32,6 +32,16 @@ void require_finite(const char* who, const char* name, Vec2 v) {
     if (!is_finite(v)) fail(who, std::string(name) + " must be finite (got " + text(v) + ")");
 }
 
+// Work for length, bounds and flattening grows with the turns: a million is far beyond any
+// drawing and keeps every construction bounded.
+constexpr double max_turns = 1e6;
+
+void require_turns(const char* who, double a0, double a1) {
+    if (std::abs(a1 - a0) > 2.0 * pi * max_turns) {
+        fail(who, "end_angle − start_angle must be at most a million turns (got " + text(a1 - a0) + " radians)");
+    }
+}
+
 std::vector<Vec2> checked_points(const char* who, const char* name, std::span<const Vec2> points, std::size_t at_least) {
     if (points.size() < at_least) {
         fail(who, std::string(name) + " needs at least " + std::to_string(at_least) + " points (got " +
@@ -188,6 +198,7 @@ std::shared_ptr<const detail::ArcNode> arc(const char* who, PathKind kind, Vec2 
     }
     require_finite(who, "start_angle", a0);
     require_finite(who, "end_angle", a1);
+    require_turns(who, a0, a1);
     return make_node<detail::ArcNode>(kind, centre, rx, ry, rotation, a0, a1);
 }
 
@@ -222,6 +233,7 @@ SpiralPath::SpiralPath(Vec2 centre, double start_radius, double end_radius, doub
           }
           require_finite(who, "start_angle", start_angle);
           require_finite(who, "end_angle", end_angle);
+          require_turns(who, start_angle, end_angle);
           return make_node<detail::SpiralNode>(centre, start_radius, end_radius, start_angle, end_angle);
       }()) {}
 Vec2 SpiralPath::centre() const noexcept { return static_cast<const detail::SpiralNode&>(*node_).centre; }
@@ -237,6 +249,9 @@ SineWavePath::SineWavePath(Vec2 start, Vec2 end, double frequency, double amplit
           require_finite(who, "end", end);
           if (start == end) fail(who, "start and end must differ (both " + text(start) + "): the wave needs a direction");
           require_finite(who, "frequency", frequency);
+          if (std::abs(frequency) > max_turns) {
+              fail(who, "frequency must be at most a million waves (got " + text(frequency) + ")");
+          }
           require_finite(who, "amplitude", amplitude);
           return make_node<detail::SineWaveNode>(start, end, frequency, amplitude);
       }()) {}

@@ -4,8 +4,11 @@
 
 #include "geometry.hpp"
 
+#include <grape/error.hpp>
+
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace grape::detail {
 
@@ -44,6 +47,11 @@ void PathNode::finish() {
             cumulative_[i + 1] = cumulative_[i] + integrate_speed(breaks_[i], breaks_[i + 1]);
         }
         length_ = cumulative_.back();
+    }
+    if (!std::isfinite(length_)) {
+        // Finite inputs whose differences or products overflow (coordinates near 1e308).
+        throw Error("Path (" + std::string(to_string(kind_)) +
+                    "): the length overflows a double; coordinates or parameters are too large");
     }
     bounds_ = compute_bounds();
 }
