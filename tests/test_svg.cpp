@@ -376,8 +376,11 @@ TEST(Svg, ErrorsNameTheOffsetAndTheReason) {
     EXPECT_EQ(error_of("M1.5e308 0 l1.5e308 0"), "SVG path data: a coordinate is too large at offset 12 (beyond the range of a double)");
     EXPECT_EQ(error_of("M0 0"), "SVG path data: draws nothing (no segment of non-zero length)");
     EXPECT_EQ(error_of("M1 1 L1 1 Z m0 0 z"), "SVG path data: draws nothing (no segment of non-zero length)");
-    EXPECT_EQ(error_of("M-1e308 0 L1e308 0"),
-              "SVG path data: the path's length overflows a double (segment at offset 11)");
+    // Each segment's length fits, their sum does not.
+    EXPECT_EQ(error_of("M-1e308 0 L0 0 L1e308 0 L0 0"),
+              "SVG path data: the path's length overflows a double (segment at offset 16)");
+    // One segment longer than a double holds: the path kind refuses it, the parser says where.
+    EXPECT_EQ(error_of("M-1e308 0 L1e308 0").rfind("SVG path data: the segment at offset 11 ", 0), 0u);
 }
 
 TEST(Svg, ErrorsAreThrownForEveryTruncation) {

@@ -483,7 +483,14 @@ ComplexPath parse_svg_path(std::string_view data) {
     drawn.reserve(segments.size());
     double total = 0.0;
     for (const detail::SvgSegment& s : segments) {
-        drawn.push_back(to_path(s));
+        try {
+            drawn.push_back(to_path(s));
+        } catch (const Error& e) {
+            // The parser's checks keep coordinates finite; a kind may still refuse extremes
+            // (a length beyond a double). Say where in the data that segment came from.
+            throw Error("SVG path data: the segment at offset " + std::to_string(s.offset) +
+                        " is not a valid path (" + e.what() + ")");
+        }
         total += drawn.back().length();
         // Cues are length ratios: an infinite length would make them NaN.
         if (!std::isfinite(total)) {
