@@ -380,6 +380,38 @@ TEST(Splines, ReferenceValues) {
     EXPECT_NEAR(grape::CosineSplinePath({0, 0, 1, 0}).point(0.25).x, 0.146446609406726, 1e-15);
 }
 
+TEST(Splines, JoinsAreSmoothAsEachKindPromises) {
+    const std::vector<Vec2> pts{{0, 0}, {30, 40}, {35, 38}, {90, 10}, {100, 100}};
+    const std::vector<Vec2> tangents{{10, 0}, {20, 5}, {-3, 7}, {0, 30}, {5, 5}};
+    const grape::HermiteSplinePath hermite(pts, tangents);
+    const double n = 4.0;  // segments: d/du = n·d/dt
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const double u = static_cast<double>(i) / n;
+        EXPECT_LE(grape::distance(hermite.point(u), pts[i]), 8 * eps * 100);
+        // The tangent is d/dt of the local parameter at the point, on both sides of a join.
+        EXPECT_LE(grape::distance(hermite.d1(u), tangents[i] * n), 64 * eps * 400) << i;
+        if (i > 0 && i + 1 < pts.size()) {
+            // One ulp before the join the previous segment ends: d1 moves by |x″|·ulp ≪ 1e-9·|x′|.
+            const double before = std::nextafter(u, 0.0);
+            EXPECT_LE(grape::distance(hermite.d1(before), tangents[i] * n), 1e-9 * 400) << i;
+        }
+    }
+    for (auto type : {grape::CatmullRom::uniform, grape::CatmullRom::centripetal, grape::CatmullRom::chordal}) {
+        const grape::CatmullRomSplinePath cr(pts, type);
+        for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
+            const double u = static_cast<double>(i) / n;
+            const Vec2 left = cr.d1(std::nextafter(u, 0.0)), right = cr.d1(u);
+            // G1 everywhere: the same direction on both sides (the knot spacing scales the
+            // speed per segment); uniform is C1: the same vector.
+            EXPECT_LE(std::abs(grape::cross(left, right)), 1e-9 * grape::length(left) * grape::length(right)) << i;
+            EXPECT_GT(grape::dot(left, right), 0.0) << i;
+            if (type == grape::CatmullRom::uniform) {
+                EXPECT_LE(grape::distance(left, right), 1e-9 * grape::length(right));
+            }
+        }
+    }
+}
+
 // --- arc-length reparametrization ------------------------------------------------------------
 
 TEST(Reparametrized, ArcLengthErrorBelow1e9ForEveryKind) {
