@@ -17,10 +17,12 @@
 #include <cstdint>
 #include <tweeny/tweeny.h>
 
+#include <algorithm>
 #include <atomic>
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <malloc.h>
 #include <map>
 #include <memory>
 #include <new>
@@ -32,18 +34,17 @@
 namespace {
 std::atomic<long long> live_bytes{0};
 }
+// Counts what malloc really hands out (malloc_usable_size), so both sides of new/delete agree.
 void* operator new(std::size_t size) {
-    void* p = std::malloc(size + 16);
+    void* p = std::malloc(size == 0 ? 1 : size);
     if (!p) throw std::bad_alloc();
-    *static_cast<std::size_t*>(p) = size;
-    live_bytes.fetch_add(static_cast<long long>(size), std::memory_order_relaxed);
-    return static_cast<char*>(p) + 16;
+    live_bytes.fetch_add(static_cast<long long>(malloc_usable_size(p)), std::memory_order_relaxed);
+    return p;
 }
 void operator delete(void* p) noexcept {
     if (!p) return;
-    char* base = static_cast<char*>(p) - 16;
-    live_bytes.fetch_sub(static_cast<long long>(*reinterpret_cast<std::size_t*>(base)), std::memory_order_relaxed);
-    std::free(base);
+    live_bytes.fetch_sub(static_cast<long long>(malloc_usable_size(p)), std::memory_order_relaxed);
+    std::free(p);
 }
 void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
 
@@ -54,8 +55,13 @@ constexpr std::size_t distinct_paths = 1024;
 constexpr double frame = 1.0 / 60.0;
 
 struct Result {
-    double ns_per_update = 0;
+    std::vector<double> ns_per_update;  // one per repetition
     double bytes_per_animation = 0;
+    double median() const {
+        std::vector<double> v = ns_per_update;
+        std::sort(v.begin(), v.end());
+        return v.empty() ? 0.0 : v[v.size() / 2];
+    }
 };
 std::map<std::string, Result> results;  // "name/N"
 
@@ -84,7 +90,7 @@ void run(benchmark::State& state, const char* name, double bytes, Step&& step) {
     state.counters["bytes_per_anim"] = bytes;
     state.SetItemsProcessed(frames * n);
     Result& r = results[key(name, n)];
-    r.ns_per_update = ns;
+    r.ns_per_update.push_back(ns);
     r.bytes_per_animation = bytes;
 }
 
@@ -217,8 +223,10 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     // Summary: updates per second relative to tweeny quad-in-out (higher is better) and to
-    // the floor (1 = as fast as the hand-written loop). Repetitions overwrite: the last run.
-    std::printf("\n%-22s %9s %12s %12s %14s %12s\n", "contender", "N", "ns/update", "bytes/anim",
+    // the floor (1 = as fast as the hand-written loop); medians over repetitions.
+    std::printf("\nengine storage per 2-D animation: %zu bytes (hot + cold + handle slot)\n",
+                grape::Engine::bytes_per_animation());
+    std::printf("%-22s %9s %12s %12s %14s %12s\n", "contender", "N", "ns/update", "bytes/anim",
                 "x tweeny_quad", "floor/this");
     for (std::int64_t n : {1000, 100000, 1000000}) {
         const auto tw = results.find(key("tweeny_quad", n));
@@ -227,10 +235,10 @@ int main(int argc, char** argv) {
                                  "tweeny_quad"}) {
             const auto it = results.find(key(name, n));
             if (it == results.end()) continue;
-            const double r = it->second.ns_per_update;
+            const double r = it->second.median();
             std::printf("%-22s %9lld %12.2f %12.1f %14.2f %12.2f\n", name, static_cast<long long>(n), r,
-                        it->second.bytes_per_animation, tw != results.end() ? tw->second.ns_per_update / r : 0.0,
-                        fl != results.end() ? fl->second.ns_per_update / r : 0.0);
+                        it->second.bytes_per_animation, tw != results.end() ? tw->second.median() / r : 0.0,
+                        fl != results.end() ? fl->second.median() / r : 0.0);
         }
     }
     return 0;

@@ -347,11 +347,11 @@ void EngineImpl::tick(double dt) {
         for (; i < n; ++i) {
             Hot& h = hot[i];
             double phase = h.phase + dt * h.rate;
-            if ((h.flags & (flag_paused | flag_dead | flag_custom | flag_listens)) || !(phase >= 0.0) || !h.target) break;
+            if ((h.flags & (flag_paused | flag_dead | flag_custom)) || !(phase >= 0.0) || !h.target) break;
             if (phase >= play_end) {
                 // A new play that nobody listens for, reached within this tick: handled here.
                 Cold& c = cold[i];
-                if (phase >= 2.0 - snap || (c.plays != 0 && c.play + 1 >= c.plays)) break;
+                if ((h.flags & flag_listens) || phase >= 2.0 - snap || (c.plays != 0 && c.play + 1 >= c.plays)) break;
                 ++c.play;
                 phase = std::max(phase - 1.0, 0.0);
                 if (h.flags & flag_yoyo) h.flags ^= flag_backward;
