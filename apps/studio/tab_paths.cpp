@@ -18,6 +18,8 @@
 #endif
 #ifdef GRAPE_STUDIO_SCENE
 #include <grape/scene.hpp>
+
+#include <nlohmann/json.hpp>
 #endif
 
 #include <algorithm>
@@ -29,8 +31,9 @@ namespace grape::studio {
 
 namespace {
 
-// How an entry's control points rebuild its path.
-enum class Edit { none, quadratic, cubic, linear_spline, cosine_spline, catmull_rom };
+// How an entry's control points rebuild its path. `scene`: through the path's scene JSON,
+// whose "points" are the control points for every kind that has them.
+enum class Edit { none, quadratic, cubic, linear_spline, cosine_spline, catmull_rom, scene };
 
 struct Entry {
     std::string name;
@@ -39,6 +42,7 @@ struct Entry {
     std::vector<Vec2> controls;   // Bézier control points or spline points
     bool reparametrize = false;   // Bézier built by arc length (the seed's flag)
     CatmullRom type = CatmullRom::uniform;
+    std::string json;             // Edit::scene: the path as scene JSON
 };
 
 // A Bézier's control points from its end derivatives (exact: x′(0) = n(p1 − p0),
@@ -56,6 +60,17 @@ Entry entry_from_path(std::string name, const Path& path) {
         e.edit = Edit::cubic;
         e.controls = {p0, p0 + path.d1(0.0) / 3.0, pn - path.d1(1.0) / 3.0, pn};
     }
+#ifdef GRAPE_STUDIO_SCENE
+    else {
+        // Splines (and anything else with points) through the scene format.
+        const nlohmann::json j = nlohmann::json::parse(path_to_json(path));
+        if (j.contains("points") && j["points"].is_array()) {
+            e.edit = Edit::scene;
+            e.json = j.dump();
+            for (const auto& point : j["points"]) e.controls.push_back({point.at(0).get<double>(), point.at(1).get<double>()});
+        }
+    }
+#endif
     return e;
 }
 
@@ -97,6 +112,16 @@ Path rebuild(const Entry& e) {
         case Edit::linear_spline: return LinearSplinePath(e.controls);
         case Edit::cosine_spline: return CosineSplinePath(e.controls);
         case Edit::catmull_rom: return CatmullRomSplinePath(e.controls, e.type);
+        case Edit::scene: {
+#ifdef GRAPE_STUDIO_SCENE
+            nlohmann::json j = nlohmann::json::parse(e.json);
+            j["points"] = nlohmann::json::array();
+            for (Vec2 p : e.controls) j["points"].push_back({p.x, p.y});
+            return path_from_json(j.dump());
+#else
+            break;
+#endif
+        }
         case Edit::none: break;
     }
     return e.path;
