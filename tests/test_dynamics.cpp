@@ -894,6 +894,13 @@ TEST(Errors, BadInputsAreRejectedWithClearMessages) {
     expect_error([&] { system.step(0); }, "step: dt must be positive and finite (got 0)");
     expect_error([&] { system.step(-1); }, "step: dt must be positive");
     expect_error([&] { system.position({42}); }, "position: particle 42 does not exist (2 particles)");
+    expect_error([&] { system.set_position(a, {nan, 0}); }, "set_position: position must be finite");
+    expect_error([&] { system.set_velocity(b, {0, nan}); }, "set_velocity: velocity must be finite");
+    expect_error([&] { system.set_velocity({5}, {0, 0}); }, "set_velocity: particle 5 does not exist");
+    expect_error([&] {
+        std::vector<Vec2> too_few(1);
+        system.evaluate(too_few);
+    }, "evaluate: accelerations must hold one entry per particle (got 1 for 2)");
     expect_error([&] { ImplicitCurve(std::function<CurveSample(Vec2)>{}); }, "ImplicitCurve: evaluate must be a callable");
     expect_error([] { ParticleSystem({.drift = {.omega_dt = 0}}); }, "DriftDef: omega_dt must be positive and finite (got 0)");
     expect_error([] { ParticleSystem({.drift = {.stiffness = -1.0}}); }, "DriftDef: stiffness must be finite and ≥ 0");
