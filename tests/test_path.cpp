@@ -322,6 +322,15 @@ TEST(SeedPaths, ComplexPathsAreContinuousAtEveryCue) {
     }
 }
 
+TEST(SeedPaths, ComplexPathsEndExactlyWhereTheirLastPartEnds) {
+    for (const auto& c : {grape::scenes::seed_complex(), grape::scenes::seed_nested_complex(),
+                          grape::ComplexPath({grape::LinearPath({0, 0}, {1, 1}), grape::LinearPath({1, 1}, {0.3, 0.7})},
+                                             {0, 0.7000000000000001})}) {
+        EXPECT_EQ(c.point(1.0), c.parts().back().point(1.0));
+        EXPECT_EQ(c.point(0.0), c.parts().front().point(0.0));
+    }
+}
+
 TEST(SeedPaths, SplinesPassThroughTheSeedPoints) {
     const auto check = [](const Path& p, const std::array<double, 12>& xy) {
         for (int i = 0; i < 6; ++i) {

@@ -395,26 +395,35 @@ const ComplexNode::Piece& ComplexNode::piece_at(double u) const noexcept {
     return pieces_[i];
 }
 
+namespace {
+
+// The part's own parameter; exactly 1 at the whole's end, whatever (1 − start)/width rounds to.
+double local(double u, double start, double inv_width) noexcept {
+    return u >= 1.0 ? 1.0 : std::clamp((u - start) * inv_width, 0.0, 1.0);
+}
+
+}  // namespace
+
 Vec2 ComplexNode::point(double u) const noexcept {
     const Piece& p = piece_at(u);
-    return p.node->point(std::clamp((u - p.start) * p.inv_width, 0.0, 1.0));
+    return p.node->point(local(u, p.start, p.inv_width));
 }
 
 Vec2 ComplexNode::d1(double u) const noexcept {
     const Piece& p = piece_at(u);  // chain rule: d/du = d/dv · dv/du, dv/du = 1/width
-    return p.node->d1(std::clamp((u - p.start) * p.inv_width, 0.0, 1.0)) * p.inv_width;
+    return p.node->d1(local(u, p.start, p.inv_width)) * p.inv_width;
 }
 
 Vec2 ComplexNode::d2(double u) const noexcept {
     const Piece& p = piece_at(u);
-    return p.node->d2(std::clamp((u - p.start) * p.inv_width, 0.0, 1.0)) * (p.inv_width * p.inv_width);
+    return p.node->d2(local(u, p.start, p.inv_width)) * (p.inv_width * p.inv_width);
 }
 
 double ComplexNode::length_at(double u) const noexcept {
     if (!(u > 0.0)) return 0.0;
     if (u >= 1.0) return pieces_.back().s0 + pieces_.back().node->length();
     const Piece& p = piece_at(u);
-    return p.s0 + p.node->length_at(std::clamp((u - p.start) * p.inv_width, 0.0, 1.0));
+    return p.s0 + p.node->length_at(local(u, p.start, p.inv_width));
 }
 
 Bounds ComplexNode::compute_bounds() const {
