@@ -224,8 +224,25 @@ inline double EngineImpl::ease(CurveKind kind, std::uint16_t curve, double x) co
         case CurveKind::cubic_in: return ease::cubic_in(x);
         case CurveKind::cubic_out: return ease::cubic_out(x);
         case CurveKind::cubic_in_out: return ease::cubic_in_out(x);
+        case CurveKind::quart_in: return ease::quart_in(x);
+        case CurveKind::quart_out: return ease::quart_out(x);
+        case CurveKind::quart_in_out: return ease::quart_in_out(x);
+        case CurveKind::quint_in: return ease::quint_in(x);
+        case CurveKind::quint_out: return ease::quint_out(x);
+        case CurveKind::quint_in_out: return ease::quint_in_out(x);
+        case CurveKind::sine_in: return ease::sine_in(x);
+        case CurveKind::sine_out: return ease::sine_out(x);
         case CurveKind::sine_in_out: return ease::sine_in_out(x);
-        default: return curves_[curve].curve(x);
+        case CurveKind::expo_in: return ease::expo_in(x);
+        case CurveKind::expo_out: return ease::expo_out(x);
+        case CurveKind::expo_in_out: return ease::expo_in_out(x);
+        case CurveKind::circ_in: return ease::circ_in(x);
+        case CurveKind::circ_out: return ease::circ_out(x);
+        case CurveKind::circ_in_out: return ease::circ_in_out(x);
+        case CurveKind::bounce_in: return ease::bounce_in(x);
+        case CurveKind::bounce_out: return ease::bounce_out(x);
+        case CurveKind::bounce_in_out: return ease::bounce_in_out(x);
+        default: return curves_[curve].curve(x);  // the kinds with parameters
     }
 }
 
