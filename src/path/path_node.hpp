@@ -50,14 +50,16 @@ public:
     virtual void append_flattened(double tolerance, std::vector<Vec2>& out) const;
 
     /// Fills the caches (length, bounds, breaks); make_node calls it once after construction,
-    /// because the base constructor cannot call the derived evaluation.
+    /// because the base constructor cannot call the derived evaluation. Throws grape::Error
+    /// when the length overflows a double.
     void finish();
 
 protected:
     explicit PathNode(PathKind kind) noexcept : kind_(kind) {}
 
-    /// Interior parameters in (0, 1), increasing, where the node may be non-smooth
-    /// (segment joins of splines, parts of complex paths). Default: none.
+    /// Appends the interior parameters in (0, 1), increasing and after out.back() (out
+    /// starts as {0}), where the node may be non-smooth: spline joins, complex-path cues,
+    /// cusps (zero speed, a kink in |x′| that quadrature must not straddle). Default: none.
     virtual void interior_breaks(std::vector<double>& out) const;
     /// True when length_at is a closed form (then finish() takes length_at(1) as the
     /// length); otherwise the length comes from adaptive Gauss–Legendre per piece.
