@@ -847,6 +847,20 @@ TEST(BeadOnPath, OpenEndsStopOrBounce) {
     EXPECT_EQ(hanging.position(), (Vec2{0, 100}));
 }
 
+TEST(BeadOnPath, ReparametrizedPolylineCarriesTheSpeedThroughCorners) {
+    // A polyline's own parameter speed jumps ×3 at its corner (segments of 100 and 300 px share
+    // u evenly); at constant |x′| the bead keeps 50 px/s: after 4 s it is 200 px along.
+    const std::vector<Vec2> points{{0, 0}, {100, 0}, {100, 300}};
+    const Path polyline = LinearSplinePath(points).reparametrized();
+    Bead bead(polyline, {.u = 0.0, .speed = 50});
+    for (int i = 0; i < 240; ++i) bead.step(1.0 / 60);
+    // The reparametrization holds arc length to 1e-9 of the length (4e-7 px here) and |x′|
+    // to the same relative accuracy.
+    EXPECT_NEAR(bead.position().x, 100, 1e-6);
+    EXPECT_NEAR(bead.position().y, 100, 1e-6);
+    EXPECT_NEAR(std::abs(bead.speed()), 50, 50 * 1e-8);
+}
+
 TEST(BeadOnPath, ClosedPathsWrapAround) {
     // A full circle without gravity: constant speed, and after 2.5 turns the bead is opposite
     // its start.

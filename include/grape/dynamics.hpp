@@ -470,7 +470,9 @@ struct BeadDef {
 /// On a grape::Path u runs over [0, 1]; at each join of a ComplexPath (top level) the bead
 /// moves to the next part keeping its speed along the path; a closed path (end point equal
 /// to start point) wraps around; open ends stop or bounce (BeadDef::ends). On a user curve
-/// u is unbounded.
+/// u is unbounded. Inside one part u̇ is continuous, so where a path's own parametrization
+/// has kinks or stops (LinearSplinePath corners, CosineSplinePath points, where x′ jumps or
+/// vanishes) use path.reparametrized(): at constant |x′| the speed carries through.
 class Bead {
 public:
     /// On any path. Throws grape::Error for a bad BeadDef (non-finite values, mass ≤ 0,
