@@ -173,6 +173,18 @@ public:
         }
         ImGui::Text("kind: %s   length: %.1f", std::string(to_string(entries_[current_].path.kind())).c_str(),
                     entries_[current_].path.length());
+        // Paths drawn in any vector editor: SVG path data becomes a complex path.
+        if (ImGui::InputText("SVG path", svg_edit_, sizeof svg_edit_, ImGuiInputTextFlags_EnterReturnsTrue) |
+            ImGui::SmallButton("Add SVG path")) {
+            try {
+                entries_.push_back(entry_from_path("svg_" + std::to_string(++svg_count_), parse_svg_path(svg_edit_)));
+                svg_error_.clear();
+                select(entries_.size() - 1);
+            } catch (const Error& err) {
+                svg_error_ = err.what();
+            }
+        }
+        if (!svg_error_.empty()) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1.0f}, "%s", svg_error_.c_str());
 
         ImGui::Separator();
         ImGui::TextUnformatted("Curve");
@@ -267,7 +279,8 @@ public:
 
     void report(std::ostream& out) const override {
         const Entry& e = entries_[current_];
-        out << "path: " << e.name << "\ncurve: " << curve_text_ << "\narc_length: " << arc_length_ << "\n";
+        out << "path: " << e.name << "\nkind: " << to_string(e.path.kind()) << "\nlength: " << e.path.length()
+            << "\ncurve: " << curve_text_ << "\narc_length: " << arc_length_ << "\n";
         for (std::size_t i = 0; i < e.controls.size(); ++i)
             out << "control_" << i << ": " << e.controls[i].x << ' ' << e.controls[i].y << "\ncontrol_" << i
                 << "_screen: " << screen_offset_.x + e.controls[i].x * screen_scale_ << ' '
@@ -482,6 +495,9 @@ private:
     char curve_edit_[128] = "cubic-bezier(0.3,0,0.2,1)";
     std::string curve_error_;
     std::string edit_error_;
+    char svg_edit_[512] = "M 20 80 C 60 0 140 0 180 80 S 300 160 340 80 A 40 40 0 0 1 420 80";
+    std::string svg_error_;
+    int svg_count_ = 0;
     float duration_ = 3.0f;
     int repeat_ = -1;
     bool reversed_ = false;
