@@ -74,7 +74,7 @@ function run(mode, n) {
   const ns = ((t1.user + t1.system) * 1000) / (frames * n);
   if (!Number.isFinite(targets[n - 1].x)) throw new Error('no motion');
   console.log(`gsap_${mode.padEnd(13)} N=${String(n).padStart(8)}  ns/update ${ns.toFixed(1).padStart(8)}  bytes/tween ${bytes.toFixed(0).padStart(6)}`);
-  for (const t of tweens) t.kill();
+  gsap.globalTimeline.clear();  // drop this run's tweens at once (killing 1e6 one by one crawls)
 }
 
 console.log(`GSAP ${gsap.version}, Node ${process.version}`);
