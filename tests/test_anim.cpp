@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <new>
 #include <random>
 #include <string>
@@ -419,6 +420,24 @@ TEST(Engine, PropertyAnimationsDriveAnyFloatOrDoubleMembers) {
               std::string::npos);
 }
 
+TEST(Engine, NumberAnimationsReportTheirValuesToACallback) {
+    Engine engine;
+    std::vector<double> last;
+    const grape::PathND keys(2, std::vector<double>{0, 10, 1, 20, 3, 40});  // two keyframe segments
+    Animation a = engine.create_animation(keys, 2.0, {.delay = 0.5}, [&](std::span<const double> v) {
+        last.assign(v.begin(), v.end());
+    });
+    ASSERT_EQ(a.values().size(), 2u);
+    EXPECT_EQ(a.values()[0], 0.0);  // the start values, readable while waiting
+    engine.tick(0.25);
+    EXPECT_TRUE(last.empty());      // nothing delivered during the delay
+    engine.tick(1.75);              // 1.5 s into the play: u = 0.75, half way through segment 2
+    ASSERT_EQ(last.size(), 2u);
+    EXPECT_NEAR(last[0], 2.0, 1e-14);
+    EXPECT_NEAR(last[1], 30.0, 1e-13);
+    EXPECT_EQ(a.value(), Vec2{});   // not a 2-D animation
+}
+
 TEST(Engine, CallbackAnimationsAndHeading) {
     Engine engine;
     const grape::CirclePath circle({0, 0}, 1.0, 0.0, grape::pi);
@@ -451,6 +470,17 @@ TEST(Engine, BadArgumentsAreNamed) {
     EXPECT_NE(error_of([&] { engine.create_2d_animation(p, line, 1.0, {.repeat = -2}); }).find("repeat must be >= 0, or -1"),
               std::string::npos);
     EXPECT_NE(error_of([&] { engine.create_2d_animation(p, line, 1.0, {.time_scale = NAN}); }).find("time_scale must be"),
+              std::string::npos);
+    struct Far {
+        double x = 0;
+        char gap[40000] = {};
+        double y = 0;
+    };
+    auto far = std::make_unique<Far>();
+    EXPECT_NE(error_of([&] { engine.create_2d_animation(*far, line, 1.0); }).find("must lie within 32 KiB of each other"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] { engine.create_animation(grape::PathND(std::vector<double>{0}, std::vector<double>{1}), -1.0); })
+                  .find("create_animation: duration must be positive"),
               std::string::npos);
     EXPECT_NE(error_of([&] { engine.tick(-0.1); }).find("dt must be finite and >= 0 (got -0.1)"), std::string::npos);
     EXPECT_NE(error_of([&] { engine.tick(INFINITY); }).find("dt must be finite"), std::string::npos);
