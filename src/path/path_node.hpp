@@ -157,8 +157,9 @@ public:
 
     /// The source parameter v at which the arc length is u·length(), u in [0, 1].
     double source_u(double u) const noexcept {
+        if (u >= 1.0) return 1.0;  // the ends are exact: animations land on the end point
         const double s = std::clamp(u, 0.0, 1.0) * length();
-        if (!(s > 0.0)) return spans_.front().v0;  // also catches NaN
+        if (!(s > 0.0)) return 0.0;  // also catches NaN
         std::size_t b = static_cast<std::size_t>(s * bucket_scale_);
         if (b >= buckets_.size()) b = buckets_.size() - 1;
         std::size_t i = buckets_[b];
