@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -203,6 +205,25 @@ TEST(FindRoot, RootAtAnEndAndReversedBracket) {
         with_derivative([](double x) { return 2.0 - x * x; }, [](double x) { return -2.0 * x; }), 2.0, 0.0, 1.0);
     EXPECT_TRUE(rev.converged);
     EXPECT_NEAR(rev.x, std::sqrt(2.0), 2 * eps);
+}
+
+// An integrand whose rounding noise (~1e-13 relative, far above a 1e-20 target) can never
+// satisfy the error test: the noise floor must stop the bisection instead of running it to
+// max_depth on every branch (2^40 intervals, which never finishes).
+TEST(Integrate, NoisyIntegrandStopsAtTheNoiseFloor) {
+    long evaluations = 0;
+    auto noisy = [&evaluations](double x) {
+        ++evaluations;
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &x, sizeof bits);
+        bits *= 0x9E3779B97F4A7C15ull;  // a hash of x: deterministic, not smooth
+        return 1.0 + 1e-13 * (static_cast<double>(bits >> 11) * 0x1.0p-53 - 0.5);
+    };
+    const double value = grape::integrate(noisy, 0.0, 1.0, 1e-20, 40);
+    // The noise averages to within 1e-13 of its mean: the integral is 1 to that bound.
+    EXPECT_NEAR(value, 1.0, 1e-13);
+    // At most the 2^16-interval work bound times two 10-point rules per split.
+    EXPECT_LE(evaluations, 20L * (1L << 16) + 10);
 }
 
 }  // namespace

@@ -793,4 +793,15 @@ TEST(PathErrors, EveryBadInputNamesTheArgumentAndReason) {
     EXPECT_ERROR(grape::PathND(1, with_nan), "PathND: keyframes[1] must be finite (got nan)");
 }
 
+// A part squeezed into a span of 1e-160: its chain-rule factor 1/width² (1e320) overflows a
+// double, but d2 must stay finite (exactly 0 for a straight part) and d1 exact.
+TEST(ComplexPath, TinySpansKeepDerivativesFinite) {
+    const grape::ComplexPath c({grape::LinearPath({0, 0}, {1, 0}), grape::LinearPath({1, 0}, {2, 0})},
+                               {0, 1e-160});
+    const Vec2 d2 = c.d2(0.5e-160);
+    EXPECT_EQ(d2.x, 0.0);
+    EXPECT_EQ(d2.y, 0.0);
+    EXPECT_TRUE(grape::is_finite(c.d1(0.5e-160)));
+}
+
 }  // namespace

@@ -521,4 +521,24 @@ TEST(Svg, RandomValidDataParsesIntoContinuousSubpaths) {
     }
 }
 
+// A flat arc of a huge ellipse (rx 25625, ry 1e8, chord 22): its speed's rounding noise is
+// above the quadrature target, which once made the length computation run forever. Reference:
+// the arc is x = rx·sin t, y = ry·(1 − cos t)-like around the top, t in [−t0, t0] with
+// sin t0 = 11/rx; composite Simpson over 4000 intervals of this smooth speed is good to ~1e-15
+// relative. The speed itself is only known to ~5e-13 relative (cancellation in the arc's
+// centre, 1e8 away), hence 1e-12.
+TEST(Svg, HugeFlatEllipseArcParsesQuickly) {
+    const ComplexPath p = parse_svg_path("M0 0 A 25625 100000000 0 0 1 22 0");
+    const double rx = 25625.0;
+    const double ry = 1e8;
+    const double t0 = std::asin(11.0 / rx);
+    auto speed = [&](double t) { return std::hypot(rx * std::cos(t), ry * std::sin(t)); };
+    const int n = 4000;
+    const double h = 2.0 * t0 / n;
+    double sum = speed(-t0) + speed(t0);
+    for (int k = 1; k < n; ++k) sum += (k % 2 ? 4.0 : 2.0) * speed(-t0 + k * h);
+    const double reference = sum * h / 3.0;
+    EXPECT_NEAR(p.length(), reference, 1e-12 * reference);
+}
+
 }  // namespace

@@ -416,7 +416,8 @@ Vec2 ComplexNode::d1(double u) const noexcept {
 
 Vec2 ComplexNode::d2(double u) const noexcept {
     const Piece& p = piece_at(u);
-    return p.node->d2(local(u, p.start, p.inv_width)) * (p.inv_width * p.inv_width);
+    // Scaled in two steps: inv_width² alone overflows for spans under ~1e-154.
+    return (p.node->d2(local(u, p.start, p.inv_width)) * p.inv_width) * p.inv_width;
 }
 
 double ComplexNode::length_at(double u) const noexcept {
