@@ -589,11 +589,8 @@ TEST(SceneAnimation, AgreesWithTheEngine) {
                                   "steps(4,jump-end)"});
 }
 
-// Disabled: the anim engine (src/anim/engine.cpp, EngineImpl::ease) plays the parameter-free
-// Penner curves it does not inline (quart, quint, sine-in/out, expo, circ, bounce) through
-// curves_[0] instead of their own formula, so a bounce-in-out animation moves linearly.
-// Enable once the engine evaluates every curve kind.
-TEST(SceneAnimation, DISABLED_AgreesWithTheEngineForEveryNamedCurve) {
+// Every named curve, played by a scene and by the engine, gives the same positions.
+TEST(SceneAnimation, AgreesWithTheEngineForEveryNamedCurve) {
     const auto names = grape::curve_names();
     expect_agreement_with_engine({names.begin(), names.end()});
 }
