@@ -4,6 +4,8 @@
 // so the constraints still decide how the rest follows).
 #include "studio.hpp"
 
+#include <SDL.h>
+
 #include <seed_dynamics.hpp>
 
 #include <grape/dynamics.hpp>
@@ -72,6 +74,12 @@ public:
 
     const char* name() const noexcept override { return "chain"; }
     const char* title() const noexcept override { return "Chain"; }
+
+    void on_event(const SDL_Event& e) override {
+        // Space runs and pauses, unless a text field has the keyboard.
+        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
+            running_ = !running_;
+    }
 
     void advance(double dt) override {
         if (!running_) return;

@@ -6,6 +6,8 @@
 // particle to choose a new start point.
 #include "studio.hpp"
 
+#include <SDL.h>
+
 #include <seed_dynamics.hpp>
 
 #include <grape/dynamics.hpp>
@@ -49,6 +51,12 @@ public:
 
     const char* name() const noexcept override { return "constraint"; }
     const char* title() const noexcept override { return "Constraint"; }
+
+    void on_event(const SDL_Event& e) override {
+        // Space runs and pauses, unless a text field has the keyboard.
+        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
+            running_ = !running_;
+    }
 
     void advance(double dt) override {
         if (!running_ || dragging_ >= 0) return;

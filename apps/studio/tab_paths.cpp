@@ -13,14 +13,14 @@
 #include <grape/path.hpp>
 #ifdef GRAPE_STUDIO_RENDER
 #include <grape/render.hpp>
-
-#include <SDL.h>
 #endif
 #ifdef GRAPE_STUDIO_SCENE
 #include <grape/scene.hpp>
 
 #include <nlohmann/json.hpp>
 #endif
+
+#include <SDL.h>
 
 #include <algorithm>
 #include <cmath>
@@ -156,6 +156,12 @@ public:
         renderer_ = nullptr;
     }
 #endif
+
+    void on_event(const SDL_Event& e) override {
+        // Space runs and pauses, unless a text field has the keyboard.
+        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
+            playing_ = !playing_;
+    }
 
     void advance(double dt) override {
         if (playing_) engine_.tick(dt);

@@ -69,6 +69,12 @@ public:
         sheet_texture_ = nullptr;
     }
 
+    void on_event(const SDL_Event& e) override {
+        // Space runs and pauses, unless a text field has the keyboard.
+        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
+            running_ = !running_;
+    }
+
     void advance(double dt) override {
         if (!running_) return;
         if (per_frame_) {
@@ -161,7 +167,7 @@ public:
 
     void report(std::ostream& out) const override {
         out << "rate: " << sheet_player_.rate() << "\nsheet_frame: " << sprite_.current_frame()
-            << "\nlist_frame: " << list_.shown << "\n";
+            << "\nlist_frame: " << list_.shown << "\nrunning: " << running_ << "\n";
     }
 
 private:
