@@ -388,7 +388,7 @@ TEST(SceneErrors, NameThePointerAndTheReason) {
                                               {"kind": "linear", "start": [1, 0], "end": [2, 0]},
                                               {"kind": "linear", "start": [2, 0], "end": [3, 0]}],
                   "cues": [0, 0.6, 0.5]}, "duration": 1}]})",
-                 "/animations/3/path/cues/2", "cues must not decrease (0.5 after 0.59999999999999998)");
+                 "/animations/3/path/cues/2", "cues must not decrease (0.5 after 0.6)");
     const std::string line = R"({"kind": "linear", "start": [0, 0], "end": [1, 0]})";
     const auto anim = [&](const std::string& fields) { return R"({"animations": [{"path": )" + line + ", " + fields + "}]}"; };
     expect_error(anim(R"("duration": -1)"), "/animations/0/duration", "must be positive (got -1)");

@@ -1,6 +1,7 @@
 // grape — error type shared by every module.
 #pragma once
 
+#include <charconv>
 #include <stdexcept>
 #include <string>
 
@@ -13,5 +14,14 @@ class Error : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+namespace detail {
+/// A number as error messages quote it: the shortest text that reads back as the same double.
+inline std::string number_text(double value) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+}  // namespace detail
 
 }  // namespace grape

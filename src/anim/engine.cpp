@@ -22,11 +22,7 @@ constexpr std::uint32_t free_bit = 0x80000000u;
 constexpr double snap = 1e-9;
 constexpr double play_end = 1.0 - snap;
 
-std::string number_text(double v) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, result.ptr);
-}
+using detail::number_text;
 
 bool parameter_free(CurveKind k) noexcept {
     return k <= CurveKind::bounce_in_out && !(k >= CurveKind::back_in && k <= CurveKind::elastic_in_out);

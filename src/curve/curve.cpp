@@ -124,11 +124,7 @@ constexpr std::array<std::string_view, 4> position_names{"jump-start", "jump-end
 bool is_back(CurveKind k) noexcept { return k >= CurveKind::back_in && k <= CurveKind::back_in_out; }
 bool is_elastic(CurveKind k) noexcept { return k >= CurveKind::elastic_in && k <= CurveKind::elastic_in_out; }
 
-std::string number_text(double v) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, result.ptr);
-}
+using detail::number_text;
 
 void check_finite(std::string_view where, std::string_view what, double v) {
     if (!std::isfinite(v))

@@ -11,12 +11,7 @@
 namespace grape {
 
 namespace {
-std::string num(double value) {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-}
+using detail::number_text;
 }  // namespace
 
 class Bead::Ode final : public SecondOrderSystem {
@@ -43,18 +38,18 @@ Bead::Bead(ParametricCurve curve, const BeadDef& def) {
 }
 
 void Bead::init_parts(std::vector<Part> parts, const BeadDef& def) {
-    if (!std::isfinite(def.u)) throw Error("BeadDef: u must be finite (got " + num(def.u) + ")");
+    if (!std::isfinite(def.u)) throw Error("BeadDef: u must be finite (got " + number_text(def.u) + ")");
     if (bounded_ && !(def.u >= 0.0 && def.u <= 1.0))
-        throw Error("BeadDef: u must be in [0, 1] on a path (got " + num(def.u) + ")");
-    if (!std::isfinite(def.speed)) throw Error("BeadDef: speed must be finite (got " + num(def.speed) + ")");
+        throw Error("BeadDef: u must be in [0, 1] on a path (got " + number_text(def.u) + ")");
+    if (!std::isfinite(def.speed)) throw Error("BeadDef: speed must be finite (got " + number_text(def.speed) + ")");
     if (!(def.mass > 0.0) || !std::isfinite(def.mass))
-        throw Error("BeadDef: mass must be positive and finite (got " + num(def.mass) + ")");
+        throw Error("BeadDef: mass must be positive and finite (got " + number_text(def.mass) + ")");
     if (!std::isfinite(def.gravity.x) || !std::isfinite(def.gravity.y))
-        throw Error("BeadDef: gravity must be finite (got " + num(def.gravity.x) + ", " + num(def.gravity.y) + ")");
+        throw Error("BeadDef: gravity must be finite (got " + number_text(def.gravity.x) + ", " + number_text(def.gravity.y) + ")");
     if (!(def.drag >= 0.0) || !std::isfinite(def.drag))
-        throw Error("BeadDef: drag must be finite and ≥ 0 (got " + num(def.drag) + ")");
+        throw Error("BeadDef: drag must be finite and ≥ 0 (got " + number_text(def.drag) + ")");
     if (!(def.restitution >= 0.0 && def.restitution <= 1.0))
-        throw Error("BeadDef: restitution must be in [0, 1] (got " + num(def.restitution) + ")");
+        throw Error("BeadDef: restitution must be in [0, 1] (got " + number_text(def.restitution) + ")");
     def_ = def;
     stepper_ = Stepper(def.integrator, def.rk45);
     parts_ = std::move(parts);
@@ -133,7 +128,7 @@ void Bead::transfer(double speed, int direction) {
 }
 
 StepStats Bead::step(double dt) {
-    if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("Bead::step: dt must be positive and finite (got " + num(dt) + ")");
+    if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("Bead::step: dt must be positive and finite (got " + number_text(dt) + ")");
     StepStats total;
     auto add = [&total](const StepStats& s) {
         total.evaluations += s.evaluations;

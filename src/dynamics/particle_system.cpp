@@ -9,27 +9,22 @@ namespace grape {
 
 namespace {
 
-std::string num(double value) {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-}
+using detail::number_text;
 
 bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 void validate(const DriftDef& d) {
     if (!(d.omega_dt > 0.0) || !std::isfinite(d.omega_dt))
-        throw Error("DriftDef: omega_dt must be positive and finite (got " + num(d.omega_dt) + ")");
+        throw Error("DriftDef: omega_dt must be positive and finite (got " + number_text(d.omega_dt) + ")");
     if (d.stiffness && (!(*d.stiffness >= 0.0) || !std::isfinite(*d.stiffness)))
-        throw Error("DriftDef: stiffness must be finite and ≥ 0 (got " + num(*d.stiffness) + ")");
+        throw Error("DriftDef: stiffness must be finite and ≥ 0 (got " + number_text(*d.stiffness) + ")");
     if (d.damping && (!(*d.damping >= 0.0) || !std::isfinite(*d.damping)))
-        throw Error("DriftDef: damping must be finite and ≥ 0 (got " + num(*d.damping) + ")");
+        throw Error("DriftDef: damping must be finite and ≥ 0 (got " + number_text(*d.damping) + ")");
     if (d.projection_iterations < 1)
         throw Error("DriftDef: projection_iterations must be at least 1 (got " +
                     std::to_string(d.projection_iterations) + ")");
     if (!(d.projection_tolerance >= 0.0) || !std::isfinite(d.projection_tolerance))
-        throw Error("DriftDef: projection_tolerance must be finite and ≥ 0 (got " + num(d.projection_tolerance) + ")");
+        throw Error("DriftDef: projection_tolerance must be finite and ≥ 0 (got " + number_text(d.projection_tolerance) + ")");
 }
 
 }  // namespace
@@ -66,7 +61,7 @@ ParticleSystem::ParticleSystem(ParticleSystemDef def)
     : def_(def), stepper_(def.integrator, def.rk45), solver_(std::make_unique<detail::SolverWorkspace>()) {
     validate(def.drift);
     if (!(def.solver.cg_tolerance > 0.0) || !std::isfinite(def.solver.cg_tolerance))
-        throw Error("SolverDef: cg_tolerance must be positive and finite (got " + num(def.solver.cg_tolerance) + ")");
+        throw Error("SolverDef: cg_tolerance must be positive and finite (got " + number_text(def.solver.cg_tolerance) + ")");
     if (def.solver.cg_max_iterations < 0)
         throw Error("SolverDef: cg_max_iterations must be ≥ 0 (got " + std::to_string(def.solver.cg_max_iterations) + ")");
 }
@@ -77,11 +72,11 @@ ParticleSystem& ParticleSystem::operator=(ParticleSystem&&) noexcept = default;
 
 ParticleId ParticleSystem::add_particle(const ParticleDef& def) {
     if (!finite(def.position))
-        throw Error("add_particle: position must be finite (got " + num(def.position.x) + ", " + num(def.position.y) + ")");
+        throw Error("add_particle: position must be finite (got " + number_text(def.position.x) + ", " + number_text(def.position.y) + ")");
     if (!finite(def.velocity))
-        throw Error("add_particle: velocity must be finite (got " + num(def.velocity.x) + ", " + num(def.velocity.y) + ")");
+        throw Error("add_particle: velocity must be finite (got " + number_text(def.velocity.x) + ", " + number_text(def.velocity.y) + ")");
     if (!(def.mass > 0.0))
-        throw Error("add_particle: mass must be positive, or infinity to pin (got " + num(def.mass) + ")");
+        throw Error("add_particle: mass must be positive, or infinity to pin (got " + number_text(def.mass) + ")");
     const bool pinned = std::isinf(def.mass);
     positions_.push_back(def.position);
     velocities_.push_back(pinned ? Vec2{} : def.velocity);
@@ -121,18 +116,18 @@ void ParticleSystem::set_velocity(ParticleId id, Vec2 velocity) {
 
 void ParticleSystem::exert_force(ParticleId id, Vec2 force) {
     const auto i = checked(id, "exert_force");
-    if (!finite(force)) throw Error("exert_force: force must be finite (got " + num(force.x) + ", " + num(force.y) + ")");
+    if (!finite(force)) throw Error("exert_force: force must be finite (got " + number_text(force.x) + ", " + number_text(force.y) + ")");
     exerted_[i] += force;
 }
 
 void ParticleSystem::add_gravity(Vec2 g) {
-    if (!finite(g)) throw Error("add_gravity: g must be finite (got " + num(g.x) + ", " + num(g.y) + ")");
+    if (!finite(g)) throw Error("add_gravity: g must be finite (got " + number_text(g.x) + ", " + number_text(g.y) + ")");
     generators_.push_back({GeneratorKind::gravity, static_cast<std::uint32_t>(gravities_.size())});
     gravities_.push_back({g});
 }
 
 void ParticleSystem::add_drag(double k) {
-    if (!(k >= 0.0) || !std::isfinite(k)) throw Error("add_drag: k must be finite and ≥ 0 (got " + num(k) + ")");
+    if (!(k >= 0.0) || !std::isfinite(k)) throw Error("add_drag: k must be finite and ≥ 0 (got " + number_text(k) + ")");
     generators_.push_back({GeneratorKind::drag, static_cast<std::uint32_t>(drags_.size())});
     drags_.push_back({k});
 }
@@ -141,11 +136,11 @@ void ParticleSystem::add_spring(ParticleId a, ParticleId b, const SpringDef& def
     const auto ia = checked(a, "add_spring"), ib = checked(b, "add_spring");
     if (ia == ib) throw Error("add_spring: a and b must be different particles (both " + std::to_string(ia) + ")");
     if (!(def.rest_length >= 0.0) || !std::isfinite(def.rest_length))
-        throw Error("add_spring: rest_length must be finite and ≥ 0 (got " + num(def.rest_length) + ")");
+        throw Error("add_spring: rest_length must be finite and ≥ 0 (got " + number_text(def.rest_length) + ")");
     if (!(def.stiffness >= 0.0) || !std::isfinite(def.stiffness))
-        throw Error("add_spring: stiffness must be finite and ≥ 0 (got " + num(def.stiffness) + ")");
+        throw Error("add_spring: stiffness must be finite and ≥ 0 (got " + number_text(def.stiffness) + ")");
     if (!(def.damping >= 0.0) || !std::isfinite(def.damping))
-        throw Error("add_spring: damping must be finite and ≥ 0 (got " + num(def.damping) + ")");
+        throw Error("add_spring: damping must be finite and ≥ 0 (got " + number_text(def.damping) + ")");
     generators_.push_back({GeneratorKind::spring, static_cast<std::uint32_t>(springs_.size())});
     springs_.push_back({ia, ib, def});
 }
@@ -166,7 +161,7 @@ ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b, double len
     const auto ia = checked(a, "add_distance"), ib = checked(b, "add_distance");
     if (ia == ib) throw Error("add_distance: a and b must be different particles (both " + std::to_string(ia) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
-        throw Error("add_distance: length must be positive and finite (got " + num(length) + ")");
+        throw Error("add_distance: length must be positive and finite (got " + number_text(length) + ")");
     return push_constraint({ConstraintKind::distance, ia, ib, {}, length, 0});
 }
 
@@ -177,15 +172,15 @@ ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b) {
 
 ConstraintId ParticleSystem::add_anchor(ParticleId a, Vec2 anchor, double length) {
     const auto ia = checked(a, "add_anchor");
-    if (!finite(anchor)) throw Error("add_anchor: anchor must be finite (got " + num(anchor.x) + ", " + num(anchor.y) + ")");
+    if (!finite(anchor)) throw Error("add_anchor: anchor must be finite (got " + number_text(anchor.x) + ", " + number_text(anchor.y) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
-        throw Error("add_anchor: length must be positive and finite (got " + num(length) + ")");
+        throw Error("add_anchor: length must be positive and finite (got " + number_text(length) + ")");
     return push_constraint({ConstraintKind::anchor, ia, 0, anchor, length, 0});
 }
 
 ConstraintId ParticleSystem::add_fixed_point(ParticleId a, Vec2 point) {
     const auto ia = checked(a, "add_fixed_point");
-    if (!finite(point)) throw Error("add_fixed_point: point must be finite (got " + num(point.x) + ", " + num(point.y) + ")");
+    if (!finite(point)) throw Error("add_fixed_point: point must be finite (got " + number_text(point.x) + ", " + number_text(point.y) + ")");
     return push_constraint({ConstraintKind::fixed_point, ia, 0, point, 0.0, 0});
 }
 
@@ -248,7 +243,7 @@ void ParticleSystem::apply_forces(double t, std::span<const Vec2> x, std::span<c
 }
 
 StepReport ParticleSystem::step(double dt) {
-    if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("step: dt must be positive and finite (got " + num(dt) + ")");
+    if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("step: dt must be positive and finite (got " + number_text(dt) + ")");
     auto& s = *solver_;
     s.prepare(*this, dt);
     const std::span<double> q(reinterpret_cast<double*>(positions_.data()), 2 * positions_.size());

@@ -14,11 +14,7 @@ namespace {
 
 using detail::make_node;
 
-std::string text(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", v);
-    return buffer;
-}
+std::string text(double v) { return detail::number_text(v); }
 
 std::string text(Vec2 v) { return "(" + text(v.x) + ", " + text(v.y) + ")"; }
 

@@ -48,11 +48,7 @@ struct CanvasState {
 
 namespace {
 
-std::string number_text(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", v);
-    return buffer;
-}
+using detail::number_text;
 
 void check_size(const char* what, double width, double height) {
     const auto ok = [](double v) { return std::isfinite(v) && v >= 1.0 && v <= 32768.0; };
