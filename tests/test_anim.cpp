@@ -8,6 +8,8 @@
 #include "seed_animations.hpp"
 #include "seed_paths.hpp"
 
+#include "error_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -77,14 +79,7 @@ Vec2 expected_state(const grape::Path& path, double duration, const AnimationDef
     return path.point(def.curve(backward ? 1.0 - x : x));
 }
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const grape::Error& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
+using grape::testing::error_text;
 
 }  // namespace
 
@@ -415,7 +410,7 @@ TEST(Engine, PropertyAnimationsDriveAnyFloatOrDoubleMembers) {
     EXPECT_EQ(w.unrelated, 7);
     ASSERT_EQ(a.values().size(), 3u);
     EXPECT_NEAR(a.values()[2], 125.0, 1e-13);
-    EXPECT_NE(error_of([&] { engine.create_property_animation(w, {&Widget::alpha}, {0, 1}, {1, 2}, 1.0); })
+    EXPECT_NE(error_text([&] { engine.create_property_animation(w, {&Widget::alpha}, {0, 1}, {1, 2}, 1.0); })
                   .find("members and values must match (1 members, 2 values)"),
               std::string::npos);
 }
@@ -463,13 +458,13 @@ TEST(Engine, BadArgumentsAreNamed) {
     Engine engine;
     Point p;
     const grape::LinearPath line({0, 0}, {1, 0});
-    EXPECT_NE(error_of([&] { engine.create_2d_animation(p, line, 0.0); }).find("duration must be positive and finite (got 0)"),
+    EXPECT_NE(error_text([&] { engine.create_2d_animation(p, line, 0.0); }).find("duration must be positive and finite (got 0)"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { engine.create_2d_animation(p, line, 1.0, {.delay = -1}); }).find("delay must be >= 0"),
+    EXPECT_NE(error_text([&] { engine.create_2d_animation(p, line, 1.0, {.delay = -1}); }).find("delay must be >= 0"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { engine.create_2d_animation(p, line, 1.0, {.repeat = -2}); }).find("repeat must be >= 0, or -1"),
+    EXPECT_NE(error_text([&] { engine.create_2d_animation(p, line, 1.0, {.repeat = -2}); }).find("repeat must be >= 0, or -1"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { engine.create_2d_animation(p, line, 1.0, {.time_scale = NAN}); }).find("time_scale must be"),
+    EXPECT_NE(error_text([&] { engine.create_2d_animation(p, line, 1.0, {.time_scale = NAN}); }).find("time_scale must be"),
               std::string::npos);
     struct Far {
         double x = 0;
@@ -477,15 +472,15 @@ TEST(Engine, BadArgumentsAreNamed) {
         double y = 0;
     };
     auto far = std::make_unique<Far>();
-    EXPECT_NE(error_of([&] { engine.create_2d_animation(*far, line, 1.0); }).find("must lie within 32 KiB of each other"),
+    EXPECT_NE(error_text([&] { engine.create_2d_animation(*far, line, 1.0); }).find("must lie within 32 KiB of each other"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { engine.create_animation(grape::PathND(std::vector<double>{0}, std::vector<double>{1}), -1.0); })
+    EXPECT_NE(error_text([&] { engine.create_animation(grape::PathND(std::vector<double>{0}, std::vector<double>{1}), -1.0); })
                   .find("create_animation: duration must be positive"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { engine.tick(-0.1); }).find("dt must be finite and >= 0 (got -0.1)"), std::string::npos);
-    EXPECT_NE(error_of([&] { engine.tick(INFINITY); }).find("dt must be finite"), std::string::npos);
+    EXPECT_NE(error_text([&] { engine.tick(-0.1); }).find("dt must be finite and >= 0 (got -0.1)"), std::string::npos);
+    EXPECT_NE(error_text([&] { engine.tick(INFINITY); }).find("dt must be finite"), std::string::npos);
     engine.on_tick([&](double) { engine.tick(0.1); });
-    EXPECT_NE(error_of([&] { engine.tick(0.1); }).find("inside one of the engine's own handlers"), std::string::npos);
+    EXPECT_NE(error_text([&] { engine.tick(0.1); }).find("inside one of the engine's own handlers"), std::string::npos);
 }
 
 // --- handlers that change the engine mid-tick (run under AddressSanitizer) --------------------

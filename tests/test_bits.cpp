@@ -5,6 +5,8 @@
 
 #include "../src/bits/word_kernels.hpp"
 
+#include "error_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,19 +25,7 @@ using grape::BitVector;
 using grape::KeyState;
 using grape::PairBits;
 
-// Expects `f` to throw grape::Error whose message contains every fragment.
-template <class F>
-void expect_error(F&& f, std::initializer_list<std::string> fragments) {
-    try {
-        f();
-        ADD_FAILURE() << "expected grape::Error";
-    } catch (const grape::Error& e) {
-        const std::string message = e.what();
-        for (const auto& fragment : fragments) {
-            EXPECT_NE(message.find(fragment), std::string::npos) << "message: " << message << "\nmissing: " << fragment;
-        }
-    }
-}
+using grape::testing::expect_error;
 
 using Model = std::vector<bool>;
 

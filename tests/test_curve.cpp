@@ -4,6 +4,8 @@
 #include <grape/curve.hpp>
 #include <grape/error.hpp>
 
+#include "error_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -135,14 +137,7 @@ std::vector<Reference> penner_references() {
 // 64 ulp of 1 covers that with margin: 1.5e-14.
 constexpr double formula_tolerance = 64 * 2.220446049250313e-16;
 
-std::string message_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const grape::Error& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
+using grape::testing::error_text;
 
 }  // namespace
 
@@ -273,11 +268,11 @@ TEST(Curve, ParametersChangeTheShape) {
 }
 
 TEST(Curve, BadParametersNameTheArgument) {
-    EXPECT_NE(message_of([] { (void)Curve::back(EaseDirection::in, -1.0); }).find("overshoot must be >= 0"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)Curve::back(EaseDirection::in, NAN); }).find("overshoot must be finite"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)Curve::elastic(EaseDirection::in, 0.5); }).find("amplitude must be >= 1"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)Curve::elastic(EaseDirection::in, 1.0, INFINITY); }).find("period must be finite"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)Curve(CurveKind::steps); }).find("needs its parameters"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)Curve::back(EaseDirection::in, -1.0); }).find("overshoot must be >= 0"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)Curve::back(EaseDirection::in, NAN); }).find("overshoot must be finite"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)Curve::elastic(EaseDirection::in, 0.5); }).find("amplitude must be >= 1"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)Curve::elastic(EaseDirection::in, 1.0, INFINITY); }).find("period must be finite"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)Curve(CurveKind::steps); }).find("needs its parameters"), std::string::npos);
 }
 
 // --- CSS cubic-bezier ----------------------------------------------------------------------
@@ -374,9 +369,9 @@ TEST(CubicBezier, MonotoneWhenYControlsAreInTheUnitInterval) {
 }
 
 TEST(CubicBezier, RejectsXOutsideTheUnitInterval) {
-    EXPECT_NE(message_of([] { (void)Curve::cubic_bezier(1.5, 0, 0.5, 1); }).find("x1 must be in [0, 1] (got 1.5)"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)Curve::cubic_bezier(0.5, 0, -0.1, 1); }).find("x2 must be in [0, 1]"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)Curve::cubic_bezier(0.5, NAN, 0.5, 1); }).find("y1 must be finite"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)Curve::cubic_bezier(1.5, 0, 0.5, 1); }).find("x1 must be in [0, 1] (got 1.5)"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)Curve::cubic_bezier(0.5, 0, -0.1, 1); }).find("x2 must be in [0, 1]"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)Curve::cubic_bezier(0.5, NAN, 0.5, 1); }).find("y1 must be finite"), std::string::npos);
 }
 
 // --- CSS steps -----------------------------------------------------------------------------
@@ -401,11 +396,11 @@ TEST(Steps, ReproduceTheCssSpecRows) {
 }
 
 TEST(Steps, JumpNoneNeedsTwoSteps) {
-    EXPECT_NE(message_of([] { (void)Curve::steps(1, grape::StepPosition::jump_none); }).find("n must be >= 2 for jump-none (got 1)"),
+    EXPECT_NE(error_text([] { (void)Curve::steps(1, grape::StepPosition::jump_none); }).find("n must be >= 2 for jump-none (got 1)"),
               std::string::npos);
-    EXPECT_NE(message_of([] { (void)Curve::steps(0); }).find("n must be >= 1"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)grape::parse_curve("steps(2.5)"); }).find("whole number"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)grape::parse_curve("steps(2,middle)"); }).find("unknown steps position 'middle'"),
+    EXPECT_NE(error_text([] { (void)Curve::steps(0); }).find("n must be >= 1"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)grape::parse_curve("steps(2.5)"); }).find("whole number"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)grape::parse_curve("steps(2,middle)"); }).find("unknown steps position 'middle'"),
               std::string::npos);
 }
 
@@ -449,14 +444,14 @@ TEST(Monotone, ReproducesStraightLinesAndExtendsAlongEndTangents) {
 
 TEST(Monotone, BadPointsAreErrors) {
     const std::vector<double> ok{0, 1};
-    EXPECT_NE(message_of([&] { (void)Curve::monotone(std::vector<double>{0, 0.5, 0.5, 1}, std::vector<double>{0, 1, 1, 1}); })
+    EXPECT_NE(error_text([&] { (void)Curve::monotone(std::vector<double>{0, 0.5, 0.5, 1}, std::vector<double>{0, 1, 1, 1}); })
                   .find("x must increase strictly (x[2] = 0.5 after 0.5)"),
               std::string::npos);
-    EXPECT_NE(message_of([&] { (void)Curve::monotone(std::vector<double>{0.1, 1}, ok); }).find("x must start at 0"), std::string::npos);
-    EXPECT_NE(message_of([&] { (void)Curve::monotone(std::vector<double>{0, 0.9}, ok); }).find("x must end at 1"), std::string::npos);
-    EXPECT_NE(message_of([&] { (void)Curve::monotone(std::vector<double>{0}, std::vector<double>{0}); }).find("at least 2 points"),
+    EXPECT_NE(error_text([&] { (void)Curve::monotone(std::vector<double>{0.1, 1}, ok); }).find("x must start at 0"), std::string::npos);
+    EXPECT_NE(error_text([&] { (void)Curve::monotone(std::vector<double>{0, 0.9}, ok); }).find("x must end at 1"), std::string::npos);
+    EXPECT_NE(error_text([&] { (void)Curve::monotone(std::vector<double>{0}, std::vector<double>{0}); }).find("at least 2 points"),
               std::string::npos);
-    EXPECT_NE(message_of([&] { (void)Curve::monotone(ok, std::vector<double>{0, NAN}); }).find("y[1] must be finite"), std::string::npos);
+    EXPECT_NE(error_text([&] { (void)Curve::monotone(ok, std::vector<double>{0, NAN}); }).find("y[1] must be finite"), std::string::npos);
 }
 
 // --- names ---------------------------------------------------------------------------------
@@ -485,17 +480,17 @@ TEST(CurveNames, RoundTripEveryCurve) {
 }
 
 TEST(CurveNames, UnknownNamesListTheValidOnes) {
-    const std::string m = message_of([] { (void)grape::parse_curve("wobble"); });
+    const std::string m = error_text([] { (void)grape::parse_curve("wobble"); });
     EXPECT_NE(m.find("unknown curve name 'wobble'"), std::string::npos) << m;
     EXPECT_NE(m.find("quad-in-out"), std::string::npos);
     EXPECT_NE(m.find("cubic-bezier(x1,y1,x2,y2)"), std::string::npos);
     EXPECT_NE(m.find("steps(n"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)grape::parse_curve("cubic-bezier(0.1,0.2,0.3)"); }).find("takes 4 arguments (got 3)"),
+    EXPECT_NE(error_text([] { (void)grape::parse_curve("cubic-bezier(0.1,0.2,0.3)"); }).find("takes 4 arguments (got 3)"),
               std::string::npos);
-    EXPECT_NE(message_of([] { (void)grape::parse_curve("cubic-bezier(0.1,x,0.3,1)"); }).find("'x' is not a finite number"),
+    EXPECT_NE(error_text([] { (void)grape::parse_curve("cubic-bezier(0.1,x,0.3,1)"); }).find("'x' is not a finite number"),
               std::string::npos);
-    EXPECT_NE(message_of([] { (void)grape::parse_curve("quad-in(2)"); }).find("takes no arguments"), std::string::npos);
-    EXPECT_NE(message_of([] { (void)grape::parse_curve("ease(1"); }).find("missing ')'"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)grape::parse_curve("quad-in(2)"); }).find("takes no arguments"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)grape::parse_curve("ease(1"); }).find("missing ')'"), std::string::npos);
 }
 
 TEST(Curve, EveryCurveStaysFiniteOutsideTheUnitInterval) {

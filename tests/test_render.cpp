@@ -4,6 +4,8 @@
 #include <grape/render.hpp>
 #include <grape/sprite.hpp>
 
+#include "error_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -133,16 +135,7 @@ bool well_formed_xml(const std::string& s, std::string& why) {
     return true;
 }
 
-template <class F>
-void expect_error(F&& f, const std::vector<std::string>& parts) {
-    try {
-        f();
-        ADD_FAILURE() << "no grape::Error thrown";
-    } catch (const grape::Error& e) {
-        const std::string what = e.what();
-        for (const auto& p : parts) EXPECT_NE(what.find(p), std::string::npos) << "message: " << what << "\nmissing: " << p;
-    }
-}
+using grape::testing::expect_error;
 
 // ------------------------------------------------------------------------------- geometry
 

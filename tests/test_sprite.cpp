@@ -10,6 +10,8 @@
 #include <grape/error.hpp>
 #include <grape/sprite.hpp>
 
+#include "error_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,18 +30,7 @@ using grape::TileSheet;
 using grape::TileSheetDef;
 using grape::TileSheetSprite;
 
-template <class F>
-void expect_error(F&& f, std::initializer_list<std::string> fragments) {
-    try {
-        f();
-        ADD_FAILURE() << "expected grape::Error";
-    } catch (const grape::Error& e) {
-        const std::string message = e.what();
-        for (const auto& fragment : fragments) {
-            EXPECT_NE(message.find(fragment), std::string::npos) << "message: " << message << "\nmissing: " << fragment;
-        }
-    }
-}
+using grape::testing::expect_error;
 
 std::int64_t floor_mod(std::int64_t a, std::int64_t n) { return ((a % n) + n) % n; }
 std::int64_t floor_div(std::int64_t a, std::int64_t n) { return (a - floor_mod(a, n)) / n; }
