@@ -14,21 +14,6 @@
 #include <string>
 
 namespace grape::tool {
-namespace {
-
-// T as a grape::Error-checked number, so the message names the argument and the rule.
-double parse_time(const std::string& text) {
-    double value = 0.0;
-    const char* first = text.data();
-    const char* last = text.data() + text.size();
-    if (first != last && *first == '+') ++first;
-    const auto [end, ec] = std::from_chars(first, last, value);
-    if (ec != std::errc() || end != last || first == last || !std::isfinite(value))
-        throw Error("ease: T must be a finite number (got '" + text + "')");
-    return value;
-}
-
-}  // namespace
 
 void register_ease_command(CLI::App& app) {
     auto* ease = app.add_subcommand(
@@ -42,7 +27,7 @@ void register_ease_command(CLI::App& app) {
     ease->add_option("T", *t_text, "Normalized time (0 to 1; outside, the curve extends)")->required();
     ease->callback([name, t_text] {
         const Curve curve = parse_curve(*name);
-        std::cout << json_object({{"progress", curve(parse_time(*t_text))}}) << '\n';
+        std::cout << json_object({{"progress", curve(parse_finite("ease: T", *t_text))}}) << '\n';
     });
 }
 

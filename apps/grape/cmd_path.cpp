@@ -19,20 +19,10 @@
 namespace grape::tool {
 namespace {
 
-// U as a grape::Error-checked number (CLI11's own conversion would report a parse error
-// without saying which rule U broke).
+// U in [0, 1], checked by grape's rules (CLI11's own conversion would not say which rule U broke).
 double parse_parameter(const std::string& text) {
-    double value = 0.0;
-    const char* first = text.data();
-    const char* last = text.data() + text.size();
-    if (first != last && *first == '+') ++first;
-    const auto [end, ec] = std::from_chars(first, last, value);
-    if (ec != std::errc() || end != last || first == last || !std::isfinite(value)) {
-        throw Error("path point: U must be a finite number (got '" + text + "')");
-    }
-    if (value < 0.0 || value > 1.0) {
-        throw Error("path point: U must lie in [0, 1] (got " + text + ")");
-    }
+    const double value = parse_finite("path point: U", text);
+    if (value < 0.0 || value > 1.0) throw Error("path point: U must lie in [0, 1] (got " + text + ")");
     return value;
 }
 

@@ -21,18 +21,6 @@
 namespace grape::tool {
 namespace {
 
-// A number option checked by grape's rules, so the message names the option and the reason.
-double parse_number(const std::string& option, const std::string& text) {
-    double value = 0.0;
-    const char* first = text.data();
-    const char* last = text.data() + text.size();
-    if (first != last && *first == '+') ++first;
-    const auto [end, ec] = std::from_chars(first, last, value);
-    if (ec != std::errc() || end != last || first == last || !std::isfinite(value))
-        throw Error("simulate: " + option + " must be a finite number (got '" + text + "')");
-    return value;
-}
-
 struct SimulateOptions {
     std::string method = "implicit";
     std::string integrator = "rk4";
@@ -52,13 +40,13 @@ void run_simulate(const SimulateOptions& o) {
     scenes::ParabolaSetup setup;
     setup.method = scenes::parabola_method_from_string(o.method);
     setup.integrator = integrator_from_string(o.integrator);
-    const double dt = parse_number("--dt", o.dt);
-    const double seconds = parse_number("--seconds", o.seconds);
-    setup.x0 = parse_number("--x0", o.x0);
-    setup.g = parse_number("--g", o.g);
-    setup.force_x = parse_number("--force-x", o.force_x);
+    const double dt = parse_finite("simulate: --dt", o.dt);
+    const double seconds = parse_finite("simulate: --seconds", o.seconds);
+    setup.x0 = parse_finite("simulate: --x0", o.x0);
+    setup.g = parse_finite("simulate: --g", o.g);
+    setup.force_x = parse_finite("simulate: --force-x", o.force_x);
     setup.drift.method = drift_control_from_string(o.stabilize);
-    setup.drift.omega_dt = parse_number("--omega-dt", o.omega_dt);
+    setup.drift.omega_dt = parse_finite("simulate: --omega-dt", o.omega_dt);
     if (!(dt > 0.0)) throw Error("simulate: --dt must be positive (got " + o.dt + ")");
     if (!(seconds >= 0.0)) throw Error("simulate: --seconds must be ≥ 0 (got " + o.seconds + ")");
     if (seconds / dt > 1e8) throw Error("simulate: --seconds/--dt must be at most 1e8 steps (got " + json_number(seconds / dt) + ")");
