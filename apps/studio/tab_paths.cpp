@@ -180,8 +180,11 @@ public:
         ImGui::Text("kind: %s   length: %.1f", std::string(to_string(entries_[current_].path.kind())).c_str(),
                     entries_[current_].path.length());
         // Paths drawn in any vector editor: SVG path data becomes a complex path.
-        if (ImGui::InputText("SVG path", svg_edit_, sizeof svg_edit_, ImGuiInputTextFlags_EnterReturnsTrue) |
-            ImGui::SmallButton("Add SVG path")) {
+        // Both widgets are submitted every frame, so no short-circuit between them.
+        const bool entered =
+            ImGui::InputText("SVG path", svg_edit_, sizeof svg_edit_, ImGuiInputTextFlags_EnterReturnsTrue);
+        const bool clicked = ImGui::SmallButton("Add SVG path");
+        if (entered || clicked) {
             try {
                 entries_.push_back(entry_from_path("svg_" + std::to_string(++svg_count_), parse_svg_path(svg_edit_)));
                 svg_error_.clear();
