@@ -422,6 +422,7 @@ private:
     std::vector<UserConstraint> users_{};
     Stepper stepper_{};
     std::unique_ptr<detail::SolverWorkspace> solver_{};
+    detail::SolverWorkspace& evaluated_rows() const;  // rows evaluated at the current state
     static_assert(sizeof(Vec2) == 2 * sizeof(double), "positions are viewed as 2n doubles");
 };
 

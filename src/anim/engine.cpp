@@ -199,6 +199,16 @@ std::uint16_t EngineImpl::acquire_curve(const Curve& curve) {
     return index;
 }
 
+std::uint16_t EngineImpl::acquire_curve_for(std::uint32_t path, const Curve& curve) {
+    if (parameter_free(curve.kind())) return 0;  // evaluated by kind, no slot needed
+    try {
+        return acquire_curve(curve);
+    } catch (...) {
+        release_path(path);
+        throw;
+    }
+}
+
 void EngineImpl::release_curve(std::uint16_t index) noexcept {
     if (index == 0) return;
     CurveEntry& e = curves_[index];
@@ -515,13 +525,7 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
         h.flags |= flag_custom;
     }
     h.path = acquire_path(path);
-    std::uint16_t curve = 0;
-    try {
-        curve = parameter_free(h.kind) ? 0 : acquire_curve(def.curve);
-    } catch (...) {
-        release_path(h.path);
-        throw;
-    }
+    const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
 }
 
@@ -546,13 +550,7 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     if (on_update)
         extra.on_update_nd = std::make_shared<const std::function<void(std::span<const double>)>>(std::move(on_update));
     h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
-    std::uint16_t curve = 0;
-    try {
-        curve = parameter_free(h.kind) ? 0 : acquire_curve(def.curve);
-    } catch (...) {
-        release_path(h.path);
-        throw;
-    }
+    const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
 }
 

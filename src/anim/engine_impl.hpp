@@ -142,6 +142,9 @@ private:
     std::uint32_t acquire_path(const Path& path);
     void release_path(std::uint32_t index) noexcept;
     std::uint16_t acquire_curve(const Curve& curve);
+    // The curve slot for a new animation whose path slot `path` is already held; releases that
+    // path slot if acquiring the curve throws.
+    std::uint16_t acquire_curve_for(std::uint32_t path, const Curve& curve);
     void release_curve(std::uint16_t index) noexcept;
     Animation add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay, std::optional<Extra> extra);
 

@@ -294,11 +294,18 @@ double ParticleSystem::potential_energy() const {
     return e;
 }
 
-std::vector<ConstraintResidual> ParticleSystem::residuals() const {
+// The solver workspace with C, Ċ, J̇v and |∇C|² evaluated at the current state. The
+// workspace is scratch; the state is not touched.
+detail::SolverWorkspace& ParticleSystem::evaluated_rows() const {
     auto& s = *solver_;
-    s.owner = const_cast<ParticleSystem*>(this);  // the workspace is scratch; the state is not touched
+    s.owner = const_cast<ParticleSystem*>(this);
     if (s.dirty) s.build_topology();
     s.evaluate_rows(positions_, velocities_);
+    return s;
+}
+
+std::vector<ConstraintResidual> ParticleSystem::residuals() const {
+    auto& s = evaluated_rows();
     std::vector<ConstraintResidual> out(constraints_.size());
     for (std::uint32_t r = 0; r < s.rows; ++r) {
         auto& o = out[s.row_constraint[r]];
@@ -313,10 +320,7 @@ std::vector<ConstraintResidual> ParticleSystem::residuals() const {
 }
 
 std::vector<ConstraintRow> ParticleSystem::constraint_rows() const {
-    auto& s = *solver_;
-    s.owner = const_cast<ParticleSystem*>(this);  // the workspace is scratch; the state is not touched
-    if (s.dirty) s.build_topology();
-    s.evaluate_rows(positions_, velocities_);
+    auto& s = evaluated_rows();
     std::vector<ConstraintRow> out(s.rows);
     for (std::uint32_t r = 0; r < s.rows; ++r)
         out[r] = {{s.row_constraint[r]}, s.c[r], s.c_dot[r], s.jdot_v[r], std::sqrt(s.gradient_norm2[r])};
