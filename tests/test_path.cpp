@@ -799,4 +799,16 @@ TEST(ComplexPath, TinySpansKeepDerivativesFinite) {
     EXPECT_TRUE(grape::is_finite(c.d1(0.5e-160)));
 }
 
+// Control points near 1e307: the power-basis coefficients (3·Δ, 6·Δ) would overflow and give
+// inf·0 = NaN at the ends; the Bernstein-form derivatives stay exact there, d2(0) =
+// 6(p0 − 2p1 + p2) and d2(1) = 6(p1 − 2p2 + p3), each computed here with the same operations.
+TEST(CubicBezierPath, HugeControlPointsKeepEndDerivativesExact) {
+    const double big = 1.4e307;
+    const grape::CubicBezierPath b({0, 0}, {0, 0}, {big, 0}, {0, 0});
+    EXPECT_EQ(b.d2(0.0).x, 6.0 * big);
+    EXPECT_EQ(b.d2(1.0).x, 6.0 * (-2.0 * big));
+    EXPECT_EQ(b.d1(0.0).x, 0.0);
+    EXPECT_EQ(b.d1(1.0).x, 3.0 * -big);
+}
+
 }  // namespace

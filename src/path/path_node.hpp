@@ -125,8 +125,15 @@ public:
           p{p0, p1, p2, p3},
           c{p0, 3.0 * (p1 - p0), 3.0 * (p2 - 2.0 * p1 + p0), p3 - p0 + 3.0 * (p1 - p2)} {}
     Vec2 point(double t) const noexcept override { return ((c[3] * t + c[2]) * t + c[1]) * t + c[0]; }
-    Vec2 d1(double t) const noexcept override { return (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1]; }
-    Vec2 d2(double t) const noexcept override { return 6.0 * c[3] * t + 2.0 * c[2]; }
+    // Derivatives in Bernstein form: the power-basis coefficients carry factors of 3 and 6 that
+    // overflow for control points near 1e307, and inf·0 at the ends would then give NaN.
+    Vec2 d1(double t) const noexcept override {
+        const double s = 1.0 - t;
+        return 3.0 * (s * s * (p[1] - p[0]) + 2.0 * s * t * (p[2] - p[1]) + t * t * (p[3] - p[2]));
+    }
+    Vec2 d2(double t) const noexcept override {
+        return 6.0 * ((1.0 - t) * (p[2] - 2.0 * p[1] + p[0]) + t * (p[3] - 2.0 * p[2] + p[1]));
+    }
 
     const Vec2 p[4];  ///< control points
     const Vec2 c[4];  ///< power-basis coefficients
