@@ -735,7 +735,12 @@ TEST(PathErrors, EveryBadInputNamesTheArgumentAndReason) {
     EXPECT_ERROR(grape::LinearPath({-1e308, 0}, {1e308, 0}),
                  "Path (linear): the length overflows a double; coordinates or parameters are too large");
     EXPECT_ERROR(grape::PhysicsPath({0, 0}, {1, 1}, {0, 1e300}, 1e200),
-                 "Path (physics): the length overflows a double; coordinates or parameters are too large");
+                 "PhysicsPath: position, velocity·seconds and acceleration·seconds² are too large to evaluate in "
+                 "double precision (coefficients overflow)");
+    EXPECT_ERROR(grape::CubicBezierPath({0, 0}, {0, 0}, {1.4e307, 0}, {0, 0}),
+                 "CubicBezierPath: control points are too large to evaluate in double precision (coefficients overflow)");
+    EXPECT_ERROR(grape::QuadraticBezierPath({-1e308, 0}, {1e308, 0}, {-1e308, 0}),
+                 "QuadraticBezierPath: control points are too large to evaluate in double precision (coefficients overflow)");
     EXPECT_ERROR(grape::QuadraticBezierPath({0, 0}, {nan, 0}, {1, 1}), "QuadraticBezierPath: p1 must be finite (got (nan, 0))");
     EXPECT_ERROR(grape::CubicBezierPath({0, 0}, {0, 0}, {0, 0}, {inf, 0}), "CubicBezierPath: p3 must be finite (got (inf, 0))");
     EXPECT_ERROR(grape::LinearSplinePath({1, 2, 3}),
@@ -799,16 +804,17 @@ TEST(ComplexPath, TinySpansKeepDerivativesFinite) {
     EXPECT_TRUE(grape::is_finite(c.d1(0.5e-160)));
 }
 
-// Control points near 1e307: the power-basis coefficients (3·Δ, 6·Δ) would overflow and give
-// inf·0 = NaN at the ends; the Bernstein-form derivatives stay exact there, d2(0) =
-// 6(p0 − 2p1 + p2) and d2(1) = 6(p1 − 2p2 + p3), each computed here with the same operations.
+// Control points near the largest the constructor accepts (6·Σ|power-basis coefficient| must
+// be finite): the derivatives stay exact at the ends, d2(0) = 6(p0 − 2p1 + p2) and
+// d2(1) = 6(p1 − 2p2 + p3), each computed here with the same operations.
 TEST(CubicBezierPath, HugeControlPointsKeepEndDerivativesExact) {
-    const double big = 1.4e307;
+    const double big = 2e306;
     const grape::CubicBezierPath b({0, 0}, {0, 0}, {big, 0}, {0, 0});
     EXPECT_EQ(b.d2(0.0).x, 6.0 * big);
     EXPECT_EQ(b.d2(1.0).x, 6.0 * (-2.0 * big));
     EXPECT_EQ(b.d1(0.0).x, 0.0);
     EXPECT_EQ(b.d1(1.0).x, 3.0 * -big);
+    EXPECT_TRUE(grape::is_finite(b.point(0.5)));
 }
 
 }  // namespace

@@ -28,6 +28,20 @@ void require_finite(const char* who, const char* name, Vec2 v) {
     if (!is_finite(v)) fail(who, std::string(name) + " must be finite (got " + text(v) + ")");
 }
 
+// Polynomial kinds evaluate power-basis coefficients by Horner's rule. Every partial sum, and
+// the derivatives (factors up to 6), stay finite for u in [0, 1] when 6·Σ|c| does: beyond
+// that a point of the curve could come out infinite although the curve itself is finite.
+void require_evaluable(const char* who, const char* what, std::initializer_list<Vec2> coefficients) {
+    double x = 0.0;
+    double y = 0.0;
+    for (const Vec2 c : coefficients) {
+        x += std::abs(c.x);
+        y += std::abs(c.y);
+    }
+    if (!(std::isfinite(6.0 * x) && std::isfinite(6.0 * y)))
+        fail(who, std::string(what) + " are too large to evaluate in double precision (coefficients overflow)");
+}
+
 // Work for length, bounds and flattening grows with the turns: a million is far beyond any
 // drawing and keeps every construction bounded.
 constexpr double max_turns = 1e6;
@@ -263,7 +277,10 @@ QuadraticBezierPath::QuadraticBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, bool reparam
           require_finite(who, "p0", p0);
           require_finite(who, "p1", p1);
           require_finite(who, "p2", p2);
-          return make_node<detail::QuadraticNode>(PathKind::quadratic_bezier, p0, 2.0 * (p1 - p0), p2 - 2.0 * p1 + p0,
+          const Vec2 c1 = 2.0 * (p1 - p0);
+          const Vec2 c2 = p2 - 2.0 * p1 + p0;
+          require_evaluable(who, "control points", {p0, c1, c2});
+          return make_node<detail::QuadraticNode>(PathKind::quadratic_bezier, p0, c1, c2,
                                                   std::array<Vec2, 3>{p0, p1, p2}, 1.0);
       }()) {
     if (reparametrize) node_ = make_node<detail::ReparametrizedNode>(detail::PathAccess::wrap(node_));
@@ -279,6 +296,8 @@ CubicBezierPath::CubicBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, bool repara
           require_finite(who, "p1", p1);
           require_finite(who, "p2", p2);
           require_finite(who, "p3", p3);
+          require_evaluable(who, "control points",
+                            {p0, 3.0 * (p1 - p0), 3.0 * (p2 - 2.0 * p1 + p0), p3 - p0 + 3.0 * (p1 - p2)});
           return make_node<detail::CubicBezierNode>(p0, p1, p2, p3);
       }()) {
     if (reparametrize) node_ = make_node<detail::ReparametrizedNode>(detail::PathAccess::wrap(node_));
@@ -364,8 +383,10 @@ PhysicsPath::PhysicsPath(Vec2 position, Vec2 velocity, Vec2 acceleration, double
               fail(who, "seconds must be positive and finite (got " + text(seconds) + ")");
           }
           // In u = t/seconds: x = p + (v·T)·u + (½·a·T²)·u².
-          return make_node<detail::QuadraticNode>(PathKind::physics, position, velocity * seconds,
-                                                  acceleration * (0.5 * seconds * seconds),
+          const Vec2 c1 = velocity * seconds;
+          const Vec2 c2 = acceleration * (0.5 * seconds * seconds);
+          require_evaluable(who, "position, velocity·seconds and acceleration·seconds²", {position, c1, c2});
+          return make_node<detail::QuadraticNode>(PathKind::physics, position, c1, c2,
                                                   std::array<Vec2, 3>{position, velocity, acceleration}, seconds);
       }()) {}
 Vec2 PhysicsPath::position() const noexcept { return static_cast<const detail::QuadraticNode&>(*node_).inputs[0]; }
