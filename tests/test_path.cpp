@@ -817,4 +817,14 @@ TEST(CubicBezierPath, HugeControlPointsKeepEndDerivativesExact) {
     EXPECT_TRUE(grape::is_finite(b.point(0.5)));
 }
 
+// A fuzz finding: a cubic spanning 6e113 with a few hundred units of detail at its start.
+// The arc-length model cannot reach 1e-10·L everywhere there, and the table once split
+// spans until memory ran out; the span budget bounds it. The ends stay exact.
+TEST(Reparametrized, ExtremeScalesBuildInBoundedTime) {
+    const grape::CubicBezierPath b({40, 20}, {798, 200}, {200, 600}, {6.1e113, 600}, true);
+    EXPECT_EQ(b.point(0.0), Vec2(40, 20));
+    EXPECT_EQ(b.point(1.0), Vec2(6.1e113, 600));
+    EXPECT_TRUE(grape::is_finite(b.point(0.5)));
+}
+
 }  // namespace

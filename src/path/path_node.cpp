@@ -308,7 +308,12 @@ double ReparametrizedNode::build_span_checked(double va, double vb, double sa, i
     for (int k = 1; k <= 3; ++k) error = std::max(error, std::abs(model(k / 4.0) - q[k]));
     // 1e-10·L leaves a factor 10 to the promised 1e-9·L for the error between check points.
     const bool good = error <= 1e-10 * total;
-    const bool last = depth >= 48 || !(0.5 * (va + vb) > va && 0.5 * (va + vb) < vb);
+    // The span budget bounds time and memory for paths whose arc length the model cannot
+    // follow to 1e-10·L (coordinates so large that rounding noise exceeds it): past it the
+    // remaining spans are kept as they are, with Newton lookups.
+    constexpr std::size_t max_spans = std::size_t{1} << 16;
+    const bool last =
+        depth >= 48 || spans_.size() >= max_spans || !(0.5 * (va + vb) > va && 0.5 * (va + vb) < vb);
     // A span whose inverse model misses although the path moves at both ends is split too:
     // lookups then cost one polynomial instead of Newton steps.
     if (last || (good && (fit_inverse(sp, total) || depth >= 24))) {
