@@ -8,6 +8,7 @@
 #include "seed_paths.hpp"
 
 #include "error_text.hpp"
+#include "polyline_distance.hpp"
 
 #include <gtest/gtest.h>
 
@@ -536,16 +537,7 @@ TEST(PathBounds, TightAroundDenseSamples) {
     }
 }
 
-double distance_to_polyline(Vec2 p, const std::vector<Vec2>& line) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-        const Vec2 ab = line[i + 1] - line[i];
-        const double l2 = grape::length_squared(ab);
-        const double t = l2 > 0 ? std::clamp(grape::dot(p - line[i], ab) / l2, 0.0, 1.0) : 0.0;
-        best = std::min(best, grape::distance(p, line[i] + ab * t));
-    }
-    return best;
-}
+using grape::testing::distance_to_polyline;
 
 TEST(PathFlatten, StaysWithinToleranceOfDenseSamples) {
     for (const auto& [name, path] : all_paths()) {

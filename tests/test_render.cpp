@@ -5,6 +5,7 @@
 #include <grape/sprite.hpp>
 
 #include "error_text.hpp"
+#include "polyline_distance.hpp"
 
 #include <gtest/gtest.h>
 
@@ -436,16 +437,7 @@ TEST(Plot, DrawsSeriesInsideItsArea) {
 
 // ---------------------------------------------------------------------------------- paths
 
-double distance_to_polyline(Vec2 p, const std::vector<Vec2>& line) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-        const Vec2 d = line[i + 1] - line[i];
-        const double l2 = grape::length_squared(d);
-        const double t = l2 > 0.0 ? std::clamp(grape::dot(p - line[i], d) / l2, 0.0, 1.0) : 0.0;
-        best = std::min(best, grape::distance(p, line[i] + d * t));
-    }
-    return best;
-}
+using grape::testing::distance_to_polyline;
 
 // Every path kind, drawn 1 unit wide on a fitted canvas: ink lies within a pixel of the
 // true shape (a 0.01-unit flattening of it, in output units), and the shape is inked all
