@@ -420,7 +420,8 @@ TEST(Plot, DrawsSeriesInsideItsArea) {
         y.push_back(std::sin(i * 0.1));
     }
     y[50] = std::nan("");  // skipped, no crash
-    const grape::PlotSeries s[] = {{x, y, {.color = grape::colors::red}, "sin"}};
+    const grape::StrokeStyle stroke{.color = grape::colors::red};
+    const grape::PlotSeries s[] = {{x, y, stroke, "sin"}};
     grape::draw_plot(canvas, {50, 40, 200, 120}, s, "title");
     const Image image = canvas.to_image();
     int red = 0;

@@ -9,7 +9,7 @@
 
 #include "seed_paths.hpp"
 
-#ifdef GRAPE_SCENE_DYNAMICS
+#if GRAPE_HAS_DYNAMICS
 #include <grape/dynamics.hpp>
 #endif
 #ifdef GRAPE_TOOL_DYNAMICS
@@ -50,7 +50,7 @@ std::string format(const char* fmt, double v) {
 class SimulationRunner {
 public:
     explicit SimulationRunner(const Scene& scene) : scene_(scene) {
-#ifdef GRAPE_SCENE_DYNAMICS
+#if GRAPE_HAS_DYNAMICS
         for (const SceneSimulation& s : scene.simulations) systems_.push_back(make_particle_system(s));
 #endif
         trails_.resize(scene.simulations.size());
@@ -59,7 +59,7 @@ public:
 
     /// Advances every simulation to time t (never backwards; capped at its duration).
     void advance_to(double t) {
-#ifdef GRAPE_SCENE_DYNAMICS
+#if GRAPE_HAS_DYNAMICS
         for (std::size_t i = 0; i < systems_.size(); ++i) {
             const SceneSimulation& s = scene_.simulations[i];
             const double target = std::min(t, s.duration);
@@ -75,7 +75,7 @@ public:
     }
 
     std::vector<Vec2> positions(std::size_t i) const {
-#ifdef GRAPE_SCENE_DYNAMICS
+#if GRAPE_HAS_DYNAMICS
         const auto p = systems_[i].positions();
         return {p.begin(), p.end()};
 #else
@@ -100,7 +100,7 @@ private:
     }
 
     const Scene& scene_;
-#ifdef GRAPE_SCENE_DYNAMICS
+#if GRAPE_HAS_DYNAMICS
     std::vector<ParticleSystem> systems_;
 #endif
     std::vector<std::vector<Vec2>> trails_;  // every particle's position after every step
@@ -493,11 +493,13 @@ void demo_pictures(const DemoContext& context) {
             figures += std::string(m ? "; " : "") + (m == 0 ? "implicit" : "parametric") +
                        format(" max distance %.3g px", summary.max_distance) + format(", max |dE/E| %.3g", summary.max_energy_error);
         }
-        const PlotSeries res[] = {{times[0], residual[0], {.color = colors::red, .width = 1.5}, "implicit"},
-                                  {times[1], residual[1], {.color = colors::blue, .width = 1.5}, "parametric"}};
+        const StrokeStyle implicit_line{.color = colors::red, .width = 1.5};
+        const StrokeStyle parametric_line{.color = colors::blue, .width = 1.5};
+        const PlotSeries res[] = {{times[0], residual[0], implicit_line, "implicit"},
+                                  {times[1], residual[1], parametric_line, "parametric"}};
         draw_plot(canvas, {10, 450, 980, 200}, res, "distance from the parabola |C|/|∇C| (px) over time (s)");
-        const PlotSeries en[] = {{times[0], energy[0], {.color = colors::red, .width = 1.5}, "implicit"},
-                                 {times[1], energy[1], {.color = colors::blue, .width = 1.5}, "parametric"}};
+        const PlotSeries en[] = {{times[0], energy[0], implicit_line, "implicit"},
+                                 {times[1], energy[1], parametric_line, "parametric"}};
         draw_plot(canvas, {10, 655, 980, 200}, en, "total energy over time (s)");
         save(canvas, "parabola.png", "the parabola by both methods", figures);
     }

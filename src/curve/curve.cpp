@@ -6,7 +6,9 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -291,18 +293,25 @@ std::span<const std::string_view> curve_names() noexcept { return kind_names; }
 std::string to_string(const Curve& c) {
     const CurveKind k = c.kind();
     std::string name(to_string(k));
+    // "(a,b,...)" appended to the name in place (no temporaries to concatenate).
+    const auto arguments = [&name](std::initializer_list<std::string_view> args) {
+        name += '(';
+        for (const std::string_view& a : args) {
+            if (&a != args.begin()) name += ',';
+            name += a;
+        }
+        name += ')';
+    };
+    const auto p = [&c](int i) { return number_text(c.parameter(i)); };
     if (is_back(k)) {
-        if (c.parameter(0) != ease::back_overshoot) name += "(" + number_text(c.parameter(0)) + ")";
+        if (c.parameter(0) != ease::back_overshoot) arguments({p(0)});
     } else if (is_elastic(k)) {
         const double period = k == CurveKind::elastic_in_out ? ease::elastic_in_out_period : ease::elastic_period;
-        if (c.parameter(0) != ease::elastic_amplitude || c.parameter(1) != period)
-            name += "(" + number_text(c.parameter(0)) + "," + number_text(c.parameter(1)) + ")";
+        if (c.parameter(0) != ease::elastic_amplitude || c.parameter(1) != period) arguments({p(0), p(1)});
     } else if (k == CurveKind::cubic_bezier) {
-        name += "(" + number_text(c.parameter(0)) + "," + number_text(c.parameter(1)) + "," +
-                number_text(c.parameter(2)) + "," + number_text(c.parameter(3)) + ")";
+        arguments({p(0), p(1), p(2), p(3)});
     } else if (k == CurveKind::steps) {
-        name += "(" + number_text(c.parameter(0)) + "," +
-                std::string(position_names[static_cast<std::size_t>(c.parameter(1))]) + ")";
+        arguments({p(0), position_names[static_cast<std::size_t>(c.parameter(1))]});
     } else if (k == CurveKind::monotone) {
         name += "(";
         const auto x = c.knots_x();

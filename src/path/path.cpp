@@ -16,7 +16,14 @@ using detail::make_node;
 
 std::string text(double v) { return detail::number_text(v); }
 
-std::string text(Vec2 v) { return "(" + text(v.x) + ", " + text(v.y) + ")"; }
+std::string text(Vec2 v) {
+    std::string s = "(";
+    s += text(v.x);
+    s += ", ";
+    s += text(v.y);
+    s += ')';
+    return s;
+}
 
 [[noreturn]] void fail(const char* who, const std::string& what) { throw Error(std::string(who) + ": " + what); }
 

@@ -69,8 +69,12 @@ std::string animated_svg(double width, double height, const Affine& transform, s
         std::string xs, ys;
         for (std::size_t k = 0; k < m.positions.size(); ++k) {
             const Vec2 p = transform.apply(m.positions[k]);
-            xs += (k ? ";" : "") + number(p.x);
-            ys += (k ? ";" : "") + number(p.y);
+            if (k > 0) {
+                xs += ';';
+                ys += ';';
+            }
+            xs += number(p.x);
+            ys += number(p.y);
         }
         const Vec2 first = transform.apply(m.positions.front());
         svg << "<circle r=\"" << number(m.radius) << "\" stroke=\"black\" fill=\"" << rgb(m.color) << "\" cx=\""
