@@ -1,27 +1,69 @@
-# Warnings are errors in grape's own code; third-party headers come in as SYSTEM includes.
+# grape_warnings(TARGET): the settings of every target grape builds from its own code.
+# Warnings are on for grape's code only (third-party headers come in as SYSTEM includes);
+# they are errors only with GRAPE_WERROR=ON (CI and scripts/ set it; a project that builds
+# grape as a dependency never gets -Werror). GRAPE_SANITIZE adds ASan + UBSan to these
+# targets alone, never to the flags of a project that includes grape.
 function(grape_warnings target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Werror)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  if(GRAPE_WERROR)
+    set_property(TARGET ${target} PROPERTY COMPILE_WARNING_AS_ERROR ON)
+  endif()
+  if(GRAPE_SANITIZE)
+    set(flags -fsanitize=address,undefined -fno-sanitize-recover=all)
+    target_compile_options(${target} PRIVATE ${flags} -fno-omit-frame-pointer)
+    # PUBLIC: whatever links a sanitized static library must link the runtimes too.
+    get_target_property(type ${target} TYPE)
+    if(type STREQUAL "EXECUTABLE" OR type STREQUAL "SHARED_LIBRARY" OR type STREQUAL "MODULE_LIBRARY")
+      target_link_options(${target} PRIVATE ${flags})
+    endif()
+    target_link_options(${target} INTERFACE $<BUILD_INTERFACE:${flags}>)
+  endif()
 endfunction()
 
-# grape_module(NAME SOURCES... [DEPS targets...] [PRIVATE_DEPS targets...])
-# A static library grape_NAME with the alias grape::NAME, installed and exported.
+# grape_module(NAME SOURCES... [DEPS targets...] [PRIVATE_DEPS targets...] [HEADER_ONLY_DEPS targets...])
+# The library grape_NAME (static, or shared with BUILD_SHARED_LIBS=ON) with the alias
+# grape::NAME, installed and exported. HEADER_ONLY_DEPS (Eigen, nlohmann-json) lend only their
+# include folders and definitions to the build: they never appear in the exported link
+# interface, so a consumer needs neither installed. Shared builds keep the ELF default visibility: every
+# non-inline symbol is exported, as from the static archives, so no export macros are needed
+# in the headers (a Windows DLL build would need them).
 function(grape_module name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
-  add_library(grape_${name} STATIC ${ARG_SOURCES})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS;HEADER_ONLY_DEPS" ${ARGN})
+  add_library(grape_${name} ${ARG_SOURCES})
   add_library(grape::${name} ALIAS grape_${name})
-  set_target_properties(grape_${name} PROPERTIES EXPORT_NAME ${name} POSITION_INDEPENDENT_CODE ON)
+  set_target_properties(grape_${name} PROPERTIES EXPORT_NAME ${name} POSITION_INDEPENDENT_CODE ON
+                        VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
   target_include_directories(grape_${name} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+    $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_compile_features(grape_${name} PUBLIC cxx_std_20)
   target_link_libraries(grape_${name} PUBLIC ${ARG_DEPS})
   if(ARG_PRIVATE_DEPS)
     target_link_libraries(grape_${name} PRIVATE ${ARG_PRIVATE_DEPS})
   endif()
+  foreach(dep IN LISTS ARG_HEADER_ONLY_DEPS)
+    target_include_directories(grape_${name} SYSTEM PRIVATE $<TARGET_PROPERTY:${dep},INTERFACE_INCLUDE_DIRECTORIES>)
+    target_compile_definitions(grape_${name} PRIVATE $<TARGET_PROPERTY:${dep},INTERFACE_COMPILE_DEFINITIONS>)
+  endforeach()
   grape_warnings(grape_${name})
   if(GRAPE_INSTALL)
     install(TARGETS grape_${name} EXPORT grape-targets
             ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
             LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
   endif()
+endfunction()
+
+# grape_installed_program(TARGET): installs one of grape's programs into the bin folder. With
+# shared libraries it finds them through an RPATH relative to itself ($ORIGIN/../lib), so an
+# install moved elsewhere, or installed under any prefix, still runs.
+function(grape_installed_program target)
+  if(NOT GRAPE_INSTALL)
+    return()
+  endif()
+  if(BUILD_SHARED_LIBS AND NOT IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+    file(RELATIVE_PATH to_lib /${CMAKE_INSTALL_BINDIR} /${CMAKE_INSTALL_LIBDIR})
+    set_property(TARGET ${target} PROPERTY INSTALL_RPATH "$ORIGIN/${to_lib}")
+  endif()
+  install(TARGETS ${target} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endfunction()

@@ -6,7 +6,7 @@
 #include <grape/scene.hpp>
 
 #include "seed_paths.hpp"
-#ifdef GRAPE_SCENE_DYNAMICS
+#if GRAPE_HAS_DYNAMICS
 #include <grape/dynamics.hpp>
 
 #include "seed_dynamics.hpp"
@@ -595,7 +595,7 @@ TEST(SceneAnimation, AgreesWithTheEngineForEveryNamedCurve) {
     expect_agreement_with_engine({names.begin(), names.end()});
 }
 
-#ifdef GRAPE_SCENE_DYNAMICS
+#if GRAPE_HAS_DYNAMICS
 // The seed's parabola as a scene runs exactly like the catalogue's implicit parabola run.
 TEST(SceneSimulation, ParabolaMatchesTheCatalogue) {
     const Scene s = grape::load_scene(R"({"simulations": [{"integrator": "rk4", "drift": "none", "dt": 0.01,

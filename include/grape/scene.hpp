@@ -11,6 +11,7 @@
 //   grape::save_scene_file(scene, "copy.json");
 #pragma once
 
+#include <grape/config.hpp>
 #include <grape/curve.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
@@ -145,11 +146,11 @@ std::string path_to_json(const Path& path);
 /// A path from scene JSON text (one object). Throws grape::Error naming the JSON pointer.
 Path path_from_json(std::string_view json);
 
-#ifdef GRAPE_SCENE_DYNAMICS
+#if GRAPE_HAS_DYNAMICS
 class ParticleSystem;
 /// The simulation as a ParticleSystem ready to step (particles in order, then forces, then
 /// constraints; a distance of length 0 keeps the starting distance). Only when grape::scene
-/// was built with grape::dynamics (GRAPE_SCENE_DYNAMICS is then defined).
+/// was built with grape::dynamics (GRAPE_HAS_DYNAMICS in grape/config.hpp).
 ParticleSystem make_particle_system(const SceneSimulation& simulation);
 #endif
 
