@@ -180,11 +180,12 @@ TEST(BitVector, OperandMayBeTheVectorItself) {
     std::mt19937_64 rng(7);
     const Model m = random_model(rng, 333, 0.4);
     BitVector v = from_model(m);
-    v &= v;
+    const BitVector& same = v;  // the operand is v itself, under a second name
+    v &= same;
     expect_matches(v, m);
-    v |= v;
+    v |= same;
     expect_matches(v, m);
-    v ^= v;
+    v ^= same;
     EXPECT_TRUE(v.none());
 }
 

@@ -285,8 +285,8 @@ TEST(SceneRoundTrip, RandomScenes) {
     const auto names = grape::curve_names();
     for (int round = 0; round < 30; ++round) {
         Scene s;
-        s.name = "random " + std::to_string(round);
-        for (int i = 0; i < 4; ++i) s.paths.push_back({"p" + std::to_string(i), random_path(0)});
+        s.name = std::string("random ").append(std::to_string(round));
+        for (int i = 0; i < 4; ++i) s.paths.push_back({std::string("p").append(std::to_string(i)), random_path(0)});
         for (int i = 0; i < 3; ++i) {
             grape::SceneAnimation a;
             a.path = i == 0 ? s.paths[1].path : random_path(0);
