@@ -1,6 +1,8 @@
 #include <grape/bits.hpp>
 #include <grape/error.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -32,6 +34,24 @@ std::size_t PairBits::index(std::size_t i, std::size_t j) const {
     // i(2n − i − 3) is even (i odd makes 2n − i − 3 even), so the halving is exact; both
     // factors are below 2n and the product is below 2·pair_count, which the constructor bounded.
     return i * (2 * n_ - i - 3) / 2 + j - 1;
+}
+
+std::pair<std::size_t, std::size_t> PairBits::pair(std::size_t index) const {
+    if (index >= pair_count()) {
+        throw Error("PairBits::pair: index " + std::to_string(index) + " is out of range (pair_count " +
+                    std::to_string(pair_count()) + ")");
+    }
+    // Row i starts at s(i) = i(2n − i − 1)/2; the i with s(i) <= index < s(i + 1) solves a
+    // quadratic. The double estimate is off by at most a few rows for any n whose pairs fit
+    // in std::size_t, and the integer loops make it exact.
+    const auto start = [n = n_](std::size_t i) { return i % 2 == 0 ? i / 2 * (2 * n - i - 1) : (2 * n - i - 1) / 2 * i; };
+    const double b = 2.0 * static_cast<double>(n_) - 1.0;
+    const double disc = std::max(0.0, b * b - 8.0 * static_cast<double>(index));
+    const double estimate = std::floor((b - std::sqrt(disc)) / 2.0);
+    std::size_t i = estimate <= 0 ? 0 : std::min(static_cast<std::size_t>(estimate), n_ - 2);
+    while (i > 0 && start(i) > index) --i;
+    while (i + 2 < n_ && start(i + 1) <= index) ++i;
+    return {i, i + 1 + (index - start(i))};
 }
 
 }  // namespace grape

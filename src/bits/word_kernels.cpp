@@ -73,6 +73,53 @@ GRAPE_INLINE void flip_loop(Word* a, std::size_t n) noexcept {
     }
     for (; i < n; ++i) a[i] = ~a[i];
 }
+
+// Shifts by s = 64·ws + bs with 0 < bs < 64 (bs == 0 is a memmove): word k of the result
+// takes the high bits of source word k − ws − 1 and the low bits of word k − ws. Towards the
+// high end the words are written from the top down, so every load reads a word not yet
+// written; each step loads all of its vectors before storing any.
+template <class V>
+GRAPE_INLINE void shift_up_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs) noexcept {
+    constexpr std::size_t lanes = sizeof(V) / sizeof(Word);
+    const unsigned back = 64 - bs;
+    std::size_t top = n;  // words [top, n) are done
+    while (top >= ws + 1 + 2 * lanes) {
+        const std::size_t d0 = top - lanes, d1 = top - 2 * lanes;
+        V h0, l0, h1, l1;
+        std::memcpy(&h0, w + d0 - ws, sizeof(V));
+        std::memcpy(&l0, w + d0 - ws - 1, sizeof(V));
+        std::memcpy(&h1, w + d1 - ws, sizeof(V));
+        std::memcpy(&l1, w + d1 - ws - 1, sizeof(V));
+        h0 = (h0 << bs) | (l0 >> back);
+        h1 = (h1 << bs) | (l1 >> back);
+        std::memcpy(w + d0, &h0, sizeof(V));
+        std::memcpy(w + d1, &h1, sizeof(V));
+        top = d1;
+    }
+    for (std::size_t k = top; k-- > ws + 1;) w[k] = (w[k - ws] << bs) | (w[k - ws - 1] >> back);
+    w[ws] = w[0] << bs;
+}
+
+template <class V>
+GRAPE_INLINE void shift_down_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs) noexcept {
+    constexpr std::size_t lanes = sizeof(V) / sizeof(Word);
+    const unsigned back = 64 - bs;
+    const std::size_t last = n - ws - 1;  // the top word of the result with source bits
+    std::size_t k = 0;
+    for (; k + 2 * lanes <= last; k += 2 * lanes) {
+        V l0, h0, l1, h1;
+        std::memcpy(&l0, w + k + ws, sizeof(V));
+        std::memcpy(&h0, w + k + ws + 1, sizeof(V));
+        std::memcpy(&l1, w + k + lanes + ws, sizeof(V));
+        std::memcpy(&h1, w + k + lanes + ws + 1, sizeof(V));
+        l0 = (l0 >> bs) | (h0 << back);
+        l1 = (l1 >> bs) | (h1 << back);
+        std::memcpy(w + k, &l0, sizeof(V));
+        std::memcpy(w + k + lanes, &l1, sizeof(V));
+    }
+    for (; k < last; ++k) w[k] = (w[k + ws] >> bs) | (w[k + ws + 1] << back);
+    w[last] = w[n - 1] >> bs;
+}
 #else
 using Word2 = Word;  // no vector extensions: plain word loops
 using Word4 = Word;
@@ -85,7 +132,70 @@ template <class V>
 inline void flip_loop(Word* a, std::size_t n) noexcept {
     for (std::size_t i = 0; i < n; ++i) a[i] = ~a[i];
 }
+template <class V>
+inline void shift_up_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs) noexcept {
+    for (std::size_t k = n; k-- > ws + 1;) w[k] = (w[k - ws] << bs) | (w[k - ws - 1] >> (64 - bs));
+    w[ws] = w[0] << bs;
+}
+template <class V>
+inline void shift_down_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs) noexcept {
+    const std::size_t last = n - ws - 1;
+    for (std::size_t k = 0; k < last; ++k) w[k] = (w[k + ws] >> bs) | (w[k + ws + 1] << (64 - bs));
+    w[last] = w[n - 1] >> bs;
+}
 #endif
+
+// The whole-word part of a shift is a memmove, the rest a vector loop.
+template <class V>
+GRAPE_INLINE void shift_up_words(Word* w, std::size_t n, std::size_t s) noexcept {
+    if (n == 0) return;  // (w may be null: no memset on it)
+    const std::size_t ws = s / 64;
+    const unsigned bs = static_cast<unsigned>(s % 64);
+    if (ws >= n) {
+        std::memset(w, 0, n * sizeof(Word));
+        return;
+    }
+    if (bs == 0) {
+        std::memmove(w + ws, w, (n - ws) * sizeof(Word));
+    } else {
+        shift_up_loop<V>(w, n, ws, bs);
+    }
+    std::memset(w, 0, ws * sizeof(Word));
+}
+template <class V>
+GRAPE_INLINE void shift_down_words(Word* w, std::size_t n, std::size_t s) noexcept {
+    if (n == 0) return;  // (w may be null: no memset on it)
+    const std::size_t ws = s / 64;
+    const unsigned bs = static_cast<unsigned>(s % 64);
+    if (ws >= n) {
+        std::memset(w, 0, n * sizeof(Word));
+        return;
+    }
+    if (bs == 0) {
+        std::memmove(w, w + ws, (n - ws) * sizeof(Word));
+    } else {
+        shift_down_loop<V>(w, n, ws, bs);
+    }
+    std::memset(w + (n - ws), 0, ws * sizeof(Word));
+}
+
+// Blocks of four words are skipped whole while their set bits do not reach the rank.
+GRAPE_INLINE std::size_t find_rank_loop(const Word* w, std::size_t n, std::size_t rank, std::size_t& before) noexcept {
+    std::size_t seen = 0, k = 0;
+    for (; k + 4 <= n; k += 4) {
+        const std::size_t block = static_cast<std::size_t>(std::popcount(w[k]) + std::popcount(w[k + 1]) +
+                                                           std::popcount(w[k + 2]) + std::popcount(w[k + 3]));
+        if (seen + block > rank) break;
+        seen += block;
+    }
+    for (; k < n; ++k) {
+        const std::size_t c = static_cast<std::size_t>(std::popcount(w[k]));
+        if (seen + c > rank) break;
+        seen += c;
+    }
+    before = seen;
+    return k;
+}
 
 // Four accumulators keep the popcnt units busy (one chain would be latency bound).
 GRAPE_INLINE std::size_t count_loop(const Word* w, std::size_t n) noexcept {
@@ -118,6 +228,15 @@ GRAPE_INLINE std::size_t count_loop(const Word* w, std::size_t n) noexcept {
         binary_loop<V, Op::and_not>(a, b, n);                                                                     \
     }                                                                                                         \
     GRAPE_TARGET(features) void flip(Word* a, std::size_t n) noexcept { flip_loop<V>(a, n); }                    \
+    GRAPE_TARGET(features) void shift_up(Word* a, std::size_t n, std::size_t s) noexcept {                    \
+        shift_up_words<V>(a, n, s);                                                                           \
+    }                                                                                                         \
+    GRAPE_TARGET(features) void shift_down(Word* a, std::size_t n, std::size_t s) noexcept {                  \
+        shift_down_words<V>(a, n, s);                                                                         \
+    }                                                                                                         \
+    GRAPE_TARGET(features) std::size_t find_rank(const Word* w, std::size_t n, std::size_t r, std::size_t& b) noexcept { \
+        return find_rank_loop(w, n, r, b);                                                                    \
+    }                                                                                                         \
     }
 
 namespace generic {
@@ -127,19 +246,27 @@ void or_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2
 void xor_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2, Op::xor_>(a, b, n); }
 void and_not(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2, Op::and_not>(a, b, n); }
 void flip(Word* a, std::size_t n) noexcept { flip_loop<Word2>(a, n); }
+void shift_up(Word* a, std::size_t n, std::size_t s) noexcept { shift_up_words<Word2>(a, n, s); }
+void shift_down(Word* a, std::size_t n, std::size_t s) noexcept { shift_down_words<Word2>(a, n, s); }
+std::size_t find_rank(const Word* w, std::size_t n, std::size_t r, std::size_t& b) noexcept {
+    return find_rank_loop(w, n, r, b);
+}
 }  // namespace generic
 
-constexpr WordKernels generic_kernels{generic::count,   generic::and_with, generic::or_with, generic::xor_with,
-                                      generic::and_not, generic::flip,     "generic"};
+#define GRAPE_KERNEL_TABLE(ns, name)                                                                       \
+    WordKernels {                                                                                          \
+        ns::count, ns::and_with, ns::or_with, ns::xor_with, ns::and_not, ns::flip, ns::shift_up, ns::shift_down, \
+            ns::find_rank, name                                                                            \
+    }
+
+constexpr WordKernels generic_kernels = GRAPE_KERNEL_TABLE(generic, "generic");
 
 #if GRAPE_BITS_X86_DISPATCH
 GRAPE_DEFINE_KERNELS(popcnt, "popcnt", Word2)
 GRAPE_DEFINE_KERNELS(avx2, "avx2,popcnt", Word4)
 
-constexpr WordKernels popcnt_kernels{popcnt::count,   popcnt::and_with, popcnt::or_with, popcnt::xor_with,
-                                     popcnt::and_not, popcnt::flip,     "popcnt"};
-constexpr WordKernels avx2_kernels{avx2::count,   avx2::and_with, avx2::or_with, avx2::xor_with,
-                                   avx2::and_not, avx2::flip,     "avx2+popcnt"};
+constexpr WordKernels popcnt_kernels = GRAPE_KERNEL_TABLE(popcnt, "popcnt");
+constexpr WordKernels avx2_kernels = GRAPE_KERNEL_TABLE(avx2, "avx2+popcnt");
 
 bool has_popcnt() noexcept {
     __builtin_cpu_init();  // safe to call early (e.g. from a static initializer)
