@@ -297,7 +297,11 @@ public:
     friend BitVector operator>>(BitVector a, std::size_t n) noexcept { return a >>= n; }
 
     /// Appends a bit (amortized constant time).
-    void push_back(bool value);
+    void push_back(bool value) {
+        if (size_ % word_bits == 0) return push_back_in_new_word(value);
+        words_.back() |= static_cast<Word>(value) << (size_ % word_bits);
+        ++size_;
+    }
     /// Removes the last bit; throws grape::Error on an empty vector.
     void pop_back();
     /// Inserts `count` bits equal to `value` before bit `pos` (pos == size() appends); bits
@@ -380,13 +384,7 @@ public:
     /// vector first; at equal sizes the vector read as an unsigned number, bit i worth 2^i
     /// (the highest bit where they differ decides: the one with that bit clear comes first).
     /// Note that this is not the order of the strings of to_string().
-    friend std::strong_ordering operator<=>(const BitVector& a, const BitVector& b) noexcept {
-        if (a.size_ != b.size_) return a.size_ <=> b.size_;
-        for (std::size_t k = a.words_.size(); k-- > 0;) {
-            if (a.words_[k] != b.words_[k]) return a.words_[k] <=> b.words_[k];
-        }
-        return std::strong_ordering::equal;
-    }
+    friend std::strong_ordering operator<=>(const BitVector& a, const BitVector& b) noexcept;
     /// A hash of the size and the bits (std::hash<BitVector> uses it).
     std::size_t hash() const noexcept;
     /// The string form: one '0'/'1' per bit, bit 0 first (reads like an array; note that
@@ -396,6 +394,7 @@ public:
 private:
     std::size_t find_from(std::size_t i) const noexcept;
     std::size_t find_before(std::size_t i) const noexcept;
+    void push_back_in_new_word(bool value);
     void clear_tail() noexcept;
     void check_same_size(const BitVector& other, const char* operation) const;
     void check_range(std::size_t first, std::size_t last, const char* operation) const;

@@ -36,10 +36,10 @@ BitVector& BitVector::operator>>=(std::size_t n) noexcept {
     return *this;
 }
 
-void BitVector::push_back(bool value) {
+// push_back() when the last word is full (or there is none).
+void BitVector::push_back_in_new_word(bool value) {
     if (size_ == max_bits) throw Error("BitVector::push_back: size " + std::to_string(size_) + " is the largest");
-    if (size_ % word_bits == 0) words_.push_back(0);
-    if (value) words_.back() |= Word{1} << (size_ % word_bits);
+    words_.push_back(static_cast<Word>(value));
     ++size_;
 }
 

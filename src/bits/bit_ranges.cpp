@@ -6,7 +6,7 @@
 
 #include "word_kernels.hpp"
 
-#include <algorithm>
+#include <cstring>
 
 namespace grape {
 namespace {
@@ -54,8 +54,9 @@ void BitVector::set_range(std::size_t first, std::size_t last, bool value) {
     auto apply = [value](Word& w, Word m) { w = value ? (w | m) : (w & ~m); };
     apply(words_[s.k0], s.m0);
     if (s.k1 == s.k0) return;
-    std::fill(words_.begin() + static_cast<std::ptrdiff_t>(s.k0 + 1), words_.begin() + static_cast<std::ptrdiff_t>(s.k1),
-              value ? ~Word{0} : Word{0});
+    // memset, not std::fill: the fill value is not a constant, so the compiler would not make
+    // the loop a memset by itself.
+    std::memset(words_.data() + s.k0 + 1, value ? 0xFF : 0, (s.k1 - s.k0 - 1) * sizeof(Word));
     apply(words_[s.k1], s.m1);
 }
 

@@ -161,6 +161,22 @@ void BitVector::reserve(std::size_t size) {
     words_.reserve(words_for(size));
 }
 
+std::strong_ordering operator<=>(const BitVector& a, const BitVector& b) noexcept {
+    if (a.size_ != b.size_) return a.size_ <=> b.size_;
+    const BitVector::Word* x = a.words_.data();
+    const BitVector::Word* y = b.words_.data();
+    for (std::size_t k = a.words_.size(); k > 0;) {
+        // Four words per test while they are equal: equal keys are compared in full.
+        if (k >= 4 && ((x[k - 1] ^ y[k - 1]) | (x[k - 2] ^ y[k - 2]) | (x[k - 3] ^ y[k - 3]) | (x[k - 4] ^ y[k - 4])) == 0) {
+            k -= 4;
+            continue;
+        }
+        --k;
+        if (x[k] != y[k]) return x[k] <=> y[k];
+    }
+    return std::strong_ordering::equal;
+}
+
 std::size_t BitVector::hash() const noexcept {
     // Each word goes through the splitmix64 finalizer together with the running state, so a
     // change in any bit reaches every bit of the result (a plain multiply only carries
