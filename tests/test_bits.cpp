@@ -2,6 +2,7 @@
 // driven by the same random operations, closed forms (pair indices, counts) and invariants.
 #include <grape/bits.hpp>
 #include <grape/error.hpp>
+#include <grape/sparse_bits.hpp>
 
 #include "../src/bits/word_kernels.hpp"
 
@@ -32,6 +33,7 @@ namespace {
 using grape::BitVector;
 using grape::KeyState;
 using grape::PairBits;
+using grape::SparseBitVector;
 
 using grape::testing::expect_error;
 
@@ -1152,6 +1154,126 @@ TEST(KeyState, RepeatsMatchATickModelOverRandomFrames) {
         keys.end_frame(static_cast<double>(ticks) / 16.0);
         now += ticks;
     }
+}
+
+
+// ---- SparseBitVector: against the model, across the array/bitmap limit ----
+
+// Blocks whose model count exceeds the array limit: those must be bitmaps (canonical form).
+std::size_t model_bitmap_blocks(const Model& m) {
+    std::size_t blocks = 0;
+    for (std::size_t first = 0; first < m.size(); first += SparseBitVector::block_bits)
+        blocks += model_count(m, first, std::min(m.size(), first + SparseBitVector::block_bits)) > SparseBitVector::array_limit;
+    return blocks;
+}
+
+void expect_sparse_matches(const SparseBitVector& v, const Model& m) {
+    ASSERT_EQ(v.size(), m.size());
+    std::vector<std::size_t> expected, walked;
+    for (std::size_t i = 0; i < m.size(); ++i)
+        if (m[i]) expected.push_back(i);
+    v.for_each_set([&](std::size_t i) { walked.push_back(i); });
+    ASSERT_EQ(walked, expected);
+    EXPECT_EQ(v.count(), expected.size());
+    EXPECT_EQ(v.any(), !expected.empty());
+    EXPECT_EQ(v.bitmap_blocks(), model_bitmap_blocks(m));
+    EXPECT_EQ(v.to_bits(), BitVector::from_bools(m));
+    for (std::size_t k = 0; k < 50 && !m.empty(); ++k) {
+        const std::size_t i = (k * 7919 + 13) % m.size();
+        ASSERT_EQ(v.get(i), static_cast<bool>(m[i])) << "bit " << i;
+    }
+}
+
+// A model with bits clustered in one random block (dense enough to pass the array limit)
+// plus a thin sprinkle elsewhere.
+Model clustered_model(std::mt19937_64& rng, std::size_t size) {
+    Model m(size);
+    if (size == 0) return m;
+    const double dense = std::uniform_real_distribution<double>(0.0, 0.15)(rng), thin = 0.002;
+    const std::size_t hot = rng() % (size / SparseBitVector::block_bits + 1);
+    std::bernoulli_distribution in_hot(dense), elsewhere(thin);
+    for (std::size_t i = 0; i < size; ++i) m[i] = i / SparseBitVector::block_bits == hot ? in_hot(rng) : elsewhere(rng);
+    return m;
+}
+
+TEST(SparseBitVector, RandomOperationsMatchVectorOfBool) {
+    using grape::SparseBitVector;
+    std::mt19937_64 rng(20261217);
+    const std::size_t sizes[] = {0, 1, 65535, 65536, 65537, 140000};
+    for (int trial = 0; trial < 12; ++trial) {
+        const std::size_t n = sizes[trial % 6];
+        Model m = clustered_model(rng, n);
+        SparseBitVector v = SparseBitVector::from_bits(BitVector::from_bools(m));
+        expect_sparse_matches(v, m);
+        for (int op = 0; op < 24 && n > 0; ++op) {
+            SCOPED_TRACE("trial " + std::to_string(trial) + " op " + std::to_string(op));
+            switch (rng() % 5) {
+                case 0: {  // a burst of sets or clears in one block: crosses the array limit either way
+                    const std::size_t base = (rng() % (n / SparseBitVector::block_bits + 1)) * SparseBitVector::block_bits;
+                    const bool value = rng() % 2 == 0;
+                    for (int k = 0; k < 3000; ++k) {
+                        const std::size_t i = std::min(n - 1, base + rng() % SparseBitVector::block_bits);
+                        if (k % 2 == 0) {
+                            v.set(i, value);
+                            m[i] = value;
+                        } else {
+                            EXPECT_EQ(v.test_and_set(i), static_cast<bool>(m[i]));
+                            m[i] = true;
+                        }
+                    }
+                    break;
+                }
+                case 1: case 2: {
+                    const Model o = clustered_model(rng, n);
+                    const SparseBitVector ov = SparseBitVector::from_bits(BitVector::from_bools(o));
+                    const bool is_and = rng() % 2 == 0;
+                    if (is_and) v &= ov; else v |= ov;
+                    for (std::size_t i = 0; i < n; ++i) m[i] = is_and ? (m[i] && o[i]) : (m[i] || o[i]);
+                    break;
+                }
+                case 3: {
+                    const std::size_t i = rng() % n;
+                    v.reset(i);
+                    m[i] = false;
+                    const SparseBitVector& same = v;
+                    v &= same;
+                    v |= same;
+                    break;
+                }
+                default:
+                    if (rng() % 4 == 0) {
+                        v.clear_all();
+                        m.assign(n, false);
+                    }
+                    break;
+            }
+            expect_sparse_matches(v, m);
+            EXPECT_EQ(v, SparseBitVector::from_bits(BitVector::from_bools(m)));  // one form per set of bits
+            if (HasFatalFailure()) return;
+        }
+    }
+}
+
+TEST(SparseBitVector, StoresSparseBitsCompactly) {
+    using grape::SparseBitVector;
+    SparseBitVector v(10'000'000);
+    for (std::size_t i = 0; i < 10'000'000; i += 1000) v.set(i);  // density 1/1000
+    EXPECT_EQ(v.count(), 10'000u);
+    EXPECT_EQ(v.bitmap_blocks(), 0u);
+    // 2 bytes per set bit plus one record per block (153 blocks), far below the 1.25 MB of a
+    // BitVector; growth by insertion may leave each array up to twice its size until
+    // shrink_to_fit().
+    const std::size_t table = 153 * sizeof(std::vector<int>) * 3;  // a record is at most 3 vectors wide
+    EXPECT_LE(v.memory_bytes(), 2 * 2 * 10'000 + table);
+    v.shrink_to_fit();
+    EXPECT_LE(v.memory_bytes(), 2 * 10'000 + table);
+    EXPECT_EQ(v.count(), 10'000u);
+    SparseBitVector w(10'000'000);
+    expect_error([&] { v &= SparseBitVector(5); }, {"SparseBitVector::operator&=", "size 5", "(10000000)"});
+    expect_error([&] { v |= SparseBitVector(5); }, {"SparseBitVector::operator|="});
+    v &= w;
+    EXPECT_FALSE(v.any());
+    EXPECT_EQ(v, w);
 }
 
 }  // namespace
