@@ -164,8 +164,7 @@ SparseBitVector& SparseBitVector::operator&=(const SparseBitVector& other) {
         if (this == &other) continue;
         const bool xb = !x.bitmap.empty(), yb = !y.bitmap.empty();
         if (xb && yb) {
-            kernels.and_with(x.bitmap.data(), y.bitmap.data(), block_words);
-            x.count = static_cast<std::uint32_t>(kernels.count(x.bitmap.data(), block_words));
+            x.count = static_cast<std::uint32_t>(kernels.and_count(x.bitmap.data(), y.bitmap.data(), block_words));
         } else if (xb) {  // the result is the array's offsets that the bitmap has
             std::vector<std::uint16_t> array;
             array.reserve(y.array.size());

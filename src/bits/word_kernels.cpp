@@ -8,6 +8,10 @@
 #include <bit>
 #include <cstring>
 
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#include <immintrin.h>
+#endif
+
 namespace grape::detail {
 namespace {
 
@@ -211,6 +215,50 @@ GRAPE_INLINE std::size_t find_rank_loop(const Word* w, std::size_t n, std::size_
     return k;
 }
 
+// a &= b and the count of the result in one pass, four popcount accumulators.
+GRAPE_INLINE std::size_t and_count_loop(Word* a, const Word* b, std::size_t n) noexcept {
+    std::size_t c0 = 0, c1 = 0, c2 = 0, c3 = 0, i = 0;
+    for (; i + 4 <= n; i += 4) {
+        c0 += static_cast<std::size_t>(std::popcount(a[i] &= b[i]));
+        c1 += static_cast<std::size_t>(std::popcount(a[i + 1] &= b[i + 1]));
+        c2 += static_cast<std::size_t>(std::popcount(a[i + 2] &= b[i + 2]));
+        c3 += static_cast<std::size_t>(std::popcount(a[i + 3] &= b[i + 3]));
+    }
+    for (; i < n; ++i) c0 += static_cast<std::size_t>(std::popcount(a[i] &= b[i]));
+    return c0 + c1 + c2 + c3;
+}
+
+#if GRAPE_BITS_X86_DISPATCH
+// The AVX2 version counts with a nibble table in a byte shuffle (Muła, Kurz and Lemire,
+// "Faster population counts using AVX2 instructions", 2018): 32 bytes per step, where popcnt
+// takes four steps of 8. The byte counts (at most 8 each) add up over 31 steps before they are
+// summed into 64-bit lanes, so no byte overflows.
+GRAPE_TARGET("avx2,popcnt") std::size_t and_count_avx2(Word* a, const Word* b, std::size_t n) noexcept {
+    const __m256i table = _mm256_setr_epi8(0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4,  //
+                                           0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4);
+    const __m256i low = _mm256_set1_epi8(0x0F);
+    __m256i total = _mm256_setzero_si256();
+    std::size_t i = 0;
+    while (i + 4 <= n) {
+        __m256i bytes = _mm256_setzero_si256();
+        for (int step = 0; step < 31 && i + 4 <= n; ++step, i += 4) {
+            const __m256i x = _mm256_and_si256(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i)),
+                                               _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i)));
+            _mm256_storeu_si256(reinterpret_cast<__m256i*>(a + i), x);
+            const __m256i lo = _mm256_shuffle_epi8(table, _mm256_and_si256(x, low));
+            const __m256i hi = _mm256_shuffle_epi8(table, _mm256_and_si256(_mm256_srli_epi16(x, 4), low));
+            bytes = _mm256_add_epi8(bytes, _mm256_add_epi8(lo, hi));
+        }
+        total = _mm256_add_epi64(total, _mm256_sad_epu8(bytes, _mm256_setzero_si256()));
+    }
+    alignas(32) std::uint64_t lanes[4];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), total);
+    std::size_t c = static_cast<std::size_t>(lanes[0] + lanes[1] + lanes[2] + lanes[3]);
+    for (; i < n; ++i) c += static_cast<std::size_t>(std::popcount(a[i] &= b[i]));
+    return c;
+}
+#endif
+
 // One set of kernels per instruction set; the macro stamps out identical bodies so that each
 // is compiled (and inlined into) with its own target features.
 #define GRAPE_DEFINE_KERNELS(ns, features, V)                                                                     \
@@ -247,6 +295,7 @@ void or_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2
 void xor_with(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2, Op::xor_>(a, b, n); }
 void and_not(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<Word2, Op::and_not>(a, b, n); }
 void flip(Word* a, std::size_t n) noexcept { flip_loop<Word2>(a, n); }
+std::size_t and_count(Word* a, const Word* b, std::size_t n) noexcept { return and_count_loop(a, b, n); }
 void shift_up(Word* a, std::size_t n, std::size_t s) noexcept { shift_up_words<Word2>(a, n, s); }
 void shift_down(Word* a, std::size_t n, std::size_t s) noexcept { shift_down_words<Word2>(a, n, s); }
 std::size_t find_rank(const Word* w, std::size_t n, std::size_t r, std::size_t& b) noexcept {
@@ -254,20 +303,25 @@ std::size_t find_rank(const Word* w, std::size_t n, std::size_t r, std::size_t& 
 }
 }  // namespace generic
 
-#define GRAPE_KERNEL_TABLE(ns, name)                                                                       \
+#define GRAPE_KERNEL_TABLE(ns, and_count_fn, name)                                                                       \
     WordKernels {                                                                                          \
-        ns::count, ns::and_with, ns::or_with, ns::xor_with, ns::and_not, ns::flip, ns::shift_up, ns::shift_down, \
-            ns::find_rank, name                                                                            \
+        ns::count, ns::and_with, ns::or_with, ns::xor_with, ns::and_not, ns::flip, and_count_fn, ns::shift_up, \
+            ns::shift_down, ns::find_rank, name                                                            \
     }
 
-constexpr WordKernels generic_kernels = GRAPE_KERNEL_TABLE(generic, "generic");
+constexpr WordKernels generic_kernels = GRAPE_KERNEL_TABLE(generic, generic::and_count, "generic");
 
 #if GRAPE_BITS_X86_DISPATCH
 GRAPE_DEFINE_KERNELS(popcnt, "popcnt", Word2)
+namespace popcnt {
+GRAPE_TARGET("popcnt") std::size_t and_count(Word* a, const Word* b, std::size_t n) noexcept {
+    return and_count_loop(a, b, n);
+}
+}  // namespace popcnt
 GRAPE_DEFINE_KERNELS(avx2, "avx2,popcnt", Word4)
 
-constexpr WordKernels popcnt_kernels = GRAPE_KERNEL_TABLE(popcnt, "popcnt");
-constexpr WordKernels avx2_kernels = GRAPE_KERNEL_TABLE(avx2, "avx2+popcnt");
+constexpr WordKernels popcnt_kernels = GRAPE_KERNEL_TABLE(popcnt, popcnt::and_count, "popcnt");
+constexpr WordKernels avx2_kernels = GRAPE_KERNEL_TABLE(avx2, and_count_avx2, "avx2+popcnt");
 
 bool has_popcnt() noexcept {
     __builtin_cpu_init();  // safe to call early (e.g. from a static initializer)

@@ -18,6 +18,8 @@ struct WordKernels {
     void (*xor_with)(Word* a, const Word* b, std::size_t n) noexcept;  ///< a ^= b
     void (*and_not)(Word* a, const Word* b, std::size_t n) noexcept;   ///< a &= ~b
     void (*flip)(Word* a, std::size_t n) noexcept;                     ///< a = ~a
+    /// a &= b, returning the set bits of the result (one pass: the sparse vector's bitmap blocks).
+    std::size_t (*and_count)(Word* a, const Word* b, std::size_t n) noexcept;
     /// words[0, n) as one 64n-bit number, shifted in place towards the high end by s bits
     /// (any s; zeros come in at the bottom, bits past the top are lost).
     void (*shift_up)(Word* words, std::size_t n, std::size_t s) noexcept;
