@@ -1281,4 +1281,52 @@ TEST(SparseBitVector, StoresSparseBitsCompactly) {
     EXPECT_EQ(v, w);
 }
 
+
+TEST(SparsePairBits, MatchesPairBitsAndScalesToManyObjects) {
+    using grape::SparsePairBits;
+    std::mt19937_64 rng(23);
+    // Against PairBits itself on 300 objects, then random pairs of 100,000 objects (4,999,950,000
+    // pairs: 625 MB as a PairBits) against a sorted model.
+    PairBits dense(300);
+    SparsePairBits sparse(300);
+    for (int t = 0; t < 5000; ++t) {
+        const std::size_t i = rng() % 300, j = rng() % 300;
+        if (i == j) continue;
+        ASSERT_EQ(sparse.test_and_set(i, j), dense.test_and_set(j, i));
+        ASSERT_EQ(sparse.index(i, j), dense.index(i, j));
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> a, b;
+    dense.for_each_set([&](std::size_t i, std::size_t j) { a.emplace_back(i, j); });
+    sparse.for_each_set([&](std::size_t i, std::size_t j) { b.emplace_back(i, j); });
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(sparse.bits().to_bits(), dense.bits());
+    EXPECT_EQ(sparse.pair(sparse.index(17, 4)), std::make_pair(std::size_t{4}, std::size_t{17}));
+
+    SparsePairBits many(100'000);
+    EXPECT_EQ(many.pair_count(), 4'999'950'000u);
+    std::vector<std::pair<std::size_t, std::size_t>> model;
+    for (int t = 0; t < 3000; ++t) {
+        std::size_t i = rng() % 100'000, j = rng() % 100'000;
+        if (i == j) continue;
+        if (i > j) std::swap(i, j);
+        many.set(j, i);
+        model.emplace_back(i, j);
+    }
+    many.set(99'998, 99'999);  // the last pair
+    model.emplace_back(99'998, 99'999);
+    std::sort(model.begin(), model.end());
+    model.erase(std::unique(model.begin(), model.end()), model.end());
+    std::vector<std::pair<std::size_t, std::size_t>> walked;
+    many.for_each_set([&](std::size_t i, std::size_t j) { walked.emplace_back(i, j); });
+    EXPECT_EQ(walked, model);
+    EXPECT_EQ(many.bits().count(), model.size());
+    EXPECT_TRUE(many.test(99'999, 99'998));
+    EXPECT_LT(many.bits().memory_bytes(), 8'000'000u);  // the block table (76,295 records) and the arrays
+    expect_error([&] { (void)many.index(5, 5); }, {"SparsePairBits", "both 5"});
+    expect_error([&] { many.set(0, 100'000); }, {"SparsePairBits", "index 100000", "object_count 100000"});
+    expect_error([&] { (void)many.pair(many.pair_count()); }, {"SparsePairBits::pair", "pair_count 4999950000"});
+    many.clear_all();
+    EXPECT_FALSE(many.bits().any());
+}
+
 }  // namespace
