@@ -7,22 +7,29 @@
 //   grape::PairBits tested(objects.size());     // n(n−1)/2 bits (Ericson, RTCD)
 //   if (!tested.test_and_set(a, b)) { collide(a, b); }
 //
-// Whole-vector operations (count, &=, |=, ^=, ~, set_all) run over 64-bit words and pick
-// the machine's instructions at run time (popcnt, AVX2), so a plain -O2 build is fast.
-// Bits past size() are always zero: they never show in count(), all(), ~, ==, or hash.
+// Whole-vector operations (count, &=, |=, ^=, ~, set_all, shifts, range counts, rank, select)
+// run over 64-bit words and pick the machine's instructions at run time (popcnt, AVX2), so a
+// plain -O2 build is fast. Bits past size() are always zero: they never show in count(),
+// all(), ~, ==, <, hash or the saved bytes.
 #pragma once
 
 #include <bit>
+#include <bitset>
 #include <cassert>
+#include <compare>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
 #include <iosfwd>
 #include <iterator>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace grape {
@@ -90,7 +97,7 @@ public:
         std::size_t base_ = 0;        // index of bit 0 of *word_
     };
 
-    /// The set bits as a range: `for (std::size_t i : bits.set_bits())`.
+    /// The set bits of a vector that outlives the range: `for (std::size_t i : bits.set_bits())`.
     class SetBits {
     public:
         SetBitIterator begin() const noexcept { return {words_, words_ + word_count_}; }
@@ -102,14 +109,114 @@ public:
         const Word* words_;
         std::size_t word_count_;
     };
+    /// The set bits of a temporary, which the range keeps alive: `for (i : (a & b).set_bits())`.
+    class OwnedSetBits;
+
+    /// Bit i of a vector as an assignable value (`bits[i] = true`), like std::bitset::reference.
+    /// Valid while the vector lives and is not resized.
+    class Reference {
+    public:
+        Reference(const Reference&) noexcept = default;
+        /// The bit's value.
+        operator bool() const noexcept { return (*word_ & mask_) != 0; }
+        /// The bit's value, inverted.
+        bool operator~() const noexcept { return (*word_ & mask_) == 0; }
+        /// Sets the bit to `value`.
+        Reference& operator=(bool value) noexcept {
+            *word_ = value ? (*word_ | mask_) : (*word_ & ~mask_);
+            return *this;
+        }
+        /// Sets the bit to the other bit's value (not a rebinding).
+        Reference& operator=(const Reference& other) noexcept { return *this = static_cast<bool>(other); }
+        /// bit = bit | value.
+        Reference& operator|=(bool value) noexcept {
+            if (value) *word_ |= mask_;
+            return *this;
+        }
+        /// bit = bit & value.
+        Reference& operator&=(bool value) noexcept {
+            if (!value) *word_ &= ~mask_;
+            return *this;
+        }
+        /// bit = bit ^ value.
+        Reference& operator^=(bool value) noexcept {
+            if (value) *word_ ^= mask_;
+            return *this;
+        }
+        /// Inverts the bit.
+        Reference& flip() noexcept {
+            *word_ ^= mask_;
+            return *this;
+        }
+
+    private:
+        friend class BitVector;
+        Reference(Word* word, Word mask) noexcept : word_(word), mask_(mask) {}
+        Word* word_;
+        Word mask_;
+    };
 
     /// An empty vector (size 0).
     BitVector() noexcept = default;
+    BitVector(const BitVector&) = default;
+    BitVector& operator=(const BitVector&) = default;
+    /// Takes the bits over; `other` is left empty (size 0).
+    BitVector(BitVector&& other) noexcept : words_(std::move(other.words_)), size_(std::exchange(other.size_, 0)) {
+        other.words_.clear();
+    }
+    /// Takes the bits over; `other` is left empty (size 0).
+    BitVector& operator=(BitVector&& other) noexcept {
+        if (this != &other) {
+            words_ = std::move(other.words_);
+            size_ = std::exchange(other.size_, 0);
+            other.words_.clear();
+        }
+        return *this;
+    }
     /// `size` bits, all equal to `value`.
     explicit BitVector(std::size_t size, bool value = false);
     /// Parses the string form: '0'/'1' characters, bit 0 first (throws grape::Error on any
     /// other character, naming its position).
     static BitVector from_string(std::string_view bits);
+    /// The same bits as a std::vector<bool> (bit i = bools[i]).
+    static BitVector from_bools(const std::vector<bool>& bools);
+    /// The same bits as a std::bitset (bit i = bitset[i], so size() == N).
+    template <std::size_t N>
+    static BitVector from_bitset(const std::bitset<N>& bitset) {
+        BitVector result(N);
+        for (std::size_t i = 0; i < N; ++i)
+            if (bitset[i]) result.set(i);
+        return result;
+    }
+    /// The bits as a std::vector<bool> of size(), bit i at [i].
+    std::vector<bool> to_bools() const;
+    /// The bits as a std::bitset<N>, bit i at [i]; throws grape::Error when size() != N.
+    template <std::size_t N>
+    std::bitset<N> to_bitset() const {
+        check_bitset_size(N);
+        std::bitset<N> result;
+        for_each_set([&result](std::size_t i) { result.set(i); });
+        return result;
+    }
+
+    /// Binary form, all integers little-endian (the same bytes on every machine):
+    ///   offset 0   4 bytes   "GRBV"
+    ///   offset 4   uint32    format version, 1
+    ///   offset 8   uint64    n, the number of bits
+    ///   offset 16  uint64 × ⌈n/64⌉  the words: word k holds bits 64k … 64k+63, bit i at
+    ///              position i mod 64 (value 2^(i mod 64)); bits of the last word past n are 0.
+    /// 16 + 8·⌈n/64⌉ bytes in all.
+    std::vector<std::byte> to_bytes() const;
+    /// Reads the binary form; throws grape::Error naming the problem when the magic or version
+    /// is wrong, n is too large, the length is not exactly 16 + 8·⌈n/64⌉ bytes, or a bit past
+    /// n is set.
+    static BitVector from_bytes(std::span<const std::byte> bytes);
+    /// Writes the binary form to a binary stream (throws grape::Error when the write fails).
+    void save(std::ostream& out) const;
+    /// Reads one binary form from a binary stream, leaving the stream just after it; checks as
+    /// from_bytes (a stream that ends early is named with the bytes read). Memory grows with
+    /// the bytes actually read, so a corrupt n cannot allocate more than the stream holds.
+    static BitVector load(std::istream& in);
 
     /// Number of bits.
     std::size_t size() const noexcept { return size_; }
@@ -127,6 +234,12 @@ public:
     }
     /// Bit i, like get().
     bool operator[](std::size_t i) const noexcept { return get(i); }
+    /// Bit i as an assignable reference: `bits[i] = true`, `bits[i] ^= x` (i < size();
+    /// asserted in debug builds).
+    Reference operator[](std::size_t i) noexcept {
+        assert(i < size_ && "BitVector: index out of range");
+        return {&words_[i / word_bits], Word{1} << (i % word_bits)};
+    }
     /// Bit i, checked: throws grape::Error when i >= size().
     bool at(std::size_t i) const;
     /// Sets bit i to `value` (i < size(); asserted in debug builds).
@@ -160,6 +273,51 @@ public:
     /// Inverts every bit (in place ~).
     void flip_all() noexcept;
 
+    /// Sets the bits [first, last) to `value`; throws grape::Error unless first <= last <= size().
+    void set_range(std::size_t first, std::size_t last, bool value = true);
+    /// Clears the bits [first, last); errors as set_range().
+    void reset_range(std::size_t first, std::size_t last) { set_range(first, last, false); }
+    /// Inverts the bits [first, last); errors as set_range().
+    void flip_range(std::size_t first, std::size_t last);
+    /// Number of set bits in [first, last); errors as set_range().
+    std::size_t count_range(std::size_t first, std::size_t last) const;
+    /// Number of set bits before i, in [0, i); throws grape::Error when i > size().
+    std::size_t rank(std::size_t i) const;
+    /// Index of the set bit with `k` set bits before it (k = 0: the first), or npos when
+    /// k >= count(). rank(select(k)) == k.
+    std::size_t select(std::size_t k) const noexcept;
+
+    /// Moves every bit up by n (bit i goes to i + n, as in std::bitset and
+    /// boost::dynamic_bitset): the bits shifted past size() are lost, bits [0, n) become 0.
+    /// In the string form (bit 0 first) the characters move right.
+    BitVector& operator<<=(std::size_t n) noexcept;
+    /// Moves every bit down by n (bit i goes to i − n): bits [0, n) are lost, the top n become 0.
+    BitVector& operator>>=(std::size_t n) noexcept;
+    friend BitVector operator<<(BitVector a, std::size_t n) noexcept { return a <<= n; }
+    friend BitVector operator>>(BitVector a, std::size_t n) noexcept { return a >>= n; }
+
+    /// Appends a bit (amortized constant time).
+    void push_back(bool value) {
+        if (size_ % word_bits == 0) return push_back_in_new_word(value);
+        words_.back() |= static_cast<Word>(value) << (size_ % word_bits);
+        ++size_;
+    }
+    /// Removes the last bit; throws grape::Error on an empty vector.
+    void pop_back();
+    /// Inserts `count` bits equal to `value` before bit `pos` (pos == size() appends); bits
+    /// from pos on move up by count. Throws grape::Error when pos > size().
+    void insert(std::size_t pos, std::size_t count, bool value);
+    /// Inserts one bit before bit `pos`; errors as insert(pos, count, value).
+    void insert(std::size_t pos, bool value) { insert(pos, 1, value); }
+    /// insert(pos, 5) would insert one bit: give the count and the value.
+    template <class T>
+        requires(!std::same_as<T, bool>)
+    void insert(std::size_t pos, T value) = delete;
+    /// Removes the bits [first, last); the bits above move down. Errors as set_range().
+    void erase(std::size_t first, std::size_t last);
+    /// Removes bit `pos`; throws grape::Error when pos >= size().
+    void erase(std::size_t pos);
+
     /// Bitwise and; throws grape::Error when sizes differ.
     BitVector& operator&=(const BitVector& other);
     /// Bitwise or; throws grape::Error when sizes differ.
@@ -191,8 +349,17 @@ public:
     std::size_t find_first() const noexcept { return find_from(0); }
     /// Index of the lowest set bit above i, or npos (any i, including npos, is allowed).
     std::size_t find_next(std::size_t i) const noexcept { return i >= size_ ? npos : find_from(i + 1); }
-    /// The set bits, in increasing order, as a range.
-    SetBits set_bits() const noexcept { return {words_.data(), words_.size()}; }
+    /// Index of the highest set bit, or npos.
+    std::size_t find_last() const noexcept { return find_before(size_); }
+    /// Index of the highest set bit below i, or npos (any i is allowed; i > size() acts as size()).
+    std::size_t find_prev(std::size_t i) const noexcept { return find_before(i < size_ ? i : size_); }
+    /// The set bits, in increasing order, as a range over this vector (which must outlive it).
+    SetBits set_bits() const& noexcept { return {words_.data(), words_.size()}; }
+    /// The set bits of a temporary: the range takes the vector over, so
+    /// `for (auto i : (a & b).set_bits())` reads live memory.
+    OwnedSetBits set_bits() && noexcept;
+    /// The set bits of a const temporary: the range holds a copy.
+    OwnedSetBits set_bits() const&&;
     /// Calls f(i) for every set bit i in increasing order (the fastest walk).
     template <class F>
     void for_each_set(F&& f) const {
@@ -213,6 +380,11 @@ public:
     friend bool operator==(const BitVector& a, const BitVector& b) noexcept {
         return a.size_ == b.size_ && a.words_ == b.words_;
     }
+    /// A total order consistent with ==, so vectors can key std::map and sort: the shorter
+    /// vector first; at equal sizes the vector read as an unsigned number, bit i worth 2^i
+    /// (the highest bit where they differ decides: the one with that bit clear comes first).
+    /// Note that this is not the order of the strings of to_string().
+    friend std::strong_ordering operator<=>(const BitVector& a, const BitVector& b) noexcept;
     /// A hash of the size and the bits (std::hash<BitVector> uses it).
     std::size_t hash() const noexcept;
     /// The string form: one '0'/'1' per bit, bit 0 first (reads like an array; note that
@@ -221,12 +393,33 @@ public:
 
 private:
     std::size_t find_from(std::size_t i) const noexcept;
+    std::size_t find_before(std::size_t i) const noexcept;
+    void push_back_in_new_word(bool value);
     void clear_tail() noexcept;
     void check_same_size(const BitVector& other, const char* operation) const;
+    void check_range(std::size_t first, std::size_t last, const char* operation) const;
+    void check_bitset_size(std::size_t n) const;
 
     std::vector<Word> words_;
     std::size_t size_ = 0;
 };
+
+class BitVector::OwnedSetBits {
+public:
+    SetBitIterator begin() const noexcept {
+        const Word* words = bits_.words_.data();
+        return {words, words + bits_.words_.size()};
+    }
+    std::default_sentinel_t end() const noexcept { return {}; }
+
+private:
+    friend class BitVector;
+    explicit OwnedSetBits(BitVector&& bits) noexcept : bits_(std::move(bits)) {}
+    BitVector bits_;
+};
+
+inline BitVector::OwnedSetBits BitVector::set_bits() && noexcept { return OwnedSetBits(std::move(*this)); }
+inline BitVector::OwnedSetBits BitVector::set_bits() const&& { return OwnedSetBits(BitVector(*this)); }
 
 /// Writes to_string().
 std::ostream& operator<<(std::ostream& out, const BitVector& bits);
@@ -257,47 +450,228 @@ public:
     void clear_all() noexcept { bits_.clear_all(); }
     /// The underlying bits.
     const BitVector& bits() const noexcept { return bits_; }
+    /// The pair (i, j), i < j, at a bit index: the inverse of index(). Throws grape::Error
+    /// when index >= pair_count().
+    std::pair<std::size_t, std::size_t> pair(std::size_t index) const;
+
+    /// Walks the set pairs (i, j), i < j, in index order (i, then j, increasing), keeping the
+    /// row so each step is O(1) amortized (no square root per pair).
+    class SetPairIterator {
+    public:
+        using iterator_concept = std::forward_iterator_tag;
+        using iterator_category = std::forward_iterator_tag;
+        using value_type = std::pair<std::size_t, std::size_t>;
+        using difference_type = std::ptrdiff_t;
+
+        SetPairIterator() noexcept = default;
+        /// The current pair (i, j), i < j.
+        value_type operator*() const noexcept { return {i_, i_ + 1 + (*bit_ - row_start_)}; }
+        /// Moves to the next set pair.
+        SetPairIterator& operator++() noexcept {
+            ++bit_;
+            find_row();
+            return *this;
+        }
+        /// Moves to the next set pair, returning the old position.
+        SetPairIterator operator++(int) noexcept {
+            SetPairIterator old = *this;
+            ++*this;
+            return old;
+        }
+        /// Same position.
+        friend bool operator==(const SetPairIterator& a, const SetPairIterator& b) noexcept { return a.bit_ == b.bit_; }
+        /// Past the last set pair.
+        friend bool operator==(const SetPairIterator& it, std::default_sentinel_t) noexcept {
+            return it.bit_ == std::default_sentinel;
+        }
+
+    private:
+        friend class PairBits;
+        SetPairIterator(BitVector::SetBitIterator bit, std::size_t n) noexcept : bit_(bit), n_(n), row_end_(n - 1) {
+            find_row();
+        }
+        void find_row() noexcept {
+            if (bit_ == std::default_sentinel) return;
+            while (*bit_ >= row_end_) {  // row i holds the n − 1 − i pairs (i, i+1 … n−1)
+                ++i_;
+                row_start_ = row_end_;
+                row_end_ += n_ - 1 - i_;
+            }
+        }
+        BitVector::SetBitIterator bit_;
+        std::size_t n_ = 0;
+        std::size_t i_ = 0;          // row of the current pair
+        std::size_t row_start_ = 0;  // index of (i, i+1)
+        std::size_t row_end_ = 0;    // index of (i+1, i+2): one past the row
+    };
+    /// The set pairs as a range: `for (auto [i, j] : pairs.set_pairs())`.
+    class SetPairs {
+    public:
+        SetPairIterator begin() const noexcept { return {bits_->set_bits().begin(), n_}; }
+        std::default_sentinel_t end() const noexcept { return {}; }
+
+    private:
+        friend class PairBits;
+        SetPairs(const BitVector* bits, std::size_t n) noexcept : bits_(bits), n_(n) {}
+        const BitVector* bits_;
+        std::size_t n_;
+    };
+    /// The set pairs (i, j), i < j, in index order, as a range over this object.
+    SetPairs set_pairs() const& noexcept { return {&bits_, n_}; }
+    /// Not on a temporary: the range would outlive the bits.
+    void set_pairs() const&& = delete;
+    /// Calls f(i, j), i < j, for every set pair in index order.
+    template <class F>
+    void for_each_set(F&& f) const {
+        for (auto it = set_pairs().begin(); it != std::default_sentinel; ++it) {
+            const auto [i, j] = *it;
+            f(i, j);
+        }
+    }
 
 private:
     std::size_t n_;
     BitVector bits_;
 };
 
+/// A type usable as a key code: any integer type but bool, or any enumeration (plain enums
+/// such as SDL_Scancode, integer typedefs such as SDL_Keycode, scoped `enum class` keys).
+template <class K>
+concept KeyCode = (std::integral<K> && !std::same_as<std::remove_cv_t<K>, bool>) || std::is_enum_v<K>;
+
+namespace detail {
+/// The key's value as an index, or BitVector::npos when it is negative or beyond std::size_t.
+template <KeyCode K>
+constexpr std::size_t key_index(K key) noexcept {
+    if constexpr (std::is_enum_v<K>) {
+        return key_index(static_cast<std::underlying_type_t<K>>(key));
+    } else {
+        if constexpr (std::is_signed_v<K>) {
+            if (key < 0) return BitVector::npos;
+        }
+        const auto value = static_cast<unsigned long long>(key);
+        if constexpr (sizeof(unsigned long long) > sizeof(std::size_t)) {
+            if (value > std::numeric_limits<std::size_t>::max()) return BitVector::npos;
+        }
+        return static_cast<std::size_t>(value);
+    }
+}
+/// The key's value as decimal text, for error messages.
+template <KeyCode K>
+std::string key_text(K key) {
+    if constexpr (std::is_enum_v<K>) {
+        return key_text(static_cast<std::underlying_type_t<K>>(key));
+    } else if constexpr (std::is_signed_v<K>) {
+        return std::to_string(static_cast<long long>(key));
+    } else {
+        return std::to_string(static_cast<unsigned long long>(key));
+    }
+}
+}  // namespace detail
+
+/// How a held key repeats (KeyState): the first repeat `delay` seconds after the press, then
+/// one every `interval` seconds while the key stays down. The defaults are typical desktop
+/// settings (X11 and Windows ship 0.25–0.66 s and 25–33 repeats per second).
+struct KeyRepeatDef {
+    double delay = 0.5;          ///< seconds from the press to the first repeat (finite, > 0)
+    double interval = 1.0 / 30;  ///< seconds between repeats (finite, > 0)
+};
+
 /// Which keys are down, as bits indexed by key code, with the edges since the last
 /// end_frame(). Feed it from the event loop (press/release), query it from game logic,
 /// and call end_frame() once per frame after the logic ran. A tap that presses and releases
 /// within one frame still reports pressed_this_frame and released_this_frame.
+///
+/// Key repeat, reported as SDL reports repeated SDL_KEYDOWN events and raylib
+/// IsKeyPressedRepeat(): the state keeps a clock, which starts at 0 and which end_frame(dt)
+/// moves on by dt seconds; events fed during a frame happen at the clock's current time T.
+/// A key pressed at time t0 repeats at t0 + delay + k·interval (k = 0, 1, 2, …) for as long
+/// as it is down. end_frame(dt) gathers the repeats due in (T, T + dt] of the keys down at that
+/// call, and the frame that follows reports them: repeated_this_frame(key), with
+/// repeat_count(key) of them (several when a frame is longer than the interval, as SDL would
+/// queue several events), listed by repeated_keys(). A key released in that frame still
+/// reports the repeats that fell due before (the release is stamped at the end of the span).
+/// The press itself is never a repeat, and a press of a key already down (an OS repeat)
+/// changes nothing. Times are compared as the doubles given: with dyadic times (1/64, 0.5, …)
+/// the reports are exact.
 class KeyState {
 public:
     /// Codes 0 … key_count − 1 are tracked; 512 fits every SDL scancode (SDL_NUM_SCANCODES).
     static constexpr std::size_t default_key_count = 512;
 
-    /// Tracks key codes below `key_count` (throws grape::Error when key_count is 0).
-    explicit KeyState(std::size_t key_count = default_key_count);
+    /// Tracks key codes below `key_count` (throws grape::Error when key_count is 0 or the
+    /// repeat times are not finite and positive).
+    explicit KeyState(std::size_t key_count = default_key_count, KeyRepeatDef repeat = {});
 
     /// One more than the largest key code tracked.
     std::size_t key_count() const noexcept { return down_.size(); }
-    /// Marks the key down (a repeat of a held key is not a new press); throws
-    /// grape::Error when key >= key_count().
-    void press(std::size_t key);
-    /// Marks the key up; throws grape::Error when key >= key_count().
-    void release(std::size_t key);
+    /// The repeat delay and interval.
+    const KeyRepeatDef& repeat() const noexcept { return repeat_; }
+    /// The clock, in seconds: the sum of the dt given to end_frame().
+    double time() const noexcept { return time_; }
+
+    /// Marks the key down at time() (a press of a key already down is not a new press);
+    /// throws grape::Error when the key is negative or >= key_count().
+    template <KeyCode K>
+    void press(K key) { press_index(checked_index(key, "press")); }
+    /// Marks the key up; throws grape::Error when the key is negative or >= key_count().
+    template <KeyCode K>
+    void release(K key) { release_index(checked_index(key, "release")); }
     /// Releases every key (e.g. when the window loses focus), recording the edges.
     void release_all() noexcept;
-    /// The key is down now (false for codes beyond key_count()).
-    bool is_down(std::size_t key) const noexcept { return key < down_.size() && down_.get(key); }
-    /// The key went down since the last end_frame() (false for codes beyond key_count()).
-    bool pressed_this_frame(std::size_t key) const noexcept { return key < pressed_.size() && pressed_.get(key); }
-    /// The key went up since the last end_frame() (false for codes beyond key_count()).
-    bool released_this_frame(std::size_t key) const noexcept {
-        return key < released_.size() && released_.get(key);
-    }
-    /// Forgets this frame's edges; the keys held stay down.
-    void end_frame() noexcept;
 
-    /// A mask for a key combination, sized for this state; throws grape::Error for a code
-    /// >= key_count().
-    BitVector mask(std::initializer_list<std::size_t> keys) const;
+    /// The key is down now (false for codes outside the range).
+    template <KeyCode K>
+    bool is_down(K key) const noexcept { return test(down_, detail::key_index(key)); }
+    /// The key went down since the last end_frame() (false for codes outside the range).
+    template <KeyCode K>
+    bool pressed_this_frame(K key) const noexcept { return test(pressed_, detail::key_index(key)); }
+    /// The key went up since the last end_frame() (false for codes outside the range).
+    template <KeyCode K>
+    bool released_this_frame(K key) const noexcept { return test(released_, detail::key_index(key)); }
+    /// At least one repeat of the held key fell due in the span the last end_frame(dt) covered.
+    template <KeyCode K>
+    bool repeated_this_frame(K key) const noexcept { return test(repeated_, detail::key_index(key)); }
+    /// pressed_this_frame or repeated_this_frame: what text fields and menus act on.
+    template <KeyCode K>
+    bool pressed_or_repeated(K key) const noexcept { return pressed_this_frame(key) || repeated_this_frame(key); }
+    /// How many repeats of the key fell due in that span (0 if none).
+    template <KeyCode K>
+    std::size_t repeat_count(K key) const noexcept { return repeat_count_index(detail::key_index(key)); }
+
+    /// The keys that went down since the last end_frame(), each once, in the order of their
+    /// first press (kept as they happen: no scan over the key codes).
+    std::span<const std::size_t> pressed_keys() const noexcept { return pressed_list_; }
+    /// The keys that went up since the last end_frame(), each once, in order.
+    std::span<const std::size_t> released_keys() const noexcept { return released_list_; }
+    /// The keys with repeats in this frame, each once, in the order they were pressed.
+    std::span<const std::size_t> repeated_keys() const noexcept { return repeated_list_; }
+
+    /// Forgets this frame's edges and repeats; the keys held stay down; the clock stays.
+    void end_frame() noexcept;
+    /// Forgets this frame's edges, moves the clock on by dt seconds and gathers the repeats
+    /// due in (time(), time() + dt] for the next frame. Throws grape::Error when dt is
+    /// negative or not finite. Work: this frame's events plus the keys held.
+    void end_frame(double dt);
+
+    /// A mask for a key combination, sized for this state: `mask({ctrl, s})` with keys of any
+    /// one KeyCode type; throws grape::Error for a key that is negative or >= key_count().
+    template <KeyCode K>
+    BitVector mask(std::initializer_list<K> keys) const {
+        BitVector m(down_.size());
+        for (const K key : keys) m.set(checked_index(key, "mask"));
+        return m;
+    }
+    /// The empty combination (`mask({})`), or keys given as std::size_t.
+    BitVector mask(std::initializer_list<std::size_t> keys) const { return mask<std::size_t>(keys); }
+    /// A mask from keys of mixed KeyCode types: `mask(SDL_SCANCODE_LCTRL, 22)`.
+    template <KeyCode... K>
+        requires(sizeof...(K) > 0)
+    BitVector mask(K... keys) const {
+        BitVector m(down_.size());
+        (m.set(checked_index(keys, "mask")), ...);
+        return m;
+    }
     /// Every key of the mask is down (true for an empty mask); throws grape::Error when the
     /// mask's size is not key_count().
     bool all_down(const BitVector& mask) const { return mask.is_subset_of(down_); }
@@ -307,11 +681,34 @@ public:
     const BitVector& down() const noexcept { return down_; }
 
 private:
-    void check_key(std::size_t key, const char* operation) const;
+    struct Held {
+        std::size_t key;
+        double since;  // clock time of the press
+    };
+    static bool test(const BitVector& bits, std::size_t i) noexcept { return i < bits.size() && bits.get(i); }
+    template <KeyCode K>
+    std::size_t checked_index(K key, const char* operation) const {
+        const std::size_t i = detail::key_index(key);
+        if (i >= down_.size()) key_out_of_range(detail::key_text(key), operation);
+        return i;
+    }
+    [[noreturn]] void key_out_of_range(const std::string& key, const char* operation) const;
+    void press_index(std::size_t key);
+    void release_index(std::size_t key);
+    std::size_t repeat_count_index(std::size_t key) const noexcept;
+    void clear_frame() noexcept;
 
+    KeyRepeatDef repeat_;
+    double time_ = 0.0;
     BitVector down_;
     BitVector pressed_;
     BitVector released_;
+    BitVector repeated_;
+    std::vector<std::size_t> pressed_list_;
+    std::vector<std::size_t> released_list_;
+    std::vector<std::size_t> repeated_list_;
+    std::vector<std::size_t> repeat_counts_;  // parallel to repeated_list_
+    std::vector<Held> held_;                  // the keys down, in the order they were pressed
 };
 
 }  // namespace grape

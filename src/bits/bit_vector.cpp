@@ -8,19 +8,9 @@
 #include <ostream>
 
 namespace grape {
-namespace {
 
-constexpr std::size_t words_for(std::size_t bits) noexcept {
-    return bits / BitVector::word_bits + (bits % BitVector::word_bits != 0 ? 1 : 0);
-}
-
-// Mask of the bits of the last word that lie inside `size` (all ones when it is full).
-constexpr BitVector::Word tail_mask(std::size_t size) noexcept {
-    const std::size_t used = size % BitVector::word_bits;
-    return used == 0 ? ~BitVector::Word{0} : (BitVector::Word{1} << used) - 1;
-}
-
-}  // namespace
+using detail::tail_mask;
+using detail::words_for;
 
 BitVector::BitVector(std::size_t size, bool value)
     : words_(words_for(size), value ? ~Word{0} : Word{0}), size_(size) {
@@ -51,6 +41,14 @@ bool BitVector::at(std::size_t i) const {
 
 void BitVector::clear_tail() noexcept {
     if (!words_.empty()) words_.back() &= tail_mask(size_);
+}
+
+void BitVector::check_range(std::size_t first, std::size_t last, const char* operation) const {
+    if (first > last || last > size_) {
+        throw Error(std::string("BitVector::") + operation + ": range [" + std::to_string(first) + ", " +
+                    std::to_string(last) + ") is not within [0, size " + std::to_string(size_) + ")" +
+                    (first > last ? " (first > last)" : ""));
+    }
 }
 
 void BitVector::check_same_size(const BitVector& other, const char* operation) const {
@@ -161,6 +159,22 @@ void BitVector::reserve(std::size_t size) {
         throw Error("BitVector::reserve: size " + std::to_string(size) + " is too large");
     }
     words_.reserve(words_for(size));
+}
+
+std::strong_ordering operator<=>(const BitVector& a, const BitVector& b) noexcept {
+    if (a.size_ != b.size_) return a.size_ <=> b.size_;
+    const BitVector::Word* x = a.words_.data();
+    const BitVector::Word* y = b.words_.data();
+    for (std::size_t k = a.words_.size(); k > 0;) {
+        // Four words per test while they are equal: equal keys are compared in full.
+        if (k >= 4 && ((x[k - 1] ^ y[k - 1]) | (x[k - 2] ^ y[k - 2]) | (x[k - 3] ^ y[k - 3]) | (x[k - 4] ^ y[k - 4])) == 0) {
+            k -= 4;
+            continue;
+        }
+        --k;
+        if (x[k] != y[k]) return x[k] <=> y[k];
+    }
+    return std::strong_ordering::equal;
 }
 
 std::size_t BitVector::hash() const noexcept {

@@ -18,8 +18,26 @@ struct WordKernels {
     void (*xor_with)(Word* a, const Word* b, std::size_t n) noexcept;  ///< a ^= b
     void (*and_not)(Word* a, const Word* b, std::size_t n) noexcept;   ///< a &= ~b
     void (*flip)(Word* a, std::size_t n) noexcept;                     ///< a = ~a
+    /// a &= b, returning the set bits of the result (one pass: the sparse vector's bitmap blocks).
+    std::size_t (*and_count)(Word* a, const Word* b, std::size_t n) noexcept;
+    /// words[0, n) as one 64n-bit number, shifted in place towards the high end by s bits
+    /// (any s; zeros come in at the bottom, bits past the top are lost).
+    void (*shift_up)(Word* words, std::size_t n, std::size_t s) noexcept;
+    /// The same towards the low end (zeros come in at the top).
+    void (*shift_down)(Word* words, std::size_t n, std::size_t s) noexcept;
+    /// Index of the word holding the set bit with `rank` set bits before it, or n when
+    /// words[0, n) hold `rank` set bits or fewer; `before` receives the set bits of the words
+    /// ahead of the one returned (all of them when it is n).
+    std::size_t (*find_rank)(const Word* words, std::size_t n, std::size_t rank, std::size_t& before) noexcept;
     const char* name;                                                  ///< "avx2+popcnt", "popcnt", "generic"
 };
+
+/// Words needed for `bits` bits.
+constexpr std::size_t words_for(std::size_t bits) noexcept { return bits / 64 + (bits % 64 != 0 ? 1 : 0); }
+/// The bits [0, b) of a word, b in [0, 64).
+constexpr Word low_bits(std::size_t b) noexcept { return (Word{1} << b) - 1; }
+/// The bits of the last word that lie inside `size` (all ones when the word is full).
+constexpr Word tail_mask(std::size_t size) noexcept { return size % 64 == 0 ? ~Word{0} : low_bits(size % 64); }
 
 /// The kernels for this machine, selected on first use.
 const WordKernels& word_kernels() noexcept;
