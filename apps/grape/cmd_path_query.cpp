@@ -1,0 +1,72 @@
+// `grape path closest DATA X Y` and `grape path curvature DATA U` (with --arc-length, U and the
+// answer's u are fractions of the length, as `grape path point` takes them).
+#include "commands.hpp"
+#include "json_out.hpp"
+
+#include <grape/error.hpp>
+#include <grape/path.hpp>
+#include <grape/path_query.hpp>
+
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace grape::tool {
+namespace {
+
+double parse_fraction(const char* command, const std::string& text) {
+    const double value = parse_finite(std::string(command) + ": U", text);
+    if (value < 0.0 || value > 1.0) throw Error(std::string(command) + ": U must lie in [0, 1] (got " + text + ")");
+    return value;
+}
+
+// The fraction of the length travelled at u (exact quadrature, not the arc-length table).
+double length_fraction(const Path& path, double u) {
+    return path.length() > 0.0 ? path.length_at(u) / path.length() : u;
+}
+
+}  // namespace
+
+void register_path_query_commands(CLI::App& path) {
+    auto* closest = path.add_subcommand(
+        "closest", "Print the nearest point of the path to (X, Y): {\"u\", \"x\", \"y\", \"distance\"}");
+    auto closest_data = std::make_shared<std::string>();
+    auto x_text = std::make_shared<std::string>();
+    auto y_text = std::make_shared<std::string>();
+    auto closest_by_length = std::make_shared<bool>(false);
+    closest->add_option("DATA", *closest_data, "SVG path data")->required();
+    closest->add_option("X", *x_text, "Query point x")->required();
+    closest->add_option("Y", *y_text, "Query point y")->required();
+    closest->add_flag("--arc-length", *closest_by_length, "Print u as the fraction of the length travelled");
+    closest->callback([closest_data, x_text, y_text, closest_by_length] {
+        const Vec2 q{parse_finite("path closest: X", *x_text), parse_finite("path closest: Y", *y_text)};
+        const ComplexPath parsed = parse_svg_path(*closest_data);
+        const ClosestPoint c = closest_point(parsed, q);
+        const double u = *closest_by_length ? length_fraction(parsed, c.u) : c.u;
+        std::cout << json_object({{"u", u}, {"x", c.point.x}, {"y", c.point.y}, {"distance", c.distance}}) << '\n';
+    });
+
+    auto* bend = path.add_subcommand(
+        "curvature", "Print the signed curvature, unit tangent and normal at U: {\"curvature\", \"tx\", \"ty\", \"nx\", \"ny\"}");
+    auto bend_data = std::make_shared<std::string>();
+    auto u_text = std::make_shared<std::string>();
+    auto bend_by_length = std::make_shared<bool>(false);
+    bend->add_option("DATA", *bend_data, "SVG path data")->required();
+    bend->add_option("U", *u_text, "Parameter in [0, 1]")->required();
+    bend->add_flag("--arc-length", *bend_by_length, "U is the fraction of the length travelled");
+    bend->callback([bend_data, u_text, bend_by_length] {
+        const double fraction = parse_fraction("path curvature", *u_text);
+        const ComplexPath parsed = parse_svg_path(*bend_data);
+        // Curvature and frame are geometric: the same at the same point, whatever the parameter.
+        const double u = *bend_by_length ? parsed.u_at_length(fraction * parsed.length()) : fraction;
+        const PathFrame f = frame(parsed, u);
+        std::cout << json_object({{"curvature", f.curvature},
+                                  {"tx", f.tangent.x},
+                                  {"ty", f.tangent.y},
+                                  {"nx", f.normal.x},
+                                  {"ny", f.normal.y}})
+                  << '\n';
+    });
+}
+
+}  // namespace grape::tool
