@@ -416,4 +416,148 @@ TEST(Frame, StandingStillLeavesAlongTheSecondDerivative) {
     EXPECT_NEAR(grape::length(c.tangent), 1.0, 1e-15);
 }
 
+// --- slices, offsets, SVG data ---------------------------------------------------------------
+
+// Whether slicing [u0, u1] of p meets a sine wave or cosine spline (which have no exact slice).
+bool meets_unsliceable(const Path& p, double u0, double u1) {
+    switch (p.kind()) {
+        case grape::PathKind::sine_wave:
+        case grape::PathKind::cosine_spline: return true;
+        case grape::PathKind::reparametrized: {
+            const auto& r = static_cast<const grape::detail::ReparametrizedNode&>(p.node());
+            return meets_unsliceable(r.source(), r.source_u(u0), r.source_u(u1));
+        }
+        case grape::PathKind::complex: {
+            const grape::ComplexPath c = static_cast<const grape::ComplexPath&>(p);
+            const auto parts = c.parts();
+            const auto cues = c.cues();
+            for (std::size_t i = 0; i < parts.size(); ++i) {
+                const double start = cues[i], end = i + 1 < parts.size() ? cues[i + 1] : 1.0;
+                if (!(end > start) || u1 <= start || u0 >= end) continue;
+                const double lo = std::max(0.0, (u0 - start) / (end - start)), hi = std::min(1.0, (u1 - start) / (end - start));
+                if ((lo > 0.0 || hi < 1.0) && meets_unsliceable(parts[i], lo, hi)) return true;
+            }
+            return false;
+        }
+        default: return false;
+    }
+}
+
+bool reparametrized_inside(const Path& p) {
+    if (p.kind() == grape::PathKind::reparametrized) return true;
+    if (p.kind() != grape::PathKind::complex) return false;
+    for (const Path& part : static_cast<const grape::ComplexPath&>(p).parts()) {
+        if (reparametrized_inside(part)) return true;
+    }
+    return false;
+}
+
+TEST(Slice, MatchesTheOriginalPointwiseAndRejoins) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int sliced = 0, refused = 0;
+    for (const auto& [name, path] : query_paths()) {
+        SCOPED_TRACE(name);
+        // 1e-12 of the size (rounding of the blossoms and angle products); through an arc-length
+        // table 3e-9 of the length (each table holds s(u) to 1e-9·L).
+        const double tol = reparametrized_inside(path) ? 3e-9 * path.length() : tolerance(path);
+        for (int trial = 0; trial < 12; ++trial) {
+            double u0 = unit(rng), u1 = unit(rng);
+            if (trial == 0) u0 = 0.0;
+            if (trial == 1) u1 = 1.0;
+            if (u0 > u1) std::swap(u0, u1);
+            if (!(u1 > u0)) continue;
+            if (meets_unsliceable(path, u0, u1)) {
+                grape::testing::expect_error([&] { (void)grape::slice(path, u0, u1); }, {"slice", "no exact slice"});
+                ++refused;
+                continue;
+            }
+            const Path part = grape::slice(path, u0, u1);
+            for (int k = 0; k <= 64; ++k) {
+                const double v = k / 64.0;
+                const Vec2 expected = path.point(u0 + v * (u1 - u0));
+                EXPECT_LE(grape::distance(part.point(v), expected), tol) << "u0 " << u0 << " u1 " << u1 << " v " << v;
+            }
+            // Rejoined at u0: the two slices as one complex path are the original.
+            if (u0 > 0.0) {
+                const grape::ComplexPath joined({grape::slice(path, 0.0, u0), grape::slice(path, u0, 1.0)}, {0.0, u0});
+                for (int k = 0; k <= 64; ++k) {
+                    const double u = k / 64.0;
+                    EXPECT_LE(grape::distance(joined.point(u), path.point(u)), tol) << "u " << u;
+                }
+                EXPECT_NEAR(joined.length(), path.length(), reparametrized_inside(path) ? tol : 1e-12 * path.length());
+            }
+            ++sliced;
+        }
+    }
+    EXPECT_GT(sliced, 300);
+    EXPECT_GT(refused, 5);
+}
+
+TEST(Slice, KeepsTheKindWhereOneExists) {
+    const grape::CubicBezierPath bez({0, 0}, {0, 100}, {100, 100}, {100, 0});
+    const Path half = grape::slice(bez, 0.0, 0.5);
+    EXPECT_EQ(half.kind(), grape::PathKind::cubic_bezier);
+    // de Casteljau at ½: (0, 0), (0, 50), (25, 75), (50, 75), exactly.
+    const grape::CubicBezierPath& h = static_cast<const grape::CubicBezierPath&>(half);
+    EXPECT_EQ(h.control(1), (Vec2{0, 50}));
+    EXPECT_EQ(h.control(2), (Vec2{25, 75}));
+    EXPECT_EQ(h.control(3), (Vec2{50, 75}));
+    const grape::CirclePath circle({0, 0}, 10, 0, pi);
+    const Path arc = grape::slice(circle, 0.25, 0.5);
+    EXPECT_EQ(arc.kind(), grape::PathKind::circle);
+    EXPECT_NEAR(arc.length(), 10 * pi / 4, 1e-14 * 10);
+    EXPECT_EQ(grape::slice(grape::SpiralPath({0, 0}, 10, 0), 0.5, 1.0).kind(), grape::PathKind::spiral);
+    EXPECT_EQ(grape::slice(grape::PhysicsPath({0, 0}, {1, -10}, {0, 10}, 2), 0.5, 1.0).kind(), grape::PathKind::physics);
+    EXPECT_EQ(grape::slice(bez.reparametrized(), 0.2, 0.4).kind(), grape::PathKind::reparametrized);
+    // By length: the middle half of a segment.
+    const Path mid = grape::slice_by_length(grape::LinearPath({0, 0}, {8, 0}), 2, 6);
+    EXPECT_EQ(mid.point(0), (Vec2{2, 0}));
+    EXPECT_EQ(mid.point(1), (Vec2{6, 0}));
+    grape::testing::expect_error([&] { (void)grape::slice(bez, 0.5, 0.5); }, {"slice", "0 ≤ u0 < u1 ≤ 1", "u0 = 0.5"});
+    grape::testing::expect_error([&] { (void)grape::slice(bez, 0.5, 1.5); }, {"u1 = 1.5"});
+    grape::testing::expect_error([&] { (void)grape::slice_by_length(bez, 0, 1e6); }, {"slice_by_length", "s1 = 1e+06"});
+}
+
+TEST(Slice, OffsetPointsLieAtTheDistanceAlongTheNormal) {
+    for (const auto& [name, path] : query_paths()) {
+        SCOPED_TRACE(name);
+        for (int k = 0; k <= 16; ++k) {
+            const double u = k / 16.0;
+            const grape::PathFrame f = grape::frame(path, u);
+            const Vec2 beside = grape::offset_point(path, u, 7.5);
+            EXPECT_NEAR(grape::distance(beside, f.point), 7.5, 1e-14 * 8);
+            EXPECT_NEAR(grape::dot(beside - f.point, f.tangent), 0.0, 1e-13 * 8);
+        }
+    }
+    // Beside a circle turning with increasing angle, the positive side is the inside.
+    const grape::CirclePath circle({0, 0}, 10, 0, 2 * pi);
+    EXPECT_NEAR(grape::length(grape::offset_point(circle, 0.3, 2)), 8.0, 1e-14 * 10);
+}
+
+TEST(SvgData, DrawsTheSameShape) {
+    for (const auto& [name, path] : query_paths()) {
+        SCOPED_TRACE(name);
+        std::string data;
+        try {
+            data = grape::svg_path_data(path);
+        } catch (const grape::Error& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("has no SVG form"), std::string::npos) << what;
+            continue;
+        }
+        const Path back = grape::parse_svg_path(data);
+        // Every point of each lies on the other (the parameters differ: SVG cues by length).
+        for (int k = 0; k <= 200; ++k) {
+            const double u = k / 200.0;
+            EXPECT_LE(grape::closest_point(back, path.point(u)).distance, 1e-10 * extent(path)) << data;
+            EXPECT_LE(grape::closest_point(path, back.point(u)).distance, 1e-10 * extent(path)) << data;
+        }
+    }
+    EXPECT_EQ(grape::svg_path_data(grape::parse_svg_path("M0 0 H10 M20 0 H30")), "M0 0 L10 0 M20 0 L30 0");
+    EXPECT_EQ(grape::svg_path_data(grape::CubicBezierPath({0, 0}, {0, 100}, {100, 100}, {100, 0})), "M0 0 C0 100 100 100 100 0");
+    grape::testing::expect_error([] { (void)grape::svg_path_data(grape::SpiralPath({0, 0}, 1, 0)); },
+                                 {"svg_path_data", "spiral has no SVG form"});
+}
+
 }  // namespace

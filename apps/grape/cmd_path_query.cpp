@@ -1,5 +1,6 @@
-// `grape path closest DATA X Y` and `grape path curvature DATA U` (with --arc-length, U and the
-// answer's u are fractions of the length, as `grape path point` takes them).
+// `grape path closest DATA X Y`, `grape path curvature DATA U` and `grape path slice DATA U0 U1`
+// (with --arc-length, U and the answer's u are fractions of the length, as `grape path point`
+// takes them).
 #include "commands.hpp"
 #include "json_out.hpp"
 
@@ -66,6 +67,25 @@ void register_path_query_commands(CLI::App& path) {
                                   {"nx", f.normal.x},
                                   {"ny", f.normal.y}})
                   << '\n';
+    });
+
+    auto* cut = path.add_subcommand("slice", "Print the SVG path data of the part between U0 and U1");
+    auto cut_data = std::make_shared<std::string>();
+    auto u0_text = std::make_shared<std::string>();
+    auto u1_text = std::make_shared<std::string>();
+    auto cut_by_length = std::make_shared<bool>(false);
+    cut->add_option("DATA", *cut_data, "SVG path data")->required();
+    cut->add_option("U0", *u0_text, "Where the slice starts, in [0, 1)")->required();
+    cut->add_option("U1", *u1_text, "Where it ends, in (U0, 1]")->required();
+    cut->add_flag("--arc-length", *cut_by_length, "U0 and U1 are fractions of the length travelled");
+    cut->callback([cut_data, u0_text, u1_text, cut_by_length] {
+        const double u0 = parse_fraction("path slice", *u0_text);
+        const double u1 = parse_fraction("path slice", *u1_text);
+        if (!(u1 > u0)) throw Error("path slice: U1 must exceed U0 (got " + *u0_text + " and " + *u1_text + ")");
+        const ComplexPath parsed = parse_svg_path(*cut_data);
+        const Path part = *cut_by_length ? slice_by_length(parsed, u0 * parsed.length(), u1 * parsed.length())
+                                         : slice(parsed, u0, u1);
+        std::cout << svg_path_data(part) << '\n';
     });
 }
 

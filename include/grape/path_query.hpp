@@ -8,6 +8,8 @@
 
 #include <grape/path.hpp>
 
+#include <string>
+
 namespace grape {
 
 /// The nearest point of a path to a query point.
@@ -53,5 +55,28 @@ PathFrame frame(const Path& path, double u) noexcept;
 
 /// Signed curvature at u, as in PathFrame.
 double curvature(const Path& path, double u) noexcept;
+
+/// The part of `path` between u0 and u1 (0 ≤ u0 < u1 ≤ 1; throws grape::Error otherwise) as
+/// a path of its own: slice.point(v) = path.point(u0 + v·(u1 − u0)) to rounding, exactly in
+/// shape and parameter. A segment slices to a segment, an arc to an arc, a spiral to a spiral, a
+/// Bézier to a Bézier (by blossoming: de Casteljau's points), a projectile to a projectile, a
+/// linear or cubic (Hermite, Catmull–Rom) spline to a complex path of segments or cubic
+/// Béziers, a complex path to the complex path of its sliced parts, a reparametrized path to
+/// the reparametrized slice of its source. Sine waves and cosine splines have no exact slice
+/// among the kinds (the phase, the easing inside a segment): they throw grape::Error.
+Path slice(const Path& path, double u0, double u1);
+
+/// The part between arc lengths s0 < s1 in [0, length()]: slice at u_at_length(s0), u_at_length(s1).
+Path slice_by_length(const Path& path, double s0, double s1);
+
+/// point(u) + distance·normal(u): where something beside the path is (a car in a lane, a
+/// positive distance to the frame's normal side), evaluated pointwise.
+Vec2 offset_point(const Path& path, double u, double distance) noexcept;
+
+/// SVG path data that draws `path` (y down as in SVG), numbers with 17 significant digits:
+/// lines, quadratic and cubic Béziers, elliptical arcs (split below half turns), splines as
+/// their segments, a complex path part by part (M where a part does not start at the pen).
+/// Spirals and sine waves have no SVG form: grape::Error.
+std::string svg_path_data(const Path& path);
 
 }  // namespace grape
