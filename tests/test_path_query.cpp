@@ -560,4 +560,54 @@ TEST(SvgData, DrawsTheSameShape) {
                                  {"svg_path_data", "spiral has no SVG form"});
 }
 
+// --- closed loops ------------------------------------------------------------------------------
+
+TEST(Closed, LoopsMeetAtTheSeamWithWrappedTangents) {
+    const std::vector<Vec2> pts{{20, 20}, {100, 100}, {120, 50}, {300, 300}, {400, 50}, {500, 200}};
+    const std::vector<Vec2> tangents{{50, 0}, {0, 50}, {-20, 30}, {40, 40}, {10, -60}, {-80, 0}};
+    // 1e-12 of the size: the seam's point comes from a cubic at t = 1 (rounding of its sum).
+    const double tol = 1e-12 * 500;
+    for (const grape::CatmullRom type : {grape::CatmullRom::uniform, grape::CatmullRom::centripetal, grape::CatmullRom::chordal}) {
+        const Path loop = grape::closed_catmull_rom_spline(pts, type);
+        EXPECT_TRUE(grape::closed(loop));
+        EXPECT_LE(grape::distance(loop.point(1.0), pts[0]), tol);
+        EXPECT_EQ(loop.point(0.0), pts[0]);
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            EXPECT_LE(grape::distance(loop.point(static_cast<double>(i) / 6.0), pts[i]), tol);
+        }
+        // Interior segments are the open spline's (the same neighbours), in the loop's u.
+        const grape::CatmullRomSplinePath open(pts, type);
+        for (int seg = 1; seg <= 3; ++seg) {
+            for (double t = 0; t < 1.0; t += 0.125) {
+                EXPECT_LE(grape::distance(loop.point((seg + t) / 6.0), open.point((seg + t) / 5.0)), tol);
+            }
+        }
+        // Smooth in direction at the seam (and uniform: the same derivative).
+        const Vec2 in = loop.d1(1.0), out = loop.d1(0.0);
+        EXPECT_NEAR(grape::cross(grape::normalized(in), grape::normalized(out)), 0.0, 1e-12);
+        EXPECT_GT(grape::dot(in, out), 0.0);
+        if (type == grape::CatmullRom::uniform) {
+            EXPECT_LE(grape::distance(in, out), 1e-12 * grape::length(out));
+            // Wrapped: the seam's tangent is half the chord from the last point to the second.
+            const Vec2 expected = 0.5 * (pts[1] - pts[5]) * 6.0;  // d/du = d/dt · segments
+            EXPECT_LE(grape::distance(out, expected), 1e-12 * grape::length(expected));
+        }
+    }
+    const Path hermite = grape::closed_hermite_spline(pts, tangents);
+    EXPECT_TRUE(grape::closed(hermite));
+    EXPECT_LE(grape::distance(hermite.d1(1.0), hermite.d1(0.0)), 1e-12 * grape::length(hermite.d1(0.0)));
+    EXPECT_EQ(hermite.d1(0.0), tangents[0] * 6.0);
+    const Path cosine = grape::closed_cosine_spline(pts);
+    EXPECT_TRUE(grape::closed(cosine));
+    EXPECT_EQ(cosine.point(1.0), pts[0]);
+    EXPECT_FALSE(grape::closed(grape::CatmullRomSplinePath(pts)));
+    EXPECT_TRUE(grape::closed(grape::CirclePath({0, 0}, 5, 1, 1 + 2 * pi)));
+    EXPECT_FALSE(grape::closed(grape::CirclePath({0, 0}, 5, 1, 1 + 1.9 * pi)));
+    EXPECT_TRUE(grape::closed(grape::parse_svg_path("M0 0 H10 V10 Z")));
+    grape::testing::expect_error([&] { (void)grape::closed_cosine_spline(std::span<const Vec2>(pts).first(2)); },
+                                 {"closed_cosine_spline", "at least 3 points", "got 2"});
+    grape::testing::expect_error([&] { (void)grape::closed_hermite_spline(pts, std::span<const Vec2>(tangents).first(5)); },
+                                 {"closed_hermite_spline", "one tangent per point", "got 5 tangents for 6 points"});
+}
+
 }  // namespace

@@ -79,4 +79,20 @@ Vec2 offset_point(const Path& path, double u, double distance) noexcept;
 /// Spirals and sine waves have no SVG form: grape::Error.
 std::string svg_path_data(const Path& path);
 
+/// True when the path ends where it starts (within 1e-12 of its size): a loop, which an
+/// animation can repeat without a jump.
+bool closed(const Path& path) noexcept;
+
+/// Closed loops through n ≥ 3 points (the last joins the first; do not repeat it): each has
+/// n segments sharing u evenly, the seam's tangents wrap around, and point(1) == point(0).
+/// A cosine loop (still at every point, kind cosine_spline).
+Path closed_cosine_spline(std::span<const Vec2> points);
+/// A Hermite loop with one tangent per point (kind hermite_spline): C1 at the seam.
+Path closed_hermite_spline(std::span<const Vec2> points, std::span<const Vec2> tangents);
+/// A Catmull–Rom loop: tangents from each point's neighbours, the seam's from the last and
+/// first points. Uniform is C1 everywhere (a hermite_spline); centripetal and chordal, whose
+/// knot spacings differ per segment, are complex paths of cubic Béziers (one per segment,
+/// smooth in direction at every point, the seam included, as the open splines are).
+Path closed_catmull_rom_spline(std::span<const Vec2> points, CatmullRom type = CatmullRom::uniform);
+
 }  // namespace grape
