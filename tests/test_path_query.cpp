@@ -42,6 +42,7 @@ using grape::ClosestPoint;
 using grape::Path;
 using grape::pi;
 using grape::Vec2;
+using grape::lerp;
 using grape::scenes::NamedPath;
 
 // A loop (the cubic crosses itself), SVG data with arcs, separate subpaths and a cusp.
@@ -608,6 +609,91 @@ TEST(Closed, LoopsMeetAtTheSeamWithWrappedTangents) {
                                  {"closed_cosine_spline", "at least 3 points", "got 2"});
     grape::testing::expect_error([&] { (void)grape::closed_hermite_spline(pts, std::span<const Vec2>(tangents).first(5)); },
                                  {"closed_hermite_spline", "one tangent per point", "got 5 tangents for 6 points"});
+}
+
+// --- fitting ------------------------------------------------------------------------------------
+
+// The largest distance of any input point from the fitted path, measured with closest_point.
+double deviation(const Path& fit, const std::vector<Vec2>& pts) {
+    double worst = 0.0;
+    for (const Vec2 p : pts) worst = std::max(worst, grape::closest_point(fit, p).distance);
+    return worst;
+}
+
+TEST(Fit, NoisyCircleWithinToleranceWithFewSegments) {
+    std::mt19937_64 rng(2);
+    std::uniform_real_distribution<double> noise(-0.2, 0.2);
+    std::vector<Vec2> pts;
+    for (int i = 0; i <= 400; ++i) {
+        const double a = 2 * pi * i / 400.0;
+        pts.push_back(Vec2{300, 300} + Vec2{std::cos(a), std::sin(a)} * 100.0 + Vec2{noise(rng), noise(rng)});
+    }
+    for (const double tol : {0.5, 1.0, 3.0}) {
+        SCOPED_TRACE(tol);
+        const grape::ComplexPath fit = grape::fit_path(pts, {.tolerance = tol});
+        EXPECT_LE(deviation(fit, pts), tol);
+        // Few: a cubic holds about a third of a circle within 0.2% of r, so a tolerance well
+        // above the noise (±0.28 at most) needs a handful; at 0.5 the noise eats half of it.
+        EXPECT_LE(fit.parts().size(), tol >= 1.0 ? 8u : 24u);
+        EXPECT_EQ(fit.point(0), pts.front());
+        EXPECT_EQ(fit.point(1), pts.back());
+        // Joined smoothly: each part leaves in the direction the previous one arrived.
+        for (std::size_t i = 1; i < fit.parts().size(); ++i) {
+            const Vec2 in = grape::normalized(fit.parts()[i - 1].d1(1.0)), out = grape::normalized(fit.parts()[i].d1(0.0));
+            EXPECT_NEAR(grape::cross(in, out), 0.0, 1e-12);
+            EXPECT_GT(grape::dot(in, out), 0.0);
+        }
+    }
+    // A looser tolerance never needs more segments here (four quarter arcs fit within 0.03 r).
+    EXPECT_LE(grape::fit_path(pts, {.tolerance = 3.0}).parts().size(), grape::fit_path(pts, {.tolerance = 0.5}).parts().size());
+}
+
+TEST(Fit, CornersAreKept) {
+    // A square drawn by hand: 50 points per side, the corners sharp (90° turns).
+    std::vector<Vec2> pts;
+    const Vec2 corners[5] = {{0, 0}, {200, 0}, {200, 200}, {0, 200}, {0, 0}};
+    for (int side = 0; side < 4; ++side) {
+        for (int k = 0; k < 50; ++k) pts.push_back(lerp(corners[side], corners[side + 1], k / 50.0));
+    }
+    pts.push_back(corners[4]);
+    const grape::ComplexPath fit = grape::fit_path(pts, {.tolerance = 0.5});
+    EXPECT_LE(deviation(fit, pts), 0.5);
+    EXPECT_EQ(fit.parts().size(), 4u);
+    for (std::size_t i = 0; i < fit.parts().size(); ++i) EXPECT_EQ(fit.parts()[i].point(0), corners[i]);
+    // With the corner angle above 90° the turns are smoothed instead (more segments, still within).
+    const grape::ComplexPath smooth = grape::fit_path(pts, {.tolerance = 0.5, .corner_angle = 0.6 * pi});
+    EXPECT_LE(deviation(smooth, pts), 0.5);
+    EXPECT_GT(smooth.parts().size(), 4u);
+}
+
+TEST(Fit, RandomTrajectoriesWithinEveryTolerance) {
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> coord(0.0, 600.0);
+    for (int trial = 0; trial < 12; ++trial) {
+        std::vector<Vec2> knots;
+        for (int k = 0; k < 6; ++k) knots.push_back({coord(rng), coord(rng)});
+        const grape::CatmullRomSplinePath truth(knots, grape::CatmullRom::centripetal);
+        std::vector<Vec2> pts;
+        for (int i = 0; i <= 300; ++i) pts.push_back(truth.point(i / 300.0));
+        for (const double tol : {0.05, 0.5, 4.0}) {
+            const grape::ComplexPath fit = grape::fit_path(pts, {.tolerance = tol, .corner_angle = pi});
+            EXPECT_LE(deviation(fit, pts), tol) << "trial " << trial << " tolerance " << tol;
+            EXPECT_LT(fit.parts().size(), 120u);
+        }
+    }
+}
+
+TEST(Fit, BadInput) {
+    const std::vector<Vec2> same{{1, 1}, {1, 1}, {1, 1}};
+    grape::testing::expect_error([&] { (void)grape::fit_path(same); }, {"fit_path", "at least 2 distinct points", "got 1"});
+    const std::vector<Vec2> two{{0, 0}, {3, 4}};
+    grape::testing::expect_error([&] { (void)grape::fit_path(two, {.tolerance = 0}); }, {"fit_path", "tolerance must be positive", "got 0"});
+    grape::testing::expect_error([&] { (void)grape::fit_path(two, {.corner_angle = 4}); }, {"corner_angle must lie in (0, π]"});
+    const std::vector<Vec2> bad{{0, 0}, {std::nan(""), 4}};
+    grape::testing::expect_error([&] { (void)grape::fit_path(bad); }, {"points[1] must be finite"});
+    const grape::ComplexPath line = grape::fit_path(two);
+    EXPECT_EQ(line.parts().size(), 1u);
+    EXPECT_NEAR(line.length(), 5.0, 1e-12 * 5);
 }
 
 }  // namespace

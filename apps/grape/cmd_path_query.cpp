@@ -8,9 +8,12 @@
 #include <grape/path.hpp>
 #include <grape/path_query.hpp>
 
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace grape::tool {
 namespace {
@@ -19,6 +22,23 @@ double parse_fraction(const char* command, const std::string& text) {
     const double value = parse_finite(std::string(command) + ": U", text);
     if (value < 0.0 || value > 1.0) throw Error(std::string(command) + ": U must lie in [0, 1] (got " + text + ")");
     return value;
+}
+
+// `x y` per line (blank lines and # comments skipped); a bad line is an error naming it.
+std::vector<Vec2> read_points(std::istream& in, const std::string& source) {
+    std::vector<Vec2> points;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        const auto hash = line.find('#');
+        if (hash != std::string::npos) line.erase(hash);
+        std::istringstream fields(line);
+        std::string x, y, extra;
+        if (!(fields >> x)) continue;
+        const std::string where = "path fit: " + source + " line " + std::to_string(number);
+        if (!(fields >> y) || (fields >> extra)) throw Error(where + " must hold two numbers, x and y (got '" + line + "')");
+        points.push_back({parse_finite(where + ": x", x), parse_finite(where + ": y", y)});
+    }
+    return points;
 }
 
 // The fraction of the length travelled at u (exact quadrature, not the arc-length table).
@@ -86,6 +106,29 @@ void register_path_query_commands(CLI::App& path) {
         const Path part = *cut_by_length ? slice_by_length(parsed, u0 * parsed.length(), u1 * parsed.length())
                                          : slice(parsed, u0, u1);
         std::cout << svg_path_data(part) << '\n';
+    });
+
+    auto* fit = path.add_subcommand(
+        "fit", "Fit cubic Béziers to `x y` lines (a file, or stdin) and print the SVG path data");
+    auto fit_file = std::make_shared<std::string>();
+    auto fit_tolerance = std::make_shared<std::string>("1");
+    auto fit_corner = std::make_shared<std::string>("60");
+    fit->add_option("FILE", *fit_file, "Points, one `x y` per line (default: stdin)");
+    fit->add_option("--tolerance", *fit_tolerance, "Largest distance of a point from the path (default 1)");
+    fit->add_option("--corner-angle", *fit_corner, "Turns sharper than this many degrees stay corners (default 60)");
+    fit->callback([fit_file, fit_tolerance, fit_corner] {
+        FitPathDef def;
+        def.tolerance = parse_finite("path fit: --tolerance", *fit_tolerance);
+        def.corner_angle = parse_finite("path fit: --corner-angle", *fit_corner) * pi / 180.0;
+        std::vector<Vec2> points;
+        if (fit_file->empty() || *fit_file == "-") {
+            points = read_points(std::cin, "stdin");
+        } else {
+            std::ifstream in(*fit_file);
+            if (!in) throw Error("path fit: cannot read " + *fit_file);
+            points = read_points(in, *fit_file);
+        }
+        std::cout << svg_path_data(fit_path(points, def)) << '\n';
     });
 }
 

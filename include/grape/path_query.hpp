@@ -95,4 +95,19 @@ Path closed_hermite_spline(std::span<const Vec2> points, std::span<const Vec2> t
 /// smooth in direction at every point, the seam included, as the open splines are).
 Path closed_catmull_rom_spline(std::span<const Vec2> points, CatmullRom type = CatmullRom::uniform);
 
+/// How fit_path turns points into a path.
+struct FitPathDef {
+    double tolerance = 1.0;        ///< largest distance of any input point from the path, world units (> 0)
+    double corner_angle = pi / 3;  ///< a turn sharper than this between successive chords is kept as a corner, radians in (0, π]
+};
+
+/// A smooth path through a sequence of sampled points (a mouse drag, a recorded trajectory):
+/// cubic Béziers joined with continuous tangents, few of them, every input point within
+/// def.tolerance of the path, corners kept where the input turns by more than corner_angle
+/// (Schneider's algorithm: least-squares handles along the end tangents, Newton
+/// reparametrization, a split at the worst point). Parts have cues by length. Consecutive
+/// repeated points are dropped; throws grape::Error for fewer than 2 distinct points, a point
+/// that is not finite or a bad tolerance or angle.
+ComplexPath fit_path(std::span<const Vec2> points, const FitPathDef& def = {});
+
 }  // namespace grape
