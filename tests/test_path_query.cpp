@@ -267,6 +267,24 @@ TEST(ClosestPoint, SubpathsThatDoNotMeetEndJustBeforeTheNextCue) {
     EXPECT_NEAR(c.distance, std::hypot(2.0, 5.0), 1e-12 * 30);
 }
 
+TEST(ClosestPoint, ExtremeScales) {
+    // Coordinates near 1e200 (squares overflow: the search falls back to hypot) and near 1e-200
+    // (squares underflow), against the same independent reference.
+    std::mt19937_64 rng(12);
+    for (const double scale : {1e200, 1e-200}) {
+        const grape::CubicBezierPath bez(Vec2{0, 0} * scale, Vec2{300, 200} * scale, Vec2{-100, 200} * scale,
+                                         Vec2{200, 0} * scale);
+        const grape::ComplexPath both({bez, grape::CirclePath(Vec2{100, 50} * scale, 40 * scale, 0, 4)}, {0, 0.5});
+        for (const Path& path : {Path(bez), Path(both)}) {
+            for (const Vec2 q : query_points(path, rng, 40)) {
+                const ClosestPoint c = grape::closest_point(path, q);
+                expect_consistent(path, q, c);
+                EXPECT_LE(c.distance, brute_force(path, q).distance + tolerance(path));
+            }
+        }
+    }
+}
+
 TEST(ClosestPoint, WithinARange) {
     std::mt19937_64 rng(21);
     std::uniform_real_distribution<double> unit(0.0, 1.0);

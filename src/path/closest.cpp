@@ -38,8 +38,8 @@ double distance_to_box(Vec2 q, const Bounds& b) noexcept {
 
 double distance_to_segment(Vec2 q, Vec2 a, Vec2 b) noexcept {
     const Vec2 ab = b - a;
-    const double l2 = length_squared(ab);
-    const double t = l2 > 0.0 ? std::clamp(dot(q - a, ab) / l2, 0.0, 1.0) : 0.0;
+    const double len = norm(ab);  // through the unit direction: |ab|² overflows near 1e154
+    const double t = len > 0.0 ? std::clamp(dot(q - a, ab / len) / len, 0.0, 1.0) : 0.0;
     return gap(q, a + ab * t);
 }
 
@@ -59,9 +59,10 @@ struct Map {
 // The best point so far. Of the points within `tol` of the least distance seen, the one with
 // the smallest u is kept (ties go to the smallest u, and no chain of near-ties can drift).
 struct Search {
-    Search(Vec2 query, double tolerance) noexcept : q(query), tol(tolerance) {}
+    Search(Vec2 query, double tolerance, double unit) noexcept : q(query), tol(tolerance), inv(1.0 / unit) {}
     Vec2 q;
     double tol;
+    double inv;  // 1 / the path's size: products of lengths are formed in units of it (no overflow)
     double bound = infinity;  // a distance already reached by an enclosing search
     long budget = 1L << 16;   // intervals left to examine: bounds the work
     double least = infinity;  // the least distance seen
@@ -97,7 +98,8 @@ struct Leaf {
     Map map;
 
     void offer(double v) noexcept { s.offer(map(v), n.point(v)); }
-    double slope(double v) const noexcept { return dot(n.d1(v), n.point(v) - s.q); }  // f′, f = ½|x − q|²
+    // f′ for f = ½|x − q|², in units of the path's size squared.
+    double slope(double v) const noexcept { return dot(n.d1(v) * s.inv, (n.point(v) - s.q) * s.inv); }
 
     void run(double lo, double hi) noexcept {
         const auto& br = n.breaks();
@@ -133,17 +135,19 @@ struct Leaf {
         }
         s.offer(map(m), pm);
         if (--s.budget < 0) return;
-        const double speed = norm(dm);
-        const double slow = speed - k2 * h;
-        const double curving = (slow > 0.0 ? slow * slow : 0.0) + dot(n.d2(m), pm - s.q) -
-                               k3 * h * gap(pm, s.q) - k2 * (speed + k2 * h) * h;
+        // In units of the path's size, so that the products neither overflow nor underflow.
+        const double c = s.inv;
+        const double speed = norm(dm) * c;
+        const double slow = speed - k2 * c * h;
+        const double curving = (slow > 0.0 ? slow * slow : 0.0) + dot(n.d2(m) * c, (pm - s.q) * c) -
+                               k3 * c * h * (gap(pm, s.q) * c) - k2 * c * (speed + k2 * c * h) * h;
         if (curving > 0.0) {
             convex(a, b, m);
             return;
         }
         if (s.discard(lower, ga) || depth >= 64 || !(m > a && m < b)) return;
         // The nearer half first (where f decreases from m): its answer discards more of the other.
-        if (dot(dm, pm - s.q) > 0.0) {
+        if (dot(dm * c, (pm - s.q) * c) > 0.0) {
             interval(a, m, depth + 1);
             interval(m, b, depth + 1);
         } else {
@@ -163,9 +167,9 @@ struct Leaf {
             return;
         }
         auto fd = [this](double v) noexcept {
-            const Vec2 g = n.d1(v);
-            const Vec2 r = n.point(v) - s.q;
-            return std::pair<double, double>{dot(g, r), length_squared(g) + dot(n.d2(v), r)};
+            const Vec2 g = n.d1(v) * s.inv;
+            const Vec2 r = (n.point(v) - s.q) * s.inv;
+            return std::pair<double, double>{dot(g, r), length_squared(g) + dot(n.d2(v) * s.inv, r)};
         };
         offer(find_root(fd, a, br, guess, 2.0 * eps * std::abs(b)).x);
     }
@@ -260,7 +264,7 @@ void search(const PathNode& node, double lo, double hi, Map map, Search& s) noex
             return;
         case PathKind::reparametrized: {
             const auto& r = static_cast<const ReparametrizedNode&>(node);
-            Search inner(s.q, s.tol);
+            Search inner(s.q, s.tol, 1.0 / s.inv);
             inner.bound = std::min(s.bound, s.least);
             inner.budget = s.budget;
             search(r.source().node(), r.source_u(lo), r.source_u(hi), Map{}, inner);
@@ -303,16 +307,17 @@ ClosestPoint nearest(const Path& path, Vec2 q, double lo, double hi, const doubl
     const double far = distance(q, 0.5 * (box.min + box.max));
     // 1e-13 of the path's size is the answer's target (a tenth of the promise); the rounding
     // of distances to a far q (a few ulps of it) is the floor no bound can beat.
-    Search s(q, 1e-13 * extent + 16.0 * eps * (far + extent) + std::numeric_limits<double>::min());
+    const double unit = extent > 0.0 && extent < infinity ? extent : 1.0;
+    Search s(q, 1e-13 * extent + 16.0 * eps * (far + extent) + std::numeric_limits<double>::min(), unit);
     if (from) {
         // Newton from the last answer: a tight distance first, so the search discards early.
         double u = std::clamp(*from, lo, hi);
         if (!(u == u)) u = lo;
         s.offer(u, path.point(u));
         for (int i = 0; i < 8; ++i) {
-            const Vec2 g = path.d1(u);
-            const Vec2 r = path.point(u) - q;
-            const double f2 = length_squared(g) + dot(path.d2(u), r);
+            const Vec2 g = path.d1(u) * s.inv;
+            const Vec2 r = (path.point(u) - q) * s.inv;
+            const double f2 = length_squared(g) + dot(path.d2(u) * s.inv, r);
             if (!(f2 > 0.0)) break;
             const double next = std::clamp(u - dot(g, r) / f2, lo, hi);
             if (next == u) break;
