@@ -56,6 +56,7 @@ void register_path_commands(CLI::App& app) {
         const Vec2 d = path.d1(u);
         std::cout << json_object({{"x", p.x}, {"y", p.y}, {"dx", d.x}, {"dy", d.y}}) << '\n';
     });
+    register_path_query_commands(*path);
 }
 
 void demo_paths(const DemoContext& context) {

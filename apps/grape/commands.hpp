@@ -17,6 +17,7 @@ struct DemoContext {
 };
 
 void register_path_commands(CLI::App& app);
+void register_path_query_commands(CLI::App& path);  ///< closest, curvature, slice, fit under `path`
 void register_ease_command(CLI::App& app);
 void demo_paths(const DemoContext& context);
 void demo_curves(const DemoContext& context);

@@ -453,4 +453,49 @@ void ComplexNode::append_flattened(double tolerance, std::vector<Vec2>& out) con
     }
 }
 
+// --- derivative bounds (for the path queries) ----------------------------------------------
+// Each is a supremum over [a, b] of the analytic |x″| and |x‴|, by the triangle inequality on
+// the closed forms above (the rotated axes ex, ey are orthogonal, so |ex·cos θ + ey·sin θ| ≤
+// max(rx, ry)).
+
+PathNode::DerivativeBounds ArcNode::derivative_bounds(double, double) const noexcept {
+    const double r = std::max(rx, ry);
+    const double s = std::abs(span_);
+    return {r * s * s, r * s * s * s};
+}
+
+PathNode::DerivativeBounds SpiralNode::derivative_bounds(double a, double b) const noexcept {
+    // x″ = 2ρs·e⊥ − r·s²·e and x‴ = −3ρs²·e − r·s³·e⊥ with r linear (largest at an end).
+    const double rho = std::abs(r1 - r0), s = std::abs(a1 - a0);
+    const double r = std::max(std::abs(r0 + (r1 - r0) * a), std::abs(r0 + (r1 - r0) * b));
+    return {2.0 * rho * s + r * s * s, 3.0 * rho * s * s + r * s * s * s};
+}
+
+PathNode::DerivativeBounds SineWaveNode::derivative_bounds(double, double) const noexcept {
+    const double w = std::abs(omega_), amp = std::abs(amplitude);
+    return {amp * w * w, amp * w * w * w};
+}
+
+PathNode::DerivativeBounds PolylineNode::derivative_bounds(double a, double b) const noexcept {
+    if (!cosine_) return {0.0, 0.0};
+    double t;
+    const std::size_t n = points.size() - 1;
+    const std::size_t i = spline_segment(0.5 * (a + b), n, t);
+    const double nn = static_cast<double>(n);
+    const double chord = distance(points[i], points[i + 1]);
+    return {chord * nn * nn * 0.5 * pi * pi, chord * nn * nn * nn * 0.5 * pi * pi * pi};
+}
+
+PathNode::DerivativeBounds CubicSplineNode::derivative_bounds(double a, double b) const noexcept {
+    // Per segment x″ = (6·c3·t + 2·c2)·n² is affine in t (largest at an end), x‴ = 6·c3·n³.
+    double t;
+    const std::size_t i = spline_segment(0.5 * (a + b), segments.size(), t);
+    const Segment& s = segments[i];
+    const double n = static_cast<double>(segments.size());
+    const double base = static_cast<double>(i);
+    const double ta = std::clamp(a * n - base, 0.0, 1.0), tb = std::clamp(b * n - base, 0.0, 1.0);
+    const double d2 = std::max(grape::length(6.0 * s.c3 * ta + 2.0 * s.c2), grape::length(6.0 * s.c3 * tb + 2.0 * s.c2));
+    return {d2 * n * n, 6.0 * grape::length(s.c3) * n * n * n};
+}
+
 }  // namespace grape::detail

@@ -33,6 +33,7 @@ public:
     Vec2 point(double u) const noexcept override;
     Vec2 d1(double u) const noexcept override;
     Vec2 d2(double u) const noexcept override;
+    DerivativeBounds derivative_bounds(double a, double b) const noexcept override;
     double length_at(double u) const noexcept override;
     void append_flattened(double tolerance, std::vector<Vec2>& out) const override;
 
@@ -59,6 +60,7 @@ public:
     Vec2 point(double u) const noexcept override;
     Vec2 d1(double u) const noexcept override;
     Vec2 d2(double u) const noexcept override;
+    DerivativeBounds derivative_bounds(double a, double b) const noexcept override;
     double length_at(double u) const noexcept override;
 
     const Vec2 centre;
@@ -79,6 +81,7 @@ public:
     Vec2 point(double u) const noexcept override;
     Vec2 d1(double u) const noexcept override;
     Vec2 d2(double u) const noexcept override;
+    DerivativeBounds derivative_bounds(double a, double b) const noexcept override;
 
     const Vec2 a, b;
     const double frequency, amplitude;
@@ -102,6 +105,9 @@ public:
     Vec2 point(double u) const noexcept override { return (c[2] * u + c[1]) * u + c[0]; }
     Vec2 d1(double u) const noexcept override { return 2.0 * c[2] * u + c[1]; }
     Vec2 d2(double) const noexcept override { return 2.0 * c[2]; }
+    DerivativeBounds derivative_bounds(double, double) const noexcept override {
+        return {2.0 * grape::length(c[2]), 0.0};
+    }
     double length_at(double u) const noexcept override;
 
     const Vec2 c[3];
@@ -124,6 +130,7 @@ public:
     Vec2 point(double u) const noexcept override;
     Vec2 d1(double u) const noexcept override;
     Vec2 d2(double u) const noexcept override;
+    DerivativeBounds derivative_bounds(double a, double b) const noexcept override;
     double length_at(double u) const noexcept override;
     void append_flattened(double tolerance, std::vector<Vec2>& out) const override;
 
@@ -150,6 +157,7 @@ public:
     Vec2 point(double u) const noexcept override;
     Vec2 d1(double u) const noexcept override;
     Vec2 d2(double u) const noexcept override;
+    DerivativeBounds derivative_bounds(double a, double b) const noexcept override;
 
     const std::vector<Vec2> points;
     const std::vector<Vec2> tangents;  ///< d/dt of each segment's local t at each point
@@ -188,6 +196,10 @@ private:
     const Piece& piece_at(double u) const noexcept;
     std::vector<Piece> pieces_;
     std::vector<double> starts_;  // pieces_[i].start, for binary search
+
+public:
+    /// The parts whose span is not empty, in order, with their spans (for the path queries).
+    std::span<const Piece> pieces() const noexcept { return pieces_; }
 };
 
 }  // namespace grape::detail

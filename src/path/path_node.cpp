@@ -25,6 +25,11 @@ double inside_right(double a, double b) noexcept {
 
 void PathNode::interior_breaks(std::vector<double>&) const {}
 
+PathNode::DerivativeBounds PathNode::derivative_bounds(double, double) const noexcept {
+    const double unknown = std::numeric_limits<double>::infinity();
+    return {unknown, unknown};
+}
+
 void PathNode::finish() {
     breaks_.clear();
     breaks_.push_back(0.0);

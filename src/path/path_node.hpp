@@ -36,6 +36,14 @@ public:
     /// d²x/du² at u in [0, 1].
     virtual Vec2 d2(double u) const noexcept = 0;
 
+    /// sup |x″| and sup |x‴| over [a, b] inside one smooth piece (between two breaks).
+    struct DerivativeBounds {
+        double d2, d3;
+    };
+    /// Proven bounds over [a, b] for the path queries (closest point); default unknown (∞),
+    /// which makes a search subdivide instead of discarding.
+    virtual DerivativeBounds derivative_bounds(double a, double b) const noexcept;
+
     /// Arc length over [0, 1], computed once by finish().
     double length() const noexcept { return length_; }
     /// Tight axis-aligned box over [0, 1], computed once by finish().
@@ -107,6 +115,7 @@ public:
     Vec2 d2(double) const noexcept override { return {}; }
     double length_at(double u) const noexcept override { return grape::length(delta) * u; }
     void append_flattened(double tolerance, std::vector<Vec2>& out) const override;
+    DerivativeBounds derivative_bounds(double, double) const noexcept override { return {0.0, 0.0}; }
 
     const Vec2 a;      ///< start
     const Vec2 b;      ///< end
@@ -133,6 +142,11 @@ public:
     }
     Vec2 d2(double t) const noexcept override {
         return 6.0 * ((1.0 - t) * (p[2] - 2.0 * p[1] + p[0]) + t * (p[3] - 2.0 * p[2] + p[1]));
+    }
+    // x″ is affine in t, so |x″| is largest at an end; x‴ is constant.
+    DerivativeBounds derivative_bounds(double a, double b) const noexcept override {
+        return {std::max(grape::length(d2(a)), grape::length(d2(b))),
+                6.0 * grape::length(p[3] - p[0] + 3.0 * (p[1] - p[2]))};
     }
 
     const Vec2 p[4];  ///< control points
