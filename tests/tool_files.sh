@@ -120,6 +120,20 @@ interrupted_frames)
         nothing_left "$work/out.d"
     done
     ;;
+progress)
+    # 6·10⁶ steps (seconds of work): progress on stderr when it is a terminal, none otherwise.
+    command -v script >/dev/null || { echo "no 'script' command to run the tool on a terminal"; exit 77; }
+    script -qec "'$grape' simulate parabola --integrator euler --dt 1e-5 --seconds 60" /dev/null | tr '\r' '\n' >"$work/tty"
+    grep -E "^simulate: step [0-9]+ of 6000000 \([0-9]+%\)" "$work/tty" || fail "no progress shown: $(cat "$work/tty")"
+    grep -q '"method": "implicit"' "$work/tty" || fail "no result: $(cat "$work/tty")"
+    run "$grape" simulate parabola --integrator euler --dt 1e-5 --seconds 60
+    [ ! -s "$work/err" ] || fail "progress written to a file: $(cat "$work/err")"
+    # Frames of a 2500 × 2500 view (a fraction of a second each): progress per frame.
+    printf '{"view": {"width": 2500, "height": 2500}, "paths": [{"name": "a", "path": {"kind": "circle", "centre": [0, 0], "radius": 100}}]}\n' >"$work/big.json"
+    script -qec "'$grape' render '$work/big.json' -o '$work/big.png' --frames 8" /dev/null | tr '\r' '\n' >"$work/tty"
+    grep -E "^render: frame [0-9]+ of 8 \([0-9]+%\)" "$work/tty" || fail "no progress shown: $(cat "$work/tty")"
+    grep -q "wrote 8 frames" "$work/tty" || fail "frames not written: $(cat "$work/tty")"
+    ;;
 render_to_folder)
     mkdir "$work/taken.png"
     run "$grape" render "$scenes/seed_spiral.json" -o "$work/taken.png"

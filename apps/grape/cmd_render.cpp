@@ -291,7 +291,7 @@ void run_render(const RenderOptions& o) {
     // All frames or none: a half-written sequence is worse than a clear error, so a failure
     // or an interruption (SIGINT, SIGTERM) removes every frame this run wrote.
     detail::RunFiles written;
-    Progress progress("render: frame", frames);
+    Progress progress("render: frame", frames, 1);
     for (int f = 0; f < frames; ++f) {
         const double t = o.time + f / o.fps;
         sims.advance_to(t);

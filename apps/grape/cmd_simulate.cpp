@@ -94,7 +94,7 @@ void run_simulate(const SimulateOptions& o) {
     const scenes::ParabolaState start = scenes::ParabolaRun(setup).state();
     check_finite(start, 0);
     if (csv) write_row(start);
-    Progress progress("simulate", steps);
+    Progress progress("simulate: step", steps);
     double step = 0;
     const auto summary = scenes::run_parabola(setup, dt, seconds, [&](const scenes::ParabolaState& s) {
         check_finite(s, ++step);

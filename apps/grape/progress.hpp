@@ -7,24 +7,27 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace grape::tool {
 
 class Progress {
 public:
-    /// WHAT names the run ("simulate"); TOTAL is the number of units (steps, frames) it will do.
-    Progress(std::string what, double total) : what_(std::move(what)), total_(total), shown_(isatty(STDERR_FILENO) == 1) {}
+    /// WHAT names the run and its unit ("simulate: step"); TOTAL is the number of units (steps, frames) it will do;
+    /// the clock is read every STRIDE updates (a power of two: 1 for slow units such as frames).
+    Progress(std::string what, double total, unsigned stride = 1024)
+        : what_(std::move(what)), total_(total), mask_(stride - 1), shown_(isatty(STDERR_FILENO) == 1) {}
     ~Progress() { done(); }
     Progress(const Progress&) = delete;
     Progress& operator=(const Progress&) = delete;
 
-    /// DONE units finished; reads the clock only every 1024 calls, so it is cheap per step.
+    /// DONE units finished; cheap per step (the clock is read every STRIDE calls).
     void update(double done) {
-        if (!shown_ || (++calls_ & 1023u) != 0) return;
+        if (!shown_ || (++calls_ & mask_) != 0) return;
         const auto now = std::chrono::steady_clock::now();
         if (now - last_ < std::chrono::seconds(1)) return;
         last_ = now;
-        std::fprintf(stderr, "\r%s: %.0f of %.0f (%.0f%%)   ", what_.c_str(), done, total_, total_ > 0 ? 100.0 * done / total_ : 100.0);
+        std::fprintf(stderr, "\r%s %.0f of %.0f (%.0f%%)   ", what_.c_str(), done, total_, total_ > 0 ? 100.0 * done / total_ : 100.0);
         std::fflush(stderr);
         printed_ = true;
     }
@@ -37,6 +40,7 @@ public:
 private:
     std::string what_;
     double total_;
+    unsigned mask_;
     bool shown_;
     bool printed_ = false;
     unsigned calls_ = 0;
