@@ -170,6 +170,17 @@ huge_view)
     run "$grape" render "$work/big.json" -o "$work/big.svg"
     [ "$(cat "$work/status")" = 0 ] || fail "the SVG was refused: $(cat "$work/err")"
     ;;
+long_paths)
+    # A circle of 1,592 turns (10000 rad) drawn 200 units wide is 2e6 units of stroke: minutes
+    # of cairo's time. Refused with the numbers; a radius of 1e12 fits the view and is drawn.
+    printf '{"view": {"width": 640, "height": 480}, "paths": [{"name": "coil", "path": {"kind": "circle", "centre": [0, 0], "radius": 100, "start_angle": 0, "end_angle": 10000}}]}\n' >"$work/coil.json"
+    run "$grape" render "$work/coil.json" -o "$work/coil.png"
+    expect_error "$work/status" "$work/err" "render: the scene's paths are 2.1e+06 units long on the picture (path 'coil': 2.1e+06), more than the budget of 1e+06 units a picture (use --force to render them anyway)"
+    [ ! -e "$work/coil.png" ] || fail "output written"
+    printf '{"view": {"width": 640, "height": 480}, "paths": [{"name": "arc", "path": {"kind": "circle", "centre": [0, 0], "radius": 1e12, "start_angle": 0, "end_angle": 1}}]}\n' >"$work/arc.json"
+    run "$grape" render "$work/arc.json" -o "$work/arc.png"
+    [ "$(cat "$work/status")" = 0 ] || fail "the huge arc was refused: $(cat "$work/err")"
+    ;;
 out_of_memory)
     # --force past the budget under a 3 GB address-space limit: memory runs out; the message
     # says what was being built, the exit status is 2, nothing is written.

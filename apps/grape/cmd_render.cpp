@@ -240,6 +240,7 @@ struct RenderOptions {
 // The work `grape render` takes on without --force (stated in --help and the README).
 constexpr double memory_budget = 1024.0 * 1024.0 * 1024.0;  // bytes of raster per picture
 constexpr int max_frames = 100000;
+constexpr double max_drawn_length = 1e6;  // output units of path drawn per picture (~1000 view perimeters)
 
 std::string mebibytes(double bytes) {
     if (bytes < 1024.0 * 1024.0) return format("%.1f KiB", bytes / 1024.0);
@@ -280,6 +281,23 @@ void run_render(const RenderOptions& o) {
     const double t_end = o.time + (frames - 1) / o.fps;
     current_activity() = "computing the bounds of " + o.scene;
     const Bounds world = scene_bounds(scene, t_end);
+    // cairo's stroking time grows with the length drawn (faster than linearly where a path
+    // overlaps itself, as a circle of many turns does): bound the length on the picture.
+    const double scale = fit(world, {0, 0, scene.view.width, scene.view.height}, 30).max_stretch();
+    double drawn = 0.0, longest = 0.0;
+    std::string longest_name;
+    const auto count = [&](const Path& p, const std::string& name) {
+        const double length = p.length() * scale;
+        drawn += length;
+        if (length > longest) longest = length, longest_name = name;
+    };
+    for (const NamedPath& p : scene.paths) count(p.path, "path '" + p.name + "'");
+    for (std::size_t i = 0; i < scene.animations.size(); ++i)
+        if (scene.animations[i].path_name.empty()) count(scene.animations[i].path, "the path of animation " + std::to_string(i));
+    if (drawn > max_drawn_length && !o.force)
+        throw Error("render: the scene's paths are " + format("%.3g", drawn) + " units long on the picture (" + longest_name +
+                    ": " + format("%.3g", longest) + "), more than the budget of " + format("%.0g", max_drawn_length) +
+                    " units a picture (use --force to render them anyway)");
 
     if (o.frames_given && ext == ".svg") {
         current_activity() = "building the animated SVG " + o.out;
@@ -361,7 +379,8 @@ void register_render_command(CLI::App& app) {
     cmd->add_option("--fps", options->fps, "Frames per second of scene time, in (0, 10000]")->capture_default_str();
     cmd->add_flag("--force", options->force,
                   "Render even when a PNG picture needs more than 1 GiB of raster memory (views up to 32768×32768) or "
-                  "the frames look larger than the free disk space (estimated from the first frame)");
+                  "the frames look larger than the free disk space (estimated from the first frame) or the paths are "
+                  "longer than 1e6 output units on the picture");
     cmd->callback([options] { run_render(*options); });
 }
 
