@@ -9,6 +9,9 @@
 
 #include "seed_paths.hpp"
 
+#include "atomic_file.hpp"
+#include "progress.hpp"
+
 #if GRAPE_HAS_DYNAMICS
 #include <grape/dynamics.hpp>
 #endif
@@ -19,7 +22,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -49,7 +51,9 @@ std::string format(const char* fmt, double v) {
 // the picture's bounds and the trails). Without the dynamics module they stay at rest.
 class SimulationRunner {
 public:
-    explicit SimulationRunner(const Scene& scene) : scene_(scene) {
+    /// With RECORD_TRAILS every position after every step is kept (for the picture's bounds,
+    /// over at most 20000 steps); without it memory stays at the particles' current state.
+    explicit SimulationRunner(const Scene& scene, bool record_trails = false) : scene_(scene), record_trails_(record_trails) {
 #if GRAPE_HAS_DYNAMICS
         for (const SceneSimulation& s : scene.simulations) systems_.push_back(make_particle_system(s));
 #endif
@@ -95,11 +99,13 @@ public:
 
 private:
     void record(std::size_t i) {
+        if (!record_trails_) return;
         const auto p = positions(i);
         trails_[i].insert(trails_[i].end(), p.begin(), p.end());
     }
 
     const Scene& scene_;
+    bool record_trails_;
 #if GRAPE_HAS_DYNAMICS
     std::vector<ParticleSystem> systems_;
 #endif
@@ -115,7 +121,7 @@ Bounds scene_bounds(const Scene& scene, double t_end) {
         // The whole run (up to 20000 steps each) sets the box, so every frame shares one view.
         double horizon = t_end;
         for (const SceneSimulation& s : scene.simulations) horizon = std::max(horizon, std::min(s.duration, 20000.0 * s.dt));
-        SimulationRunner runner(scene);
+        SimulationRunner runner(scene, true);
         runner.advance_to(horizon);
         for (const auto& trail : runner.trails())
             for (Vec2 p : trail)
@@ -221,31 +227,33 @@ std::string scene_animated_svg(const Scene& scene, const Bounds& world, double t
     return animated_svg(scene.view.width, scene.view.height, t, paths, palette, movers, frames / fps, scene.name);
 }
 
-void write_text_file(const std::filesystem::path& file, const std::string& text) {
-    std::filesystem::path tmp = file;
-    tmp += ".partial";
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.close();
-    std::error_code ec;
-    if (!out) {
-        std::filesystem::remove(tmp, ec);
-        throw Error("cannot write " + file.string() + ": the file cannot be created or written");
-    }
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error("cannot write " + file.string() + ": " + ec.message());
-    }
-}
-
 struct RenderOptions {
     std::string scene;
     std::string out;
     double time = 0.0;
-    int frames = 0;
+    int frames = 0;  // 0: one picture (--frames not given)
+    bool frames_given = false;
     double fps = 30.0;
+    bool force = false;
 };
+
+// The work `grape render` takes on without --force (stated in --help and the README).
+constexpr double memory_budget = 1024.0 * 1024.0 * 1024.0;  // bytes of raster per picture
+constexpr int max_frames = 100000;
+constexpr double max_drawn_length = 1e6;  // output units of path drawn per picture (~1000 view perimeters)
+
+std::string mebibytes(double bytes) {
+    if (bytes < 1024.0 * 1024.0) return format("%.1f KiB", bytes / 1024.0);
+    if (bytes < 1024.0 * 1024.0 * 1024.0) return format("%.1f MiB", bytes / (1024.0 * 1024.0));
+    return format("%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+}
+
+// Free bytes on the filesystem holding FOLDER (infinite when unknown).
+double free_bytes(const std::filesystem::path& folder) {
+    std::error_code ec;
+    const auto space = std::filesystem::space(folder.empty() ? std::filesystem::path(".") : folder, ec);
+    return ec ? HUGE_VAL : static_cast<double>(space.available);
+}
 
 void run_render(const RenderOptions& o) {
     const std::filesystem::path out = o.out;
@@ -253,41 +261,83 @@ void run_render(const RenderOptions& o) {
     if (ext != ".png" && ext != ".svg" && ext != ".pdf")
         throw Error("render: -o " + o.out + ": the output must end in .png, .svg or .pdf");
     if (!std::isfinite(o.time) || o.time < 0.0) throw Error("render: --time must be finite and ≥ 0 (got " + format("%g", o.time) + ")");
-    if (o.frames < 0 || o.frames > 100000) throw Error("render: --frames must be in [1, 100000] (got " + std::to_string(o.frames) + ")");
+    if (o.frames_given && (o.frames < 1 || o.frames > max_frames))
+        throw Error("render: --frames must be in [1, 100000] (got " + std::to_string(o.frames) + ")");
     if (!std::isfinite(o.fps) || o.fps <= 0.0 || o.fps > 10000.0) throw Error("render: --fps must be in (0, 10000] (got " + format("%g", o.fps) + ")");
     const auto parent = out.parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))
         throw Error("cannot write " + o.out + ": folder " + parent.string() + " does not exist");
+    std::error_code ec;
+    if (std::filesystem::is_directory(out, ec)) throw Error("cannot write " + o.out + ": it is a folder");
+    current_activity() = "reading " + o.scene;
     const Scene scene = load_scene_file(o.scene);
-    const int frames = std::max(o.frames, 1);
+    const int frames = o.frames_given ? o.frames : 1;
+    // A PNG picture is rasterized twice over (cairo's surface and the image copied out of it).
+    const double raster = std::ceil(scene.view.width) * std::ceil(scene.view.height) * 4.0 * 2.0;
+    if (ext == ".png" && raster > memory_budget && !o.force)
+        throw Error("render: a " + format("%.0f", scene.view.width) + "×" + format("%.0f", scene.view.height) +
+                    " picture needs about " + mebibytes(raster) + " of memory, more than the budget of " +
+                    mebibytes(memory_budget) + " (use --force to render it anyway)");
     const double t_end = o.time + (frames - 1) / o.fps;
+    current_activity() = "computing the bounds of " + o.scene;
     const Bounds world = scene_bounds(scene, t_end);
+    // cairo's stroking time grows with the length drawn (faster than linearly where a path
+    // overlaps itself, as a circle of many turns does): bound the length on the picture.
+    const double scale = fit(world, {0, 0, scene.view.width, scene.view.height}, 30).max_stretch();
+    double drawn = 0.0, longest = 0.0;
+    std::string longest_name;
+    const auto count = [&](const Path& p, const std::string& name) {
+        const double length = p.length() * scale;
+        drawn += length;
+        if (length > longest) longest = length, longest_name = name;
+    };
+    for (const NamedPath& p : scene.paths) count(p.path, "path '" + p.name + "'");
+    for (std::size_t i = 0; i < scene.animations.size(); ++i)
+        if (scene.animations[i].path_name.empty()) count(scene.animations[i].path, "the path of animation " + std::to_string(i));
+    if (drawn > max_drawn_length && !o.force)
+        throw Error("render: the scene's paths are " + format("%.3g", drawn) + " units long on the picture (" + longest_name +
+                    ": " + format("%.3g", longest) + "), more than the budget of " + format("%.0g", max_drawn_length) +
+                    " units a picture (use --force to render them anyway)");
 
-    if (o.frames > 0 && ext == ".svg") {
-        write_text_file(out, scene_animated_svg(scene, world, o.time, frames, o.fps));
+    if (o.frames_given && ext == ".svg") {
+        current_activity() = "building the animated SVG " + o.out;
+        detail::write_file_atomically(out, scene_animated_svg(scene, world, o.time, frames, o.fps));
         std::cout << "wrote " << out.string() << " (" << frames << " frames at " << o.fps << " fps, animated SVG)\n";
         return;
     }
     SimulationRunner sims(scene);
-    std::vector<std::filesystem::path> written;
-    try {
-        for (int f = 0; f < frames; ++f) {
-            const double t = o.time + f / o.fps;
-            sims.advance_to(t);
-            Canvas canvas(scene.view.width, scene.view.height);
-            draw_scene(canvas, scene, world, t, sims);
-            const auto file = o.frames > 0 ? frame_file(out, f + 1) : out;
-            canvas.write(file);
-            written.push_back(file);
+    // All frames or none: a half-written sequence is worse than a clear error, so a failure
+    // or an interruption (SIGINT, SIGTERM) removes every frame this run wrote.
+    detail::RunFiles written;
+    Progress progress("render: frame", frames, 1);
+    for (int f = 0; f < frames; ++f) {
+        const double t = o.time + f / o.fps;
+        sims.advance_to(t);
+        const auto file = o.frames_given ? frame_file(out, f + 1) : out;
+        current_activity() = "drawing " + file.string() + " (" + format("%.0f", scene.view.width) + "×" +
+                             format("%.0f", scene.view.height) + ")";
+        Canvas canvas(scene.view.width, scene.view.height);
+        draw_scene(canvas, scene, world, t, sims);
+        // A single picture replaces its file only when complete (an old one survives a failure);
+        // a frame is registered before it is written, so an interruption cannot miss it.
+        if (o.frames_given) written.add(file);
+        canvas.write(file);
+        if (f == 0 && frames > 1 && !o.force) {
+            // The first frame's size times the frame count, against the free space left.
+            const double first = static_cast<double>(std::filesystem::file_size(file, ec));
+            const double needed = first * (frames - 1);
+            const double available = free_bytes(parent);
+            if (!ec && needed > available)
+                throw Error("render: " + std::to_string(frames) + " frames need about " + mebibytes(first * frames) +
+                            " (the first is " + mebibytes(first) + ") but " + mebibytes(available) +
+                            " are free where " + o.out + " goes (use --force to try anyway)");
         }
-    } catch (...) {
-        // All frames or none: a half-written sequence is worse than a clear error.
-        std::error_code ec;
-        for (const auto& f : written) std::filesystem::remove(f, ec);
-        throw;
+        progress.update(f + 1);
     }
-    if (o.frames > 0)
-        std::cout << "wrote " << frames << " frames " << written.front().string() << " … " << written.back().string() << '\n';
+    progress.done();
+    written.keep();
+    if (o.frames_given)
+        std::cout << "wrote " << frames << " frames " << frame_file(out, 1).string() << " … " << frame_file(out, frames).string() << '\n';
     else
         std::cout << "wrote " << out.string() << '\n';
 }
@@ -321,10 +371,16 @@ void register_render_command(CLI::App& app) {
     auto* cmd = app.add_subcommand("render", "Render a scene file to PNG, SVG or PDF (frames, or an animated SVG)");
     cmd->add_option("scene", options->scene, "Scene file (JSON, see docs/scene-format.md)")->required();
     cmd->add_option("-o,--out", options->out, "Output file: .png, .svg or .pdf")->required();
-    cmd->add_option("--time", options->time, "Scene time in seconds of the (first) picture")->capture_default_str();
-    cmd->add_option("--frames", options->frames,
-                    "Number of frames: OUT-0001.png, ...; with .svg one animated SVG (SMIL)");
-    cmd->add_option("--fps", options->fps, "Frames per second of scene time")->capture_default_str();
+    cmd->add_option("--time", options->time, "Scene time in seconds of the (first) picture, ≥ 0")->capture_default_str();
+    cmd->add_option_function<int>(
+        "--frames", [options](int n) { options->frames = n, options->frames_given = true; },
+        "Number of frames in [1, 100000]: OUT-0001.png, ...; with .svg one animated SVG (SMIL). All or none are "
+        "left: a failure or Ctrl-C removes the frames written");
+    cmd->add_option("--fps", options->fps, "Frames per second of scene time, in (0, 10000]")->capture_default_str();
+    cmd->add_flag("--force", options->force,
+                  "Render even when a PNG picture needs more than 1 GiB of raster memory (views up to 32768×32768) or "
+                  "the frames look larger than the free disk space (estimated from the first frame) or the paths are "
+                  "longer than 1e6 output units on the picture");
     cmd->callback([options] { run_render(*options); });
 }
 

@@ -3,18 +3,21 @@
 // table and seed-formula comparison.
 #include "commands.hpp"
 #include "json_out.hpp"
+#include "progress.hpp"
 
 #include <grape/dynamics.hpp>
 #include <grape/error.hpp>
 
 #include <seed_dynamics.hpp>
 
+#include "atomic_file.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -36,6 +39,11 @@ struct SimulateOptions {
 
 std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
 
+// Limits of the options (stated in --help).
+constexpr double max_abs_x0 = 1e150;    // x0² stays far from overflow
+constexpr double max_abs_g = 1e150;     // and so do g·x0 and the forces
+constexpr double max_omega_dt = 1.0;    // Baumgarte gain per step
+
 void run_simulate(const SimulateOptions& o) {
     scenes::ParabolaSetup setup;
     setup.method = scenes::parabola_method_from_string(o.method);
@@ -54,21 +62,47 @@ void run_simulate(const SimulateOptions& o) {
     if (setup.method != scenes::ParabolaMethod::implicit && setup.drift.method != DriftControl::none)
         throw Error("simulate: --stabilize applies to --method implicit only (got --method " + o.method + ")");
 
-    std::ofstream csv;
+    // The release point (x0, −x0²/100) and its energy m·g·x0²/100 must stay finite.
+    if (!(std::abs(setup.x0) <= max_abs_x0))
+        throw Error("simulate: --x0 must lie in [-1e150, 1e150] (got " + o.x0 + ")");
+    if (!(std::abs(setup.g) <= max_abs_g)) throw Error("simulate: --g must lie in [-1e150, 1e150] (got " + o.g + ")");
+    if (!(std::abs(setup.force_x) <= max_abs_g))
+        throw Error("simulate: --force-x must lie in [-1e150, 1e150] (got " + o.force_x + ")");
+    if (setup.drift.omega_dt > max_omega_dt)
+        throw Error("simulate: --omega-dt must be in (0, 1] (got " + o.omega_dt +
+                    "): a larger gain overshoots the constraint within one step");
+    const double steps = std::ceil(seconds / dt);
+
+    std::optional<detail::AtomicFile> csv;
     if (!o.csv.empty()) {
-        csv.open(o.csv);
-        if (!csv) throw Error("simulate: --csv cannot write '" + o.csv + "'");
-        csv << "t,x,y,vx,vy,residual,energy\n";
+        csv.emplace(o.csv);
+        csv->write("t,x,y,vx,vy,residual,energy\n");
     }
     auto write_row = [&csv](const scenes::ParabolaState& s) {
-        csv << json_number(s.t) << ',' << json_number(s.x.x) << ',' << json_number(s.x.y) << ',' << json_number(s.v.x)
-            << ',' << json_number(s.v.y) << ',' << json_number(s.residual) << ',' << json_number(s.energy) << '\n';
+        csv->write(json_number(s.t) + ',' + json_number(s.x.x) + ',' + json_number(s.x.y) + ',' + json_number(s.v.x) + ',' +
+                   json_number(s.v.y) + ',' + json_number(s.residual) + ',' + json_number(s.energy) + '\n');
     };
-    if (csv.is_open()) write_row(scenes::ParabolaRun(setup).state());
+    // A state that leaves the finite range is refused at the step it happens: NaN would
+    // otherwise print as null with a successful exit.
+    auto check_finite = [&](const scenes::ParabolaState& s, double step) {
+        if (!is_finite(s.x) || !is_finite(s.v) || !std::isfinite(s.energy))
+            throw Error("simulate: the state left the finite range at step " + detail::number_text(step) + " (t = " +
+                        detail::number_text(s.t) + " s, x = (" + detail::number_text(s.x.x) + ", " +
+                        detail::number_text(s.x.y) + "), energy " + detail::number_text(s.energy) +
+                        "); try a smaller --dt, --g or --force-x");
+    };
+    const scenes::ParabolaState start = scenes::ParabolaRun(setup).state();
+    check_finite(start, 0);
+    if (csv) write_row(start);
+    Progress progress("simulate: step", steps);
+    double step = 0;
     const auto summary = scenes::run_parabola(setup, dt, seconds, [&](const scenes::ParabolaState& s) {
-        if (csv.is_open()) write_row(s);
+        check_finite(s, ++step);
+        if (csv) write_row(s);
+        progress.update(step);
     });
-    if (csv.is_open() && !csv) throw Error("simulate: --csv failed while writing '" + o.csv + "'");
+    progress.done();
+    if (csv) csv->commit();
     const auto& f = summary.final;
     std::cout << "{\"method\": " << quoted(to_string(setup.method)) << ", \"integrator\": " << quoted(to_string(setup.integrator))
               << ", \"stabilize\": " << quoted(to_string(setup.drift.method)) << ", \"dt\": " << json_number(dt)
@@ -93,15 +127,15 @@ void register_simulate_command(CLI::App& app) {
     parabola->add_option("--method", o->method, "implicit (Witkin solver), parametric (generalized coordinate) or seed (the seed's closed form as written)")
         ->capture_default_str();
     parabola->add_option("--integrator", o->integrator, "euler, symplectic, midpoint, rk4, verlet or rk45")->capture_default_str();
-    parabola->add_option("--dt", o->dt, "Step in seconds")->capture_default_str();
+    parabola->add_option("--dt", o->dt, "Step in seconds; --seconds/--dt is at most 1e8 steps (progress on stderr when it is a terminal)")->capture_default_str();
     parabola->add_option("--seconds", o->seconds, "Simulated time")->capture_default_str();
-    parabola->add_option("--x0", o->x0, "Release point x (px)")->capture_default_str();
-    parabola->add_option("--g", o->g, "Gravity (px/s², along +y)")->capture_default_str();
-    parabola->add_option("--force-x", o->force_x, "Constant sideways force (potential −F·x)")->capture_default_str();
+    parabola->add_option("--x0", o->x0, "Release point x (px), |x0| ≤ 1e150")->capture_default_str();
+    parabola->add_option("--g", o->g, "Gravity (px/s², along +y), |g| ≤ 1e150")->capture_default_str();
+    parabola->add_option("--force-x", o->force_x, "Constant sideways force (potential −F·x), |F| ≤ 1e150")->capture_default_str();
     parabola->add_option("--stabilize", o->stabilize, "Drift control of the implicit method: none, baumgarte or projection")
         ->capture_default_str();
-    parabola->add_option("--omega-dt", o->omega_dt, "Baumgarte gain ω·dt (ks = ω², kd = 2ω)")->capture_default_str();
-    parabola->add_option("--csv", o->csv, "Also write t, x, y, vx, vy, residual, energy per step to this file");
+    parabola->add_option("--omega-dt", o->omega_dt, "Baumgarte gain ω·dt in (0, 1] (ks = ω², kd = 2ω)")->capture_default_str();
+    parabola->add_option("--csv", o->csv, "Also write t, x, y, vx, vy, residual, energy per step to this file (written whole or not at all)");
     parabola->callback([o] { run_simulate(*o); });
 }
 

@@ -34,4 +34,8 @@ void demo_pictures(const DemoContext& context);
 
 void register_demo_command(CLI::App& app);
 
+/// What the running command is doing ("drawing out.png (1920×1080)"), for the message when
+/// memory runs out.
+std::string& current_activity();
+
 }  // namespace grape::tool

@@ -1,6 +1,10 @@
 // `grape demo`: the seed's examples, computed and summarized; each module adds a section.
 #include "commands.hpp"
 
+#include <grape/error.hpp>
+
+#include "atomic_file.hpp"
+
 #include <iostream>
 
 namespace grape::tool {
@@ -10,7 +14,12 @@ void register_demo_command(CLI::App& app) {
     auto dir = std::make_shared<std::string>("grape-demo");
     demo->add_option("--out", *dir, "Folder for the files the demo writes")->capture_default_str();
     demo->callback([dir] {
-        std::filesystem::create_directories(*dir);
+        if (dir->empty()) throw Error("demo: --out must name a folder (got an empty name)");
+        std::error_code ec;
+        if (std::filesystem::exists(*dir, ec) && !std::filesystem::is_directory(*dir, ec))
+            throw Error("demo: --out " + *dir + ": it exists and is not a folder");
+        std::filesystem::create_directories(*dir, ec);
+        if (ec) throw Error("demo: --out " + *dir + ": cannot create the folder (" + detail::write_failure_reason(ec.value(), *dir) + ")");
         const DemoContext context{std::cout, *dir};
         demo_paths(context);
         demo_curves(context);

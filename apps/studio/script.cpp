@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -166,6 +167,9 @@ std::vector<ScriptEvent> parse_script(std::string_view text, std::string_view so
 }
 
 std::vector<ScriptEvent> load_script(const std::string& path) {
+    std::error_code ec;
+    // A folder opens as a stream that reads nothing: it would pass as an empty script.
+    if (std::filesystem::is_directory(path, ec)) throw Error("--script: '" + path + "' is a folder, not a script file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error("--script: cannot read '" + path + "'");
     std::ostringstream text;

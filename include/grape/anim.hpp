@@ -18,6 +18,12 @@
 // ticks of 1/60 s end a 1 s play on the 60th tick although the sum falls short by an ulp.
 // Arc-length (reparametrized) linear and cubic Bézier paths are evaluated from a table the
 // engine builds once per shared path, within 2e-10·length of Path::point.
+//
+// Threads: an Engine and its animations belong to one thread: tick, create, seek, pause,
+// kill, the handles' queries and every event handler run on the thread that owns the
+// engine, and the targets it writes must not be read by another thread during a tick.
+// Separate engines share nothing and may run on separate threads at once; the Paths and
+// Curves they play may be shared between them (see path.hpp and curve.hpp).
 #pragma once
 
 #include <grape/curve.hpp>

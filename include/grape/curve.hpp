@@ -8,6 +8,10 @@
 //   grape::Curve c = grape::Curve::quad_in_out();
 //   double p = c(0.25);                                   // 0.125
 //   grape::Curve css = grape::parse_curve("cubic-bezier(0.25,0.1,0.25,1)");
+//
+// Threads: a Curve is immutable after construction; one Curve (a custom curve's shared points
+// included) may be evaluated, copied and printed from any number of threads at once. Assigning
+// to one Curve object while another thread reads it is a data race, as for any value.
 #pragma once
 
 #include <cmath>

@@ -23,6 +23,12 @@
 //   system.add_gravity({0, 500});
 //   system.add_anchor(bob, {0, 0}, 100);       // a pendulum of length 100
 //   for (int i = 0; i < 60; ++i) system.step(1.0 / 60);
+//
+// Threads: a ParticleSystem, a Bead and a Stepper each belong to one thread (step, add,
+// queries and the force functions they call). Separate systems and beads share nothing and
+// may step on separate threads at once, also when they read the same Path (shared
+// read-only), or the same ImplicitCurve if its function is safe to call concurrently.
+// The *_from_string and to_string functions may be called from any thread.
 #pragma once
 
 #include <grape/dynamics_jet.hpp>

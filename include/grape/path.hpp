@@ -7,6 +7,12 @@
 //
 //   grape::SpiralPath spiral({100, 100}, 200, 0);
 //   grape::Vec2 p = spiral.point(0.5);
+//
+// Threads: a Path (any kind, reparametrized and complex paths included) is immutable after
+// construction, so one Path may be read from any number of threads at once (point, tangent,
+// derivatives, length, bounds, flattening, copying the handle) with no locking; copies share
+// the shape through an atomic reference count. Constructing, assigning or destroying one
+// Path object is not synchronized: give each thread its own handle to write.
 #pragma once
 
 #include <grape/math.hpp>

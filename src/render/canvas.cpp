@@ -4,6 +4,7 @@
 
 #include <grape/error.hpp>
 
+#include "atomic_file.hpp"
 #include "cairo_util.hpp"
 
 #include <cairo-pdf.h>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <string>
 #include <system_error>
 
@@ -90,6 +92,7 @@ void copy_from_surface(cairo_surface_t* image, std::span<std::uint32_t> out, int
 // it came from is gone.
 cairo_surface_t* surface_from_image(const Image& image) {
     cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, image.width(), image.height());
+    if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) return s;  // the caller sees the status
     cairo_surface_flush(s);
     unsigned char* data = cairo_image_surface_get_data(s);
     const int stride = cairo_image_surface_get_stride(s);
@@ -109,36 +112,18 @@ std::string lower_extension(const std::filesystem::path& file) {
     return ext;
 }
 
-// A sibling temporary that is renamed over the target once complete, so readers never see
-// half a file and a failure leaves nothing behind.
-std::filesystem::path temporary_beside(const std::filesystem::path& file) {
-    std::filesystem::path tmp = file;
-    tmp += ".partial";
-    return tmp;
+// cairo's stream callback: the bytes go to the file's temporary, errors are kept for the message.
+cairo_status_t write_to_file(void* closure, const unsigned char* data, unsigned int length) {
+    auto* out = static_cast<detail::AtomicFile*>(closure);
+    return out->append({reinterpret_cast<const char*>(data), length}) ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
-void commit_file(const std::filesystem::path& tmp, const std::filesystem::path& file) {
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error("cannot write " + file.string() + ": " + ec.message());
-    }
-}
-
-[[noreturn]] void write_failed(const std::filesystem::path& tmp, const std::filesystem::path& file,
-                               cairo_status_t status) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    std::string reason = cairo_status_to_string(status);
-    if (status == CAIRO_STATUS_WRITE_ERROR || status == CAIRO_STATUS_FILE_NOT_FOUND) {
-        const auto parent = file.parent_path();
-        if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
-            reason = "folder " + parent.string() + " does not exist";
-        else
-            reason = "the file cannot be created or written";
-    }
-    throw Error("cannot write " + file.string() + ": " + reason);
+// After cairo is done with the file: a failed write is reported by its errno's reason,
+// any other cairo failure (e.g. out of memory) by cairo's own words.
+void finish_file(detail::AtomicFile& out, cairo_status_t status) {
+    if (status == CAIRO_STATUS_WRITE_ERROR) out.fail();
+    if (status != CAIRO_STATUS_SUCCESS) out.fail(cairo_status_to_string(status));
+    out.commit();
 }
 
 }  // namespace
@@ -223,12 +208,12 @@ void Image::set_pixel(int x, int y, Color color) noexcept {
 }
 
 void Image::write_png(const std::filesystem::path& file) const {
+    detail::AtomicFile out(file);
     cairo_surface_t* s = surface_from_image(*this);
-    const auto tmp = temporary_beside(file);
-    const cairo_status_t status = cairo_surface_write_to_png(s, tmp.c_str());
+    cairo_status_t status = cairo_surface_status(s);
+    if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_write_to_png_stream(s, write_to_file, &out);
     cairo_surface_destroy(s);
-    if (status != CAIRO_STATUS_SUCCESS) write_failed(tmp, file, status);
-    commit_file(tmp, file);
+    finish_file(out, status);
 }
 
 // ---------------------------------------------------------------------------------- Canvas
@@ -427,13 +412,14 @@ void Canvas::write(const std::filesystem::path& file) const {
     if (ext != ".png" && ext != ".svg" && ext != ".pdf")
         throw Error("cannot write " + file.string() + ": unknown format \"" + ext +
                     "\" (the file name must end in .png, .svg or .pdf)");
-    const auto tmp = temporary_beside(file);
     if (ext == ".png") {
         to_image().write_png(file);
         return;
     }
-    cairo_surface_t* target = ext == ".svg" ? cairo_svg_surface_create(tmp.c_str(), state_->width, state_->height)
-                                            : cairo_pdf_surface_create(tmp.c_str(), state_->width, state_->height);
+    detail::AtomicFile out(file);
+    cairo_surface_t* target =
+        ext == ".svg" ? cairo_svg_surface_create_for_stream(write_to_file, &out, state_->width, state_->height)
+                      : cairo_pdf_surface_create_for_stream(write_to_file, &out, state_->width, state_->height);
     cairo_status_t status = cairo_surface_status(target);
     if (status == CAIRO_STATUS_SUCCESS) {
         cairo_t* cr = cairo_create(target);
@@ -441,12 +427,12 @@ void Canvas::write(const std::filesystem::path& file) const {
         cairo_paint(cr);
         status = cairo_status(cr);
         cairo_destroy(cr);
+        // PDF and SVG surfaces write most of their bytes here: its status is the write's.
         cairo_surface_finish(target);
         if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(target);
     }
     cairo_surface_destroy(target);
-    if (status != CAIRO_STATUS_SUCCESS) write_failed(tmp, file, status);
-    commit_file(tmp, file);
+    finish_file(out, status);
 }
 
 Image Canvas::to_image() const {
@@ -454,6 +440,10 @@ Image Canvas::to_image() const {
     const int h = static_cast<int>(std::ceil(state_->height));
     Image image(w, h);
     cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+    if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {  // no memory for the raster
+        cairo_surface_destroy(s);
+        throw std::bad_alloc();
+    }
     cairo_t* cr = cairo_create(s);
     cairo_set_source_surface(cr, state_->surface, 0.0, 0.0);
     cairo_paint(cr);

@@ -4,6 +4,7 @@
 
 #include <grape/error.hpp>
 
+#include "atomic_file.hpp"
 #include "path_node.hpp"
 #include "kinds.hpp"
 
@@ -813,6 +814,8 @@ const NamedCurve* Scene::find_curve(std::string_view name) const noexcept {
 Scene load_scene(std::string_view text) { return read_scene(parse_text(text, "scene: ")); }
 
 Scene load_scene_file(const std::filesystem::path& file) {
+    std::error_code folder_ec;
+    if (std::filesystem::is_directory(file, folder_ec)) throw Error("cannot read " + file.string() + ": it is a folder, not a scene file");
     std::ifstream in(file, std::ios::binary);
     if (!in) {
         std::error_code ec;
@@ -832,25 +835,7 @@ Scene load_scene_file(const std::filesystem::path& file) {
 std::string save_scene(const Scene& scene) { return scene_json(scene).dump(2) + "\n"; }
 
 void save_scene_file(const Scene& scene, const std::filesystem::path& file) {
-    const std::string text = save_scene(scene);
-    std::filesystem::path tmp = file;
-    tmp += ".partial";
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) {
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw Error("cannot write " + file.string() + ": the file cannot be created or written");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error("cannot write " + file.string() + ": " + ec.message());
-    }
+    detail::write_file_atomically(file, save_scene(scene));
 }
 
 double conic_value(const SceneConstraint& c, Vec2 p) noexcept {

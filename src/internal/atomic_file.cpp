@@ -1,0 +1,232 @@
+#include "atomic_file.hpp"
+
+#include <grape/error.hpp>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <csignal>
+#include <mutex>
+#include <system_error>
+#include <utility>
+
+namespace grape::detail {
+
+// ------------------------------------------------------------- removal on SIGINT/SIGTERM
+
+// The registry the signal handler walks: a list that only grows (entries are reused, never
+// freed), published with release stores so the handler sees complete entries. The handler
+// reads `path` only while `active`; entries are rewritten only while inactive, on the one
+// thread that writes files (see remove_files_on_interrupt).
+struct CleanupEntry {
+    std::string path;
+    std::atomic<bool> active{false};
+    CleanupEntry* next = nullptr;       // registry order, fixed once published
+    CleanupEntry* next_free = nullptr;  // free list, guarded by free_mutex
+};
+
+namespace {
+
+std::atomic<CleanupEntry*> registry{nullptr};
+std::atomic<bool> enabled{false};
+std::mutex free_mutex;
+CleanupEntry* free_list = nullptr;
+
+static_assert(std::atomic<CleanupEntry*>::is_always_lock_free && std::atomic<bool>::is_always_lock_free,
+              "the signal handler needs lock-free atomics");
+
+CleanupEntry* register_path(const std::filesystem::path& path) {
+    if (!enabled.load(std::memory_order_acquire)) return nullptr;
+    std::lock_guard lock(free_mutex);
+    CleanupEntry* e = free_list;
+    if (e) {
+        free_list = e->next_free;
+        e->path = path.string();
+    } else {
+        e = new CleanupEntry;
+        e->path = path.string();
+        e->next = registry.load(std::memory_order_relaxed);
+        registry.store(e, std::memory_order_release);
+    }
+    e->active.store(true, std::memory_order_release);
+    return e;
+}
+
+void unregister(CleanupEntry* e) noexcept {
+    if (!e) return;
+    e->active.store(false, std::memory_order_release);
+    std::lock_guard lock(free_mutex);
+    e->next_free = free_list;
+    free_list = e;
+}
+
+extern "C" void remove_registered_files(int signal_number) {
+    // Only async-signal-safe calls: unlink, then the default action by re-raising (the
+    // handler was installed with SA_RESETHAND, so the pending signal ends the process).
+    for (CleanupEntry* e = registry.load(std::memory_order_acquire); e; e = e->next)
+        if (e->active.load(std::memory_order_acquire)) ::unlink(e->path.c_str());
+    ::raise(signal_number);
+}
+
+constexpr std::size_t buffer_size = 64 * 1024;
+
+}  // namespace
+
+void remove_files_on_interrupt() {
+    enabled.store(true, std::memory_order_release);
+    struct sigaction action {};
+    action.sa_handler = remove_registered_files;
+    action.sa_flags = SA_RESETHAND;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
+// ----------------------------------------------------------------------------- messages
+
+std::string write_failure_reason(int err, const std::filesystem::path& file) {
+    std::error_code ec;
+    const auto parent = file.parent_path();
+    if ((err == ENOENT || err == ENOTDIR) && !parent.empty() && !std::filesystem::is_directory(parent, ec))
+        return "folder " + parent.string() + " does not exist";
+    if (err == EISDIR || std::filesystem::is_directory(file, ec)) return "it is a folder";
+    std::string reason = std::error_code(err, std::generic_category()).message();
+    // "No space left on device" → "no space left on device"; keep "I/O error" as it is.
+    if (reason.size() > 1 && std::isupper(static_cast<unsigned char>(reason[0])) &&
+        std::islower(static_cast<unsigned char>(reason[1])))
+        reason[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(reason[0])));
+    return reason;
+}
+
+// ----------------------------------------------------------------------------- AtomicFile
+
+AtomicFile::AtomicFile(std::filesystem::path file) : file_(std::move(file)) {
+    temporary_ = file_;
+    temporary_ += ".partial";
+    std::error_code ec;
+    if (std::filesystem::is_directory(file_, ec)) throw Error("cannot write " + file_.string() + ": it is a folder");
+    entry_ = register_path(temporary_);  // before the file exists, so no interruption misses it
+    fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd_ < 0) {
+        const int err = errno;
+        unregister(entry_);
+        entry_ = nullptr;
+        throw Error("cannot write " + file_.string() + ": " + write_failure_reason(err, file_));
+    }
+    buffer_.reserve(buffer_size);
+}
+
+AtomicFile::~AtomicFile() { discard(); }
+
+void AtomicFile::discard() noexcept {
+    if (fd_ >= 0) {
+        ::close(fd_);
+        fd_ = -1;
+        ::unlink(temporary_.c_str());
+    }
+    unregister(entry_);
+    entry_ = nullptr;
+}
+
+bool AtomicFile::write_all(const char* p, std::size_t left) noexcept {
+    while (left > 0) {
+        const ssize_t n = ::write(fd_, p, left);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            errno_ = errno;
+            return false;
+        }
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+bool AtomicFile::flush_buffer() noexcept {
+    if (!write_all(buffer_.data(), buffer_.size())) return false;
+    buffer_.clear();
+    return true;
+}
+
+bool AtomicFile::append(std::string_view bytes) noexcept {
+    if (fd_ < 0 || errno_ != 0) return false;
+    if (buffer_.size() + bytes.size() > buffer_size && !flush_buffer()) return false;
+    if (bytes.size() >= buffer_size) return write_all(bytes.data(), bytes.size());  // large blocks go straight through
+    buffer_.append(bytes);  // fits in the reserved capacity: no allocation
+    return true;
+}
+
+void AtomicFile::write(std::string_view bytes) {
+    if (!append(bytes)) fail();
+}
+
+void AtomicFile::fail(std::string_view reason) {
+    const int err = errno_ ? errno_ : EIO;
+    discard();
+    throw Error("cannot write " + file_.string() + ": " +
+                (reason.empty() ? write_failure_reason(err, file_) : std::string(reason)));
+}
+
+void AtomicFile::commit() {
+    if (fd_ < 0) throw Error("cannot write " + file_.string() + ": already committed or discarded");
+    if (errno_ != 0 || !flush_buffer()) fail();
+    // The data reaches the disk before the rename makes it visible: after a crash the file
+    // is the old one or the whole new one. Filesystems without fsync (EINVAL) are accepted.
+    if (::fsync(fd_) != 0 && errno != EINVAL) {
+        errno_ = errno;
+        fail();
+    }
+    const int fd = std::exchange(fd_, -1);
+    if (::close(fd) != 0 && errno != EINTR) {  // NFS reports deferred write errors here
+        errno_ = errno;
+        ::unlink(temporary_.c_str());
+        fail();
+    }
+    if (::rename(temporary_.c_str(), file_.c_str()) != 0) {
+        errno_ = errno;
+        ::unlink(temporary_.c_str());
+        fail();
+    }
+    unregister(entry_);
+    entry_ = nullptr;
+    // Make the rename itself durable (best effort: not every filesystem syncs folders).
+    const auto parent = file_.parent_path();
+    const int dir = ::open(parent.empty() ? "." : parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir >= 0) {
+        ::fsync(dir);
+        ::close(dir);
+    }
+}
+
+void write_file_atomically(const std::filesystem::path& file, std::string_view bytes) {
+    AtomicFile out(file);
+    out.write(bytes);
+    out.commit();
+}
+
+// ------------------------------------------------------------------------------- RunFiles
+
+RunFiles::~RunFiles() {
+    for (CleanupEntry* e : entries_) unregister(e);
+    if (kept_) return;
+    std::error_code ec;
+    for (const auto& f : files_) std::filesystem::remove(f, ec);
+}
+
+void RunFiles::add(const std::filesystem::path& file) {
+    files_.push_back(file);
+    entries_.reserve(files_.size());
+    if (CleanupEntry* e = register_path(file)) entries_.push_back(e);
+}
+
+void RunFiles::keep() noexcept {
+    kept_ = true;
+    for (CleanupEntry* e : entries_) unregister(e);
+    entries_.clear();
+}
+
+}  // namespace grape::detail
