@@ -10,8 +10,11 @@
 // rate and accumulates the fraction in a remainder in (−1, 1) that carries ±1 frame when it
 // reaches ±1, so no multiplication or modulo is needed and the frame after n steps is
 // start + trunc(rate·n), wrapped: reverse play is the mirror image of forward play. It is
-// exact for rates whose fractions add exactly in binary (0.5, 0.25, 1.375, …); a rate such as
-// 0.1 is already rounded when stored, so at exact multiples the frame may trail by one.
+// exact for rates whose fractions add exactly in binary (0.5, 0.25, 1.375, …). For other rates
+// each addition to the remainder rounds, so where rate·n lies within that accumulated rounding
+// (about n·2⁻⁵³) of a whole number the frame can be one off trunc(rate·n), either way: 0.1
+// trails by one at step 10 (ten additions give 0.999…9), 1/3 leads by one at step 3 (three
+// additions of the stored 0.333…31 round up to 1).
 #pragma once
 
 #include <cstddef>
@@ -131,7 +134,7 @@ public:
 private:
     struct Callbacks;
     void init(std::size_t frame_count, const SpritePlayerDef& def);
-    void move_by(std::int64_t delta, std::size_t extra_cycles) noexcept;
+    void move_by(std::int64_t delta, std::size_t extra_cycles, std::int64_t direction) noexcept;
     void set_rate_parts(double rate) noexcept;
     void report(std::int64_t target, std::int64_t steps, std::int64_t direction, std::size_t cycles,
                 bool completed) noexcept;

@@ -183,7 +183,8 @@ void SpritePlayer::advance() noexcept {
     const double r = remainder_ + fraction_;  // in (−2, 2)
     const int carry = static_cast<int>(r >= 1.0) - static_cast<int>(r <= -1.0);
     remainder_ = r - static_cast<double>(carry);  // exact: r ∓ 1 for r in [1, 2) or (−2, −1] is exact (Sterbenz)
-    move_by(std::int64_t{whole_} + carry, 0);
+    const std::int64_t delta = std::int64_t{whole_} + carry;
+    move_by(delta, 0, delta >= 0 ? 1 : -1);
 }
 
 void SpritePlayer::advance(double dt, double fps) {
@@ -207,11 +208,14 @@ void SpritePlayer::advance(double dt, double fps) {
     const int carry = static_cast<int>(r >= 1.0) - static_cast<int>(r <= -1.0);
     remainder_ = r - static_cast<double>(carry);
     const double total = whole + static_cast<double>(carry);
+    // The direction of travel comes from the move itself: after whole cycles are dropped the
+    // rest may be 0 (a backward move by exactly two cycles), which has no sign of its own.
+    const std::int64_t direction = total >= 0.0 ? 1 : -1;
     const double p = static_cast<double>(period());
     if (std::fabs(total) <= p) {
-        move_by(static_cast<std::int64_t>(total), 0);
+        move_by(static_cast<std::int64_t>(total), 0, direction);
     } else if (mode_ == PlayMode::once) {
-        move_by(total > 0.0 ? std::int64_t{frame_count_} : -std::int64_t{frame_count_}, 0);  // past the end either way
+        move_by(total > 0.0 ? std::int64_t{frame_count_} : -std::int64_t{frame_count_}, 0, direction);  // past the end either way
     } else {
         // A long time step: whole cycles are dropped (fmod is exact) and counted for on_loop.
         const double cycles = std::trunc(std::fabs(total) / p);
@@ -219,14 +223,14 @@ void SpritePlayer::advance(double dt, double fps) {
         const auto extra = cycles >= static_cast<double>(std::numeric_limits<std::size_t>::max() / 2)
                                ? std::numeric_limits<std::size_t>::max() / 2
                                : static_cast<std::size_t>(cycles);
-        move_by(static_cast<std::int64_t>(rest), extra);
+        move_by(static_cast<std::int64_t>(rest), extra, direction);
     }
 }
 
-// Moves by delta positions (|delta| ≤ period, so one wrap suffices) and reports what happened.
-void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles) noexcept {
+// Moves by delta positions (|delta| ≤ period, so one wrap suffices) and reports what happened;
+// `direction` (±1) is the sign of the whole move, whole cycles included.
+void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles, std::int64_t direction) noexcept {
     const std::int64_t from = position_;
-    const std::int64_t direction = delta >= 0 ? 1 : -1;
     std::int64_t next = position_ + delta;
     if (mode_ == PlayMode::once) {
         bool done = false;
