@@ -10,6 +10,7 @@
 #include <grape/error.hpp>
 #include <grape/sprite.hpp>
 
+#include "clip_reference.hpp"
 #include "error_text.hpp"
 
 #include <gtest/gtest.h>
@@ -33,6 +34,8 @@ using grape::SpriteClip;
 using grape::SpriteFrame;
 using grape::SpriteSheet;
 using grape::testing::expect_error;
+using grape::testing::Reference;
+using grape::testing::RefEvent;
 
 // A sheet of n frames in a row, 16×16 each, with the given durations.
 SpriteSheet row_sheet(const std::vector<int>& durations, std::vector<SpriteClip> clips) {
@@ -43,67 +46,6 @@ SpriteSheet row_sheet(const std::vector<int>& durations, std::vector<SpriteClip>
     return SpriteSheet({.width = static_cast<int>(16 * durations.size()), .height = 16, .frames = std::move(frames),
                         .clips = std::move(clips)});
 }
-
-struct Shown {
-    std::size_t frame;
-    std::int64_t pass;
-};
-
-// Aseprite's playback of a tag, pass by pass.
-std::vector<Shown> unroll(const SpriteClip& clip, std::int64_t passes) {
-    std::vector<Shown> out;
-    const bool bounce = clip.direction == ClipDirection::ping_pong || clip.direction == ClipDirection::ping_pong_reverse;
-    for (std::int64_t p = 0; p < passes; ++p) {
-        bool up = clip.direction == ClipDirection::forward || clip.direction == ClipDirection::ping_pong;
-        if (bounce && p % 2 == 1) up = !up;
-        std::vector<std::size_t> run;
-        for (std::size_t f = clip.from; f <= clip.to; ++f) run.push_back(f);
-        if (!up) std::reverse(run.begin(), run.end());
-        if (bounce && p > 0 && run.size() > 1) run.erase(run.begin());
-        for (std::size_t f : run) out.push_back({f, p});
-    }
-    return out;
-}
-
-struct RefEvent {
-    ClipEventKind kind;
-    std::size_t frame;
-    std::int64_t pass;
-    friend bool operator==(const RefEvent&, const RefEvent&) = default;
-};
-
-std::ostream& operator<<(std::ostream& os, const RefEvent& e) {
-    const char* names[] = {"frame", "loop", "complete", "switched"};
-    return os << names[static_cast<int>(e.kind)] << "(" << e.frame << ", pass " << e.pass << ")";
-}
-
-// The reference: the step shown at elapsed time N / S ms (forward: cum[j] <= t < cum[j+1];
-// backward from the end: cum[j] < t <= cum[j+1]), and the events between two steps.
-struct Reference {
-    std::vector<Shown> seq;
-    std::vector<std::int64_t> cum;  // cum[j]: ms before step j
-    bool finite;
-
-    Reference(const SpriteSheet& sheet, const SpriteClip& clip, std::int64_t passes_if_forever) {
-        finite = clip.repeat > 0;
-        seq = unroll(clip, finite ? clip.repeat : passes_if_forever);
-        cum.push_back(0);
-        for (const Shown& s : seq) cum.push_back(cum.back() + static_cast<std::int64_t>(sheet.frame(s.frame).duration_ms));
-    }
-    std::int64_t total() const { return cum.back(); }
-    // Forward: index of the step at t = N/S (N >= 0); seq.size() when past a finite end.
-    std::size_t forward_at(std::int64_t n, std::int64_t s) const {
-        std::size_t j = 0;
-        while (j + 1 < cum.size() && cum[j + 1] * s <= n) ++j;
-        return j;
-    }
-    // Backward: index of the step at t = N/S (N <= total·S).
-    std::size_t backward_at(std::int64_t n, std::int64_t s) const {
-        std::size_t j = seq.size() - 1;
-        while (j > 0 && cum[j] * s >= n) --j;
-        return j;
-    }
-};
 
 // For many random clips (every direction, with and without repeats), rates m/2^a of either
 // sign and steps 1/2^b s: after every step the frame and the events equal the reference's.
@@ -133,46 +75,22 @@ TEST(ClipPlayer, MatchesTheReferenceModelExactly) {
 
         const int steps = 400;
         // Enough passes for a forever clip to cover the run: each pass lasts ≥ 10 ms.
-        const Reference ref(sheet, clip, 2 + (steps * per_step / scale) / 10 + 1);
+        Reference ref(sheet, clip, 2 + (steps * per_step / scale) / 10 + 1, backward);
         ClipPlayer player(sheet, "c", {.rate = rate});
         std::vector<RefEvent> got;
         player.on_event([&](const ClipEvent& e) { got.push_back({e.kind, e.frame, e.pass}); });
-
-        std::size_t at = backward ? ref.seq.size() - 1 : 0;
-        bool done = false;
-        ASSERT_EQ(player.frame(), ref.seq[at].frame);
-        for (int k = 1; k <= steps && !done; ++k) {
+        ASSERT_EQ(player.frame(), ref.frame());
+        for (int k = 1; k <= steps && !ref.done; ++k) {
             got.clear();
             player.advance(dt);
-            std::vector<RefEvent> want;
-            const std::int64_t elapsed = per_step * k;
-            if (!backward) {
-                const bool end = ref.finite && elapsed >= ref.total() * scale;
-                const std::size_t next = end ? ref.seq.size() - 1 : ref.forward_at(elapsed, scale);
-                for (std::size_t j = at + 1; j <= next; ++j) {
-                    if (ref.seq[j].pass != ref.seq[j - 1].pass) want.push_back({ClipEventKind::loop, ref.seq[j].frame, ref.seq[j].pass});
-                    want.push_back({ClipEventKind::frame, ref.seq[j].frame, ref.seq[j].pass});
-                }
-                if (end) want.push_back({ClipEventKind::complete, ref.seq[next].frame, ref.seq[next].pass});
-                at = next;
-                done = end;
-            } else {
-                const std::int64_t t = ref.total() * scale - elapsed;
-                const bool end = t <= 0;
-                const std::size_t next = end ? 0 : ref.backward_at(t, scale);
-                for (std::size_t j = at; j-- > next;) {
-                    if (ref.seq[j].pass != ref.seq[j + 1].pass) want.push_back({ClipEventKind::loop, ref.seq[j].frame, ref.seq[j].pass});
-                    want.push_back({ClipEventKind::frame, ref.seq[j].frame, ref.seq[j].pass});
-                }
-                if (end) want.push_back({ClipEventKind::complete, ref.seq[next].frame, ref.seq[next].pass});
-                at = next;
-                done = end;
-            }
+            const std::vector<RefEvent> want = ref.play_to(per_step * k, scale);
             ASSERT_EQ(got, want) << "trial " << trial << " step " << k << " rate " << rate << " from " << from << " to "
                                  << to << " repeat " << repeat;
-            ASSERT_EQ(player.frame(), ref.seq[at].frame);
-            ASSERT_EQ(player.finished(), done);
+            ASSERT_EQ(player.frame(), ref.frame());
+            ASSERT_EQ(player.finished(), ref.done);
         }
+        const bool done = ref.done;
+        const std::size_t at = ref.at;
         completed += done;
         backwards += backward;
         looped += ref.seq[at].pass > 0;
