@@ -32,5 +32,6 @@ void demo_pictures(const DemoContext& context);
 #endif
 
 void register_demo_command(CLI::App& app);
+void register_sprite_commands(CLI::App& app);  // empty without the scene module
 
 }  // namespace grape::tool
