@@ -95,7 +95,8 @@ public:
     SpritePlayer& operator=(SpritePlayer&&) noexcept;
     ~SpritePlayer();
 
-    /// One step at the rate: the seed's algorithm (additions and comparisons only).
+    /// One step at the rate: the seed's algorithm (additions and comparisons only). Inline:
+    /// a looping player without callbacks steps without a call.
     void advance() noexcept;
     /// Time-based play: moves rate·fps·dt frames (dt in seconds ≥ 0, fps > 0 the sheet's
     /// frame rate at rate 1) with the same remainder bookkeeping. Throws grape::Error for a
@@ -126,7 +127,10 @@ public:
     /// False once a PlayMode::once playback has finished or after pause().
     bool playing() const noexcept { return playing_; }
     /// Stops advancing (advance() does nothing) until play().
-    void pause() noexcept { playing_ = false; }
+    void pause() noexcept {
+        playing_ = false;
+        plain_ = false;
+    }
     /// Resumes; a finished once playback restarts from its beginning (frame 0, or the last
     /// frame when the rate is negative).
     void play() noexcept;
@@ -146,6 +150,8 @@ public:
 
 private:
     struct Callbacks;
+    void advance_general() noexcept;
+    void refresh() noexcept { plain_ = mode_ == PlayMode::loop && playing_ && !callbacks_; }
     void init(std::size_t frame_count, const SpritePlayerDef& def);
     void move_by(std::int64_t delta, std::size_t extra_cycles, std::int64_t direction) noexcept;
     void set_rate_parts(double rate) noexcept;
@@ -164,11 +170,32 @@ private:
     PlayMode mode_ = PlayMode::loop;
     bool playing_ = true;
     bool finished_ = false;         // a once playback reached its end
+    bool plain_ = true;             // looping, playing, no callbacks: the inline step applies
     double fraction_ = 0.0;         // rate − trunc(rate), exact
     double remainder_ = 0.0;        // in (−1, 1)
     Playable* playable_ = nullptr;
     std::unique_ptr<Callbacks> callbacks_;  // cold: null until a callback is set
 };
+
+// The common case inline: looping, playing, no callbacks. The carry and the wrap are selects,
+// not branches: with many players at different rates they are unpredictable.
+inline void SpritePlayer::advance() noexcept {
+    if (!plain_) {
+        advance_general();
+        return;
+    }
+    const double r = remainder_ + fraction_;  // in (−2, 2)
+    const int carry = static_cast<int>(r >= 1.0) - static_cast<int>(r <= -1.0);
+    remainder_ = r - static_cast<double>(carry);  // exact (Sterbenz)
+    // |whole_ + carry| ≤ frame count (the rate is capped below it), so one wrap each way
+    // suffices; the wraps are masks (compilers turn `next < 0 ? n : 0` into a branch).
+    std::int32_t next = position_ + whole_ + carry;
+    next += (next >> 31) & frame_count_;
+    next -= frame_count_ & -static_cast<std::int32_t>(next >= frame_count_);
+    // One branch, never taken without a playable, so a bare counter predicts it.
+    if ((playable_ != nullptr) & (next != position_)) playable_->show_frame(static_cast<std::size_t>(next));
+    position_ = next;
+}
 
 /// A frame's rectangle on the sheet, in pixels (integers: texture texels), y down.
 struct FrameRect {
@@ -407,7 +434,8 @@ public:
     /// The same, by the clip's index in sheet.clips().
     ClipPlayer(const SpriteSheet& sheet, std::size_t clip, const ClipPlayerDef& def = {});
 
-    /// Moves rate·dt seconds along the clip (dt ≥ 0 and finite, else grape::Error).
+    /// Moves rate·dt seconds along the clip (dt ≥ 0 and finite, else grape::Error). Inline: a
+    /// step that stays in the frame is an add and a compare.
     void advance(double dt);
     /// Switches to clip `clip` (now, or when the current pass ends); throws grape::Error for
     /// an unknown clip. Playing the clip already playing with ClipSwitch::now restarts it.
@@ -443,8 +471,11 @@ public:
     void on_event(EventCallback callback);
 
 private:
+    [[noreturn]] static void bad_dt(double dt);
+    void advance_across(double delta);
     void start(std::size_t clip, bool at_end) noexcept;
     std::size_t frame_at(std::int64_t step) const noexcept;
+    std::size_t frame_in_period(std::int64_t place) const noexcept;
     std::int64_t pass_of(std::int64_t step) const noexcept;
     void enter(std::int64_t step) noexcept;
     void take_queued(bool forward, double over) noexcept;
@@ -459,7 +490,9 @@ private:
     std::int64_t step_ = 0;     // frames shown since the clip's start (negative: before it, going backwards)
     std::int64_t steps_ = -1;   // frames in a finite playback; −1 forever
     std::int64_t period_ = 1;   // frames in one period of the looping sequence
+    std::int64_t period_place_ = 0;  // step_ modulo period_
     double period_ms_ = 0.0;    // its duration
+    double fold_ms_ = 0.0;      // a step beyond this counts whole periods instead of walking them
     std::size_t frame_ = 0;
     std::size_t clip_ = 0;
     std::size_t first_ = 0;     // clip's from
@@ -473,5 +506,20 @@ private:
     std::uint64_t callback_generation_ = 0;  // bumped by on_event, so a callback may replace itself
     EventCallback callback_;
 };
+
+// Forwards a frame holds [0, d) of its time, backwards (0, d]; time_ is always in [0, d].
+inline void ClipPlayer::advance(double dt) {
+    if (!(dt >= 0.0 && dt <= 1.7976931348623157e308)) bad_dt(dt);  // negative, NaN or infinite
+    if (!playing_ || finished_) return;
+    const double delta = rate_ * dt * 1000.0;  // milliseconds of clip time
+    const double t = time_ + delta;
+    // Strictly inside either way (time_ ∈ [0, d], so t > 0 going forwards and t < d going
+    // backwards anyway): one test for both directions, which a mix of rates predicts.
+    if (t > 0.0 && t < duration_) {
+        time_ = t;
+        return;
+    }
+    if (delta != 0.0) advance_across(delta);
+}
 
 }  // namespace grape

@@ -90,16 +90,19 @@ void ClipPlayer::start(std::size_t clip, bool at_end) noexcept {
     steps_ = c.repeat == 0 ? -1 : (bounce ? n + (c.repeat - 1) * (n - 1) : c.repeat * n);
     period_ms_ = 0.0;
     for (std::int64_t k = 0; k < period_; ++k) period_ms_ += sheet_->frame(frame_at(k)).duration_ms;
+    fold_ms_ = period_ms_ * std::max(2.0, std::ceil(walk_budget / static_cast<double>(period_)));
     finished_ = false;
     step_ = at_end ? (steps_ > 0 ? steps_ - 1 : -1) : 0;
-    frame_ = frame_at(step_);
+    period_place_ = floor_mod(step_, period_);
+    frame_ = frame_in_period(period_place_);
     duration_ = sheet_->frame(frame_).duration_ms;
     time_ = at_end ? duration_ : 0.0;
 }
 
-std::size_t ClipPlayer::frame_at(std::int64_t step) const noexcept {
+std::size_t ClipPlayer::frame_at(std::int64_t step) const noexcept { return frame_in_period(floor_mod(step, period_)); }
+
+std::size_t ClipPlayer::frame_in_period(std::int64_t k) const noexcept {
     const auto n = static_cast<std::int64_t>(length_);
-    const std::int64_t k = floor_mod(step, period_);
     std::int64_t offset = 0;
     switch (direction_) {
         case ClipDirection::forward: offset = k; break;
@@ -122,20 +125,18 @@ std::int64_t ClipPlayer::pass_of(std::int64_t step) const noexcept {
     return -1 - floor_div(-step - 1, n - 1);
 }
 
-void ClipPlayer::advance(double dt) {
-    if (!(std::isfinite(dt) && dt >= 0.0)) {
-        throw Error("ClipPlayer::advance: dt must be finite and >= 0 seconds (got " + detail::number_text(dt) + ")");
+void ClipPlayer::bad_dt(double dt) {
+    throw Error("ClipPlayer::advance: dt must be finite and >= 0 seconds (got " + detail::number_text(dt) + ")");
+}
+
+// The step leaves the frame (the inline advance handled the rest).
+void ClipPlayer::advance_across(double delta) {
+    if (!std::isfinite(time_ + delta)) {
+        throw Error("ClipPlayer::advance: rate*dt overflows (rate " + detail::number_text(rate_) + ", " +
+                    detail::number_text(delta) + " ms)");
     }
-    if (!playing_ || finished_) return;
-    const double delta = rate_ * dt * 1000.0;  // milliseconds of clip time
-    if (!std::isfinite(delta)) {
-        throw Error("ClipPlayer::advance: rate*dt overflows (rate " + detail::number_text(rate_) + ", dt " +
-                    detail::number_text(dt) + ")");
-    }
-    if (delta == 0.0) return;
     time_ += delta;
-    const bool inside = delta > 0.0 ? (time_ >= 0.0 && time_ < duration_) : (time_ > 0.0 && time_ <= duration_);
-    if (!inside) walk(delta > 0.0);
+    walk(delta > 0.0);
 }
 
 void ClipPlayer::emit(ClipEventKind kind, std::int64_t count) noexcept {
@@ -152,12 +153,18 @@ void ClipPlayer::emit(ClipEventKind kind, std::int64_t count) noexcept {
 // Moves to an adjacent step (the one after, or before), reporting a pass boundary crossed
 // and the frame entered.
 void ClipPlayer::enter(std::int64_t step) noexcept {
-    const bool boundary = pass_of(step) != pass_of(step_);
+    // The place in the period moves by one (no division); passes matter only for events.
+    const bool boundary = callback_ && pass_of(step) != pass_of(step_);
+    period_place_ += step > step_ ? 1 : -1;
+    if (period_place_ == period_) period_place_ = 0;
+    if (period_place_ < 0) period_place_ = period_ - 1;
     step_ = step;
-    frame_ = frame_at(step);
+    frame_ = frame_in_period(period_place_);
     duration_ = sheet_->frame(frame_).duration_ms;
-    if (boundary) emit(ClipEventKind::loop);
-    emit(ClipEventKind::frame);
+    if (callback_) {
+        if (boundary) emit(ClipEventKind::loop);
+        emit(ClipEventKind::frame);
+    }
 }
 
 // Takes over the queued clip where the current pass ended, keeping the time left over
@@ -173,9 +180,8 @@ void ClipPlayer::take_queued(bool forward, double over) noexcept {
 void ClipPlayer::fold(bool forward) noexcept {
     // Whole periods past the budget are counted, not walked; a finite playback keeps at
     // least one period to walk before its end, so completion is still reached frame by frame.
-    const double budget = period_ms_ * std::max(2.0, std::ceil(walk_budget / static_cast<double>(period_)));
     const double ahead = forward ? time_ - duration_ : -time_;
-    if (has_queued_ || !(ahead > budget) || !(period_ms_ > 0.0)) return;
+    if (!(ahead > fold_ms_) || has_queued_) return;
     double periods = std::floor(ahead / period_ms_) - 1.0;
     if (steps_ >= 0) {
         const std::int64_t room = forward ? (steps_ - 1 - step_) / period_ : step_ / period_;

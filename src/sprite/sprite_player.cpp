@@ -62,7 +62,7 @@ SpritePlayer::SpritePlayer(std::size_t frame_count, const SpritePlayerDef& def) 
 
 SpritePlayer::SpritePlayer(const SpritePlayer& other)
     : position_(other.position_), frame_count_(other.frame_count_), whole_(other.whole_), mode_(other.mode_),
-      playing_(other.playing_), finished_(other.finished_), fraction_(other.fraction_),
+      playing_(other.playing_), finished_(other.finished_), plain_(other.plain_), fraction_(other.fraction_),
       remainder_(other.remainder_), playable_(other.playable_),
       callbacks_(other.callbacks_ ? std::make_unique<Callbacks>(*other.callbacks_) : nullptr) {}
 
@@ -89,6 +89,7 @@ void SpritePlayer::init(std::size_t frame_count, const SpritePlayerDef& def) {
     }
     frame_count_ = static_cast<std::int32_t>(frame_count);
     mode_ = def.mode;
+    refresh();
     set_rate(def.rate);
     position_ = static_cast<std::int32_t>(def.start_frame);
 }
@@ -125,6 +126,7 @@ void SpritePlayer::set_rate_parts(double rate) noexcept {
 void SpritePlayer::set_mode(PlayMode mode) noexcept {
     const std::size_t shown = frame();
     mode_ = mode;
+    refresh();
     position_ = static_cast<std::int32_t>(shown);
 }
 
@@ -149,6 +151,7 @@ void SpritePlayer::play() noexcept {
         if (playable_ && shown != frame()) playable_->show_frame(frame());
     }
     playing_ = true;
+    refresh();
 }
 
 void SpritePlayer::set_playable(Playable& playable) {
@@ -167,6 +170,7 @@ void SpritePlayer::set_playable(Playable& playable) {
 
 SpritePlayer::Callbacks& SpritePlayer::callbacks() {
     if (!callbacks_) callbacks_ = std::make_unique<Callbacks>();
+    plain_ = false;  // the general step reports to them
     return *callbacks_;
 }
 
@@ -177,8 +181,9 @@ void SpritePlayer::on_loop(LoopCallback callback) { callbacks().loop.assign(std:
 // The seed's step: take the integer part of the rate, accumulate the fraction, carry ±1 when
 // the remainder reaches ±1. Additions and comparisons only; the carry and the wrap are
 // computed without branches because with many players at different rates they are
-// unpredictable (a mispredicted branch costs more than the whole step).
-void SpritePlayer::advance() noexcept {
+// unpredictable (a mispredicted branch costs more than the whole step). The looping case
+// without callbacks is inline in the header; this is every other case.
+void SpritePlayer::advance_general() noexcept {
     if (!playing_) return;
     const double r = remainder_ + fraction_;  // in (−2, 2)
     const int carry = static_cast<int>(r >= 1.0) - static_cast<int>(r <= -1.0);
@@ -245,6 +250,7 @@ void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles, std::in
         position_ = static_cast<std::int32_t>(next);
         if (done) {
             playing_ = false;
+            plain_ = false;
             finished_ = true;
             remainder_ = 0.0;
         }
