@@ -153,6 +153,14 @@ TEST(ClipPlayer, HugeStepsAreBoundedAndCountEveryLoop) {
     EXPECT_LE(frames, 3 * 65536 + 6);
     EXPECT_GE(frames, 3);
     EXPECT_NEAR(player.time_in_frame_ms(), 5.0, 1e-6);  // 6000.035 s is not binary-exact: 1e-6 ms ≫ its rounding (1e-9 ms)
+    // An absurd step (10^303 ms) still returns after walking at most two periods.
+    ClipPlayer absurd(sheet, "c", {.rate = 1e300});
+    absurd.advance(1.0);
+    EXPECT_LT(absurd.frame(), 3u);
+    EXPECT_GE(absurd.time_in_frame_ms(), 0.0);
+    absurd.set_rate(-1e300);
+    absurd.advance(1.0);
+    EXPECT_LE(absurd.time_in_frame_ms(), 30.0);
     // A finite clip ends exactly where its passes end, whatever the step.
     const SpriteSheet finite = row_sheet({10, 20, 30}, {{.name = "c", .from = 0, .to = 2, .repeat = 50000}});
     ClipPlayer once(finite, "c");

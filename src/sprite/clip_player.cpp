@@ -188,12 +188,19 @@ void ClipPlayer::fold(bool forward) noexcept {
         periods = std::min(periods, static_cast<double>(room - 1));
     }
     if (periods < 1.0) return;
-    // Bounded so step_ stays far inside int64 (2^52 frames is beyond any game's run).
-    periods = std::min(periods, std::ldexp(1.0, 52) / static_cast<double>(period_));
-    const auto c = static_cast<std::int64_t>(periods);
+    // The step count is bounded so step_ stays far inside int64 (2^52 frames is beyond any
+    // game's run); past that (a clip forever and an absurd step) only the place in the period
+    // matters, and the pass count stops there.
+    const double cap = std::ldexp(1.0, 52) / static_cast<double>(period_);
+    const auto c = static_cast<std::int64_t>(std::min(periods, cap));
     const std::int64_t before = pass_of(step_);
     step_ += forward ? c * period_ : -c * period_;
-    time_ += forward ? -periods * period_ms_ : periods * period_ms_;
+    if (periods <= cap) {
+        time_ += forward ? -periods * period_ms_ : periods * period_ms_;
+    } else {
+        const double rest = std::fmod(ahead, period_ms_) + period_ms_;  // in [1, 2) periods: walked
+        time_ = forward ? duration_ + rest : -rest;
+    }
     const std::int64_t crossed = pass_of(step_) - before;
     emit(ClipEventKind::loop, crossed >= 0 ? crossed : -crossed);
 }
