@@ -343,7 +343,7 @@ TEST(SpritePlayer, InexactRatesMayTrailOrLeadByOneAtExactMultiples) {
     EXPECT_EQ(tenth.frame(), 1u);
     SpritePlayer third(8, {.rate = 1.0 / 3.0});
     for (int k = 0; k < 3; ++k) third.advance();
-    EXPECT_LT(3.0L * static_cast<long double>(third.rate()), 1.0L);  // exact in 64 bits: the stored rate times 3 is below 1 ...
+    EXPECT_LT(std::fma(third.rate(), 3.0, -1.0), 0.0);  // rounded once, so the sign is exact: the stored rate times 3 is below 1 ...
     EXPECT_EQ(third.frame(), 1u);                      // ... yet the frame is already 1: one ahead
 }
 
