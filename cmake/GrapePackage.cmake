@@ -15,6 +15,9 @@ foreach(module dynamics render scene)
     list(APPEND excluded PATTERN "${module}*.hpp" EXCLUDE)
   endif()
 endforeach()
+if(NOT GRAPE_WITH_SCENE)
+  list(APPEND excluded PATTERN "sprite_sheet_json.hpp" EXCLUDE)  # read by the scene module
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/grape DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp" ${excluded})
 install(FILES ${PROJECT_BINARY_DIR}/include/grape/config.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grape)

@@ -301,6 +301,52 @@ TEST(SpritePlayer, TimeBasedAdvance) {
     expect_error([&] { player.advance(1e300, 1e300); }, {"overflows"});
 }
 
+// A time step over whole cycles reports one cycle of frames in the direction of travel, also
+// when the rest after dropping the cycles is zero (a move with no sign of its own): checked
+// against the frames a unit-rate walk enters, for both directions and every multiple.
+TEST(SpritePlayer, LongTimeStepsReportFramesInTheDirectionOfTravel) {
+    SpritePlayer seed_case(3, {.rate = -1});
+    std::vector<std::size_t> seen;
+    seed_case.on_frame([&](std::size_t f) { seen.push_back(f); });
+    seed_case.advance(2.0, 3.0);  // six frames back: exactly two cycles
+    EXPECT_EQ(seen, (std::vector<std::size_t>{2, 1, 0}));
+    for (PlayMode mode : {PlayMode::loop, PlayMode::ping_pong}) {
+        for (std::int64_t frames = 2; frames <= 6; ++frames) {
+            const std::int64_t cycle = mode == PlayMode::loop ? frames : 2 * frames - 2;
+            for (double rate : {1.0, -1.0}) {
+                for (std::int64_t moved = cycle; moved <= 3 * cycle; ++moved) {
+                    SpritePlayer player(static_cast<std::size_t>(frames), {.rate = rate, .mode = mode});
+                    std::vector<std::size_t> reported;
+                    player.on_frame([&](std::size_t f) { reported.push_back(f); });
+                    player.advance(static_cast<double>(moved), 1.0);  // moved·rate frames in one call
+                    // The last `cycle` positions a one-frame-at-a-time walk enters, in its order.
+                    std::vector<std::size_t> walk;
+                    for (std::int64_t s = 1; s <= moved; ++s) {
+                        std::int64_t q = floor_mod(static_cast<std::int64_t>(rate) * s, cycle);
+                        if (q >= frames) q = cycle - q;
+                        walk.push_back(static_cast<std::size_t>(q));
+                    }
+                    const std::vector<std::size_t> tail(walk.end() - cycle, walk.end());
+                    ASSERT_EQ(reported, tail) << "frames " << frames << " rate " << rate << " moved " << moved;
+                }
+            }
+        }
+    }
+}
+
+// The header's note on rates that are not binary-exact, as stated there.
+TEST(SpritePlayer, InexactRatesMayTrailOrLeadByOneAtExactMultiples) {
+    SpritePlayer tenth(8, {.rate = 0.1});
+    for (int k = 0; k < 10; ++k) tenth.advance();
+    EXPECT_EQ(tenth.frame(), 0u);  // trunc(0.1·10) = 1: one behind
+    tenth.advance();
+    EXPECT_EQ(tenth.frame(), 1u);
+    SpritePlayer third(8, {.rate = 1.0 / 3.0});
+    for (int k = 0; k < 3; ++k) third.advance();
+    EXPECT_LT(std::fma(third.rate(), 3.0, -1.0), 0.0);  // rounded once, so the sign is exact: the stored rate times 3 is below 1 ...
+    EXPECT_EQ(third.frame(), 1u);                      // ... yet the frame is already 1: one ahead
+}
+
 // Records what the player shows.
 struct RecordingPlayable : grape::Playable {
     std::size_t frames;

@@ -33,6 +33,7 @@ void demo_pictures(const DemoContext& context);
 #endif
 
 void register_demo_command(CLI::App& app);
+void register_sprite_commands(CLI::App& app);  // empty without the scene module
 
 /// What the running command is doing ("drawing out.png (1920×1080)"), for the message when
 /// memory runs out.

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     grape::tool::register_demo_command(app);
     grape::tool::register_path_commands(app);
     grape::tool::register_ease_command(app);
+    grape::tool::register_sprite_commands(app);
 #ifdef GRAPE_TOOL_DYNAMICS
     grape::tool::register_simulate_command(app);
 #endif

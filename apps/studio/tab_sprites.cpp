@@ -1,17 +1,29 @@
 // Sprites: the seed's SpritePlayer demo. One animation, drawn into a tile sheet with cairo at
 // start-up, played two ways at the same real-valued rate: blitted from the sheet
 // (TileSheetSprite) and stepped as a list of separate frame images (a Playable of our own,
-// like the seed's MovieClip wrapper). A slider sets the rate from −(n−1) to n−1.
+// like the seed's MovieClip wrapper). A slider sets the rate from −(n−1) to n−1. With the
+// scene and render modules, a sheet exported from Aseprite or TexturePacker (JSON + PNG) opens
+// too: its clips are listed and the chosen one plays with its own durations at the same rate.
 #include "studio.hpp"
 
 #include "sheet.hpp"
 
 #include <grape/sprite.hpp>
 
+#if defined(GRAPE_STUDIO_SCENE) && defined(GRAPE_STUDIO_RENDER)
+#define GRAPE_STUDIO_SHEETS 1
+#include <grape/error.hpp>
+#include <grape/render.hpp>
+#include <grape/sprite_sheet_json.hpp>
+#endif
+
 #include <SDL.h>
 
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <ostream>
+#include <string>
 
 namespace grape::studio {
 
@@ -53,6 +65,10 @@ public:
     const char* title() const noexcept override { return "Sprites"; }
 
     void attach(SDL_Renderer* renderer) override {
+        renderer_ = renderer;
+#ifdef GRAPE_STUDIO_SHEETS
+        open_sheet();
+#endif
         sheet_texture_ = make_texture(renderer, image_.pixels.data(), image_.width, image_.height, image_.stride);
         // The list: each frame copied out of the sheet into its own texture.
         for (const FrameRect& r : sheet_.frames()) {
@@ -67,6 +83,11 @@ public:
         list_.frames.clear();
         if (sheet_texture_) SDL_DestroyTexture(sheet_texture_);
         sheet_texture_ = nullptr;
+#ifdef GRAPE_STUDIO_SHEETS
+        if (clip_texture_) SDL_DestroyTexture(clip_texture_);  // the player stays for report()
+        clip_texture_ = nullptr;
+#endif
+        renderer_ = nullptr;
     }
 
     void on_event(const SDL_Event& e) override {
@@ -85,6 +106,9 @@ public:
             sheet_player_.advance(dt, fps_);
             list_player_.advance(dt, fps_);
         }
+#ifdef GRAPE_STUDIO_SHEETS
+        if (clip_player_) clip_player_->advance(dt);
+#endif
     }
 
     void controls() override {
@@ -131,6 +155,9 @@ public:
         ImGui::Text("sheet frame: %zu   list frame: %zu", sprite_.current_frame(), list_.shown);
         ImGui::Text("remainder: %+.3f", sheet_player_.remainder());
         ImGui::Text("playing: %s", sheet_player_.playing() ? "yes" : "no (finished or paused)");
+#ifdef GRAPE_STUDIO_SHEETS
+        sheet_controls();
+#endif
     }
 
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
@@ -163,18 +190,117 @@ public:
         const FrameRect& r = sprite_.rect();
         dl->AddRect({a.x + float(r.x) * k, sy + float(r.y) * k},
                     {a.x + float(r.x + r.width) * k, sy + float(r.y + r.height) * k}, colour::marker, 0.0f, 0, 3.0f);
+#ifdef GRAPE_STUDIO_SHEETS
+        draw_clip(dl, {a.x + 2.0f * big + 80.0f, a.y});
+#endif
     }
 
     void report(std::ostream& out) const override {
         out << "rate: " << sheet_player_.rate() << "\nsheet_frame: " << sprite_.current_frame()
             << "\nlist_frame: " << list_.shown << "\nrunning: " << running_ << "\n";
+#ifdef GRAPE_STUDIO_SHEETS
+        if (clip_player_) {
+            out << "clip: " << loaded_->clips()[clip_player_->clip()].name << "\nclip_frame: " << clip_player_->frame()
+                << "\n";
+        }
+#endif
     }
 
 private:
     void apply_rate() {
         sheet_player_.set_rate(rate_);
         list_player_.set_rate(rate_);
+#ifdef GRAPE_STUDIO_SHEETS
+        if (clip_player_) clip_player_->set_rate(rate_);
+#endif
     }
+
+#ifdef GRAPE_STUDIO_SHEETS
+    // Reads the JSON named in the field and the PNG it names; on an error the message shows.
+    void open_sheet() {
+        close_sheet();
+        try {
+            loaded_.emplace(load_sprite_sheet_file(sheet_file_));
+            const Image png = Image::load_png(sprite_sheet_image_path(*loaded_, sheet_file_));
+            picture_size_ = {float(png.width()), float(png.height())};
+            clip_texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_ARGB8888, SDL_TEXTUREACCESS_STATIC, png.width(),
+                                              png.height());
+            if (clip_texture_) {
+                SDL_UpdateTexture(clip_texture_, nullptr, png.argb().data(), png.width() * 4);
+                SDL_SetTextureBlendMode(clip_texture_, SDL_BLENDMODE_BLEND);
+            }
+            if (loaded_->clips().empty()) {
+                sheet_message_ = "no clips (tags) in this sheet";
+            } else {
+                clip_player_ = std::make_unique<ClipPlayer>(*loaded_, std::size_t{0}, ClipPlayerDef{.rate = rate_});
+                sheet_message_.clear();
+            }
+        } catch (const Error& e) {
+            close_sheet();
+            sheet_message_ = e.what();
+        }
+    }
+
+    void close_sheet() {
+        clip_player_.reset();
+        loaded_.reset();
+        if (clip_texture_) SDL_DestroyTexture(clip_texture_);
+        clip_texture_ = nullptr;
+    }
+
+    void sheet_controls() {
+        ImGui::Separator();
+        ImGui::TextWrapped("A sheet from Aseprite or TexturePacker (JSON + PNG): ClipPlayer plays a clip with its "
+                           "frames' own durations at the rate above.");
+        ImGui::InputText("sheet JSON", sheet_file_, sizeof sheet_file_);
+        if (ImGui::Button("Open")) open_sheet();
+        if (!sheet_message_.empty()) ImGui::TextWrapped("%s", sheet_message_.c_str());
+        if (!clip_player_) return;
+        const auto& clips = loaded_->clips();
+        if (ImGui::BeginCombo("clip", clips[clip_player_->clip()].name.c_str())) {
+            for (std::size_t k = 0; k < clips.size(); ++k) {
+                if (ImGui::Selectable(clips[k].name.c_str(), k == clip_player_->clip())) clip_player_->play(k);
+            }
+            ImGui::EndCombo();
+        }
+        ImGui::Text("frame %zu (%.0f ms), pass %lld%s", clip_player_->frame(), loaded_->frame(clip_player_->frame()).duration_ms,
+                    static_cast<long long>(clip_player_->pass()), clip_player_->finished() ? ", finished" : "");
+        if (ImGui::Button("Play again")) clip_player_->play(clip_player_->clip());
+    }
+
+    // The frame shown, upright at three times its size in a box the size of its untrimmed
+    // image, the pivot marked.
+    void draw_clip(ImDrawList* dl, ImVec2 at) const {
+        if (!clip_player_ || !clip_texture_) return;
+        const SpriteFrame& f = loaded_->frame(clip_player_->frame());
+        const float k = 3.0f;
+        dl->AddText({at.x, at.y - 20.0f}, colour::ink, clips_label().c_str());
+        dl->AddRect(at, {at.x + float(f.source_width) * k, at.y + float(f.source_height) * k}, colour::faint);
+        const ImVec2 p{at.x + float(f.offset_x) * k, at.y + float(f.offset_y) * k};
+        const ImVec2 q{p.x + float(f.width()) * k, p.y + float(f.height()) * k};
+        const float u0 = float(f.rect.x) / picture_size_.x, v0 = float(f.rect.y) / picture_size_.y;
+        const float u1 = float(f.rect.x + f.rect.width) / picture_size_.x;
+        const float v1 = float(f.rect.y + f.rect.height) / picture_size_.y;
+        if (f.rotated) {  // stored turned clockwise: the upright top-left is the region's top-right
+            dl->AddImageQuad(ImTextureID(clip_texture_), p, {q.x, p.y}, q, {p.x, q.y}, {u1, v0}, {u1, v1}, {u0, v1}, {u0, v0});
+        } else {
+            dl->AddImage(ImTextureID(clip_texture_), p, q, {u0, v0}, {u1, v1});
+        }
+        dl->AddCircleFilled({at.x + float(f.pivot.x) * k, at.y + float(f.pivot.y) * k}, 3.0f, colour::marker);
+    }
+
+    std::string clips_label() const {
+        return "clip '" + loaded_->clips()[clip_player_->clip()].name + "' from the sheet";
+    }
+
+    char sheet_file_[512] = GRAPE_STUDIO_SPRITE_SHEET;
+    std::optional<SpriteSheet> loaded_;
+    std::unique_ptr<ClipPlayer> clip_player_;  // points into loaded_
+    SDL_Texture* clip_texture_ = nullptr;
+    ImVec2 picture_size_{1.0f, 1.0f};
+    std::string sheet_message_;
+#endif
+    SDL_Renderer* renderer_ = nullptr;
 
     float rate_ = 1.0f;
     float fps_ = 12.0f;

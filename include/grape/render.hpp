@@ -273,6 +273,11 @@ void draw_implicit_curve(Canvas& canvas, const std::function<double(Vec2)>& c, c
 void draw_sprite(Canvas& canvas, const Image& sheet_image, const TileSheetSprite& sprite, Vec2 at,
                  double scale = 1.0, bool debug = false);
 
+/// Frame `frame` of a SpriteSheet (Aseprite, TexturePacker) from its sheet picture, drawn
+/// upright with its pivot at world point `at`, `scale` world units per pixel: trimmed pixels
+/// sit at their offset in the untrimmed image, rotated frames are turned back.
+void draw_sprite_frame(Canvas& canvas, const Image& sheet_image, const SpriteFrame& frame, Vec2 at, double scale = 1.0);
+
 /// The whole sheet at `at` (world units, one unit per pixel × scale) with every frame
 /// outlined and numbered and the sprite's current frame highlighted.
 void draw_tile_sheet(Canvas& canvas, const Image& sheet_image, const TileSheetSprite& sprite, Vec2 at,

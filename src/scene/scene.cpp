@@ -5,6 +5,8 @@
 #include <grape/error.hpp>
 
 #include "atomic_file.hpp"
+
+#include "json_pointer.hpp"
 #include "path_node.hpp"
 #include "kinds.hpp"
 
@@ -36,28 +38,9 @@ constexpr double max_steps = 1e7;
     throw Error("scene: " + (pointer.empty() ? std::string("/") : pointer) + ": " + why);
 }
 
-std::string child(const std::string& pointer, std::string_view key) {
-    std::string out = pointer + "/";
-    for (char c : key) {
-        if (c == '~') out += "~0";
-        else if (c == '/') out += "~1";
-        else out += c;
-    }
-    return out;
-}
-
-std::string child(const std::string& pointer, std::size_t index) { return pointer + "/" + std::to_string(index); }
-
+using detail::child;
 using detail::number_text;
-
-std::string type_of(const json& j) {
-    if (j.is_number()) return "a number";
-    if (j.is_string()) return "a string";
-    if (j.is_boolean()) return "a boolean";
-    if (j.is_array()) return "an array";
-    if (j.is_object()) return "an object";
-    return "null";
-}
+using detail::type_of;
 
 // An object whose keys must all be among `allowed` (a typo such as "duraton" is an error,
 // not a silently ignored field).

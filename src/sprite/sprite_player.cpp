@@ -62,7 +62,7 @@ SpritePlayer::SpritePlayer(std::size_t frame_count, const SpritePlayerDef& def) 
 
 SpritePlayer::SpritePlayer(const SpritePlayer& other)
     : position_(other.position_), frame_count_(other.frame_count_), whole_(other.whole_), mode_(other.mode_),
-      playing_(other.playing_), finished_(other.finished_), fraction_(other.fraction_),
+      playing_(other.playing_), finished_(other.finished_), plain_(other.plain_), fraction_(other.fraction_),
       remainder_(other.remainder_), playable_(other.playable_),
       callbacks_(other.callbacks_ ? std::make_unique<Callbacks>(*other.callbacks_) : nullptr) {}
 
@@ -89,6 +89,7 @@ void SpritePlayer::init(std::size_t frame_count, const SpritePlayerDef& def) {
     }
     frame_count_ = static_cast<std::int32_t>(frame_count);
     mode_ = def.mode;
+    refresh();
     set_rate(def.rate);
     position_ = static_cast<std::int32_t>(def.start_frame);
 }
@@ -125,6 +126,7 @@ void SpritePlayer::set_rate_parts(double rate) noexcept {
 void SpritePlayer::set_mode(PlayMode mode) noexcept {
     const std::size_t shown = frame();
     mode_ = mode;
+    refresh();
     position_ = static_cast<std::int32_t>(shown);
 }
 
@@ -149,6 +151,7 @@ void SpritePlayer::play() noexcept {
         if (playable_ && shown != frame()) playable_->show_frame(frame());
     }
     playing_ = true;
+    refresh();
 }
 
 void SpritePlayer::set_playable(Playable& playable) {
@@ -167,6 +170,7 @@ void SpritePlayer::set_playable(Playable& playable) {
 
 SpritePlayer::Callbacks& SpritePlayer::callbacks() {
     if (!callbacks_) callbacks_ = std::make_unique<Callbacks>();
+    plain_ = false;  // the general step reports to them
     return *callbacks_;
 }
 
@@ -177,13 +181,15 @@ void SpritePlayer::on_loop(LoopCallback callback) { callbacks().loop.assign(std:
 // The seed's step: take the integer part of the rate, accumulate the fraction, carry ±1 when
 // the remainder reaches ±1. Additions and comparisons only; the carry and the wrap are
 // computed without branches because with many players at different rates they are
-// unpredictable (a mispredicted branch costs more than the whole step).
-void SpritePlayer::advance() noexcept {
+// unpredictable (a mispredicted branch costs more than the whole step). The looping case
+// without callbacks is inline in the header; this is every other case.
+void SpritePlayer::advance_general() noexcept {
     if (!playing_) return;
     const double r = remainder_ + fraction_;  // in (−2, 2)
     const int carry = static_cast<int>(r >= 1.0) - static_cast<int>(r <= -1.0);
     remainder_ = r - static_cast<double>(carry);  // exact: r ∓ 1 for r in [1, 2) or (−2, −1] is exact (Sterbenz)
-    move_by(std::int64_t{whole_} + carry, 0);
+    const std::int64_t delta = std::int64_t{whole_} + carry;
+    move_by(delta, 0, delta >= 0 ? 1 : -1);
 }
 
 void SpritePlayer::advance(double dt, double fps) {
@@ -207,11 +213,14 @@ void SpritePlayer::advance(double dt, double fps) {
     const int carry = static_cast<int>(r >= 1.0) - static_cast<int>(r <= -1.0);
     remainder_ = r - static_cast<double>(carry);
     const double total = whole + static_cast<double>(carry);
+    // The direction of travel comes from the move itself: after whole cycles are dropped the
+    // rest may be 0 (a backward move by exactly two cycles), which has no sign of its own.
+    const std::int64_t direction = total >= 0.0 ? 1 : -1;
     const double p = static_cast<double>(period());
     if (std::fabs(total) <= p) {
-        move_by(static_cast<std::int64_t>(total), 0);
+        move_by(static_cast<std::int64_t>(total), 0, direction);
     } else if (mode_ == PlayMode::once) {
-        move_by(total > 0.0 ? std::int64_t{frame_count_} : -std::int64_t{frame_count_}, 0);  // past the end either way
+        move_by(total > 0.0 ? std::int64_t{frame_count_} : -std::int64_t{frame_count_}, 0, direction);  // past the end either way
     } else {
         // A long time step: whole cycles are dropped (fmod is exact) and counted for on_loop.
         const double cycles = std::trunc(std::fabs(total) / p);
@@ -219,14 +228,14 @@ void SpritePlayer::advance(double dt, double fps) {
         const auto extra = cycles >= static_cast<double>(std::numeric_limits<std::size_t>::max() / 2)
                                ? std::numeric_limits<std::size_t>::max() / 2
                                : static_cast<std::size_t>(cycles);
-        move_by(static_cast<std::int64_t>(rest), extra);
+        move_by(static_cast<std::int64_t>(rest), extra, direction);
     }
 }
 
-// Moves by delta positions (|delta| ≤ period, so one wrap suffices) and reports what happened.
-void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles) noexcept {
+// Moves by delta positions (|delta| ≤ period, so one wrap suffices) and reports what happened;
+// `direction` (±1) is the sign of the whole move, whole cycles included.
+void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles, std::int64_t direction) noexcept {
     const std::int64_t from = position_;
-    const std::int64_t direction = delta >= 0 ? 1 : -1;
     std::int64_t next = position_ + delta;
     if (mode_ == PlayMode::once) {
         bool done = false;
@@ -241,6 +250,7 @@ void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles) noexcep
         position_ = static_cast<std::int32_t>(next);
         if (done) {
             playing_ = false;
+            plain_ = false;
             finished_ = true;
             remainder_ = 0.0;
         }

@@ -1,0 +1,370 @@
+// Sprite-sheet JSON (Aseprite, TexturePacker) ↔ SpriteSheet. Every read knows the JSON pointer
+// of its value, so each error names where it is and why. Objects are read in file order
+// (ordered_json): in the hash layout the order of the keys is the order of the frames.
+#include <grape/sprite_sheet_json.hpp>
+
+#include <grape/error.hpp>
+
+#include "json_pointer.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+namespace grape {
+namespace {
+
+using json = nlohmann::ordered_json;
+using detail::child;
+using detail::number_text;
+using detail::type_of;
+
+// Pixel coordinates beyond this are not a sprite sheet (cairo's limit is 32767).
+constexpr double max_pixels = 1 << 24;
+
+[[noreturn]] void fail(const std::string& pointer, const std::string& why) {
+    throw Error("sprite sheet: " + (pointer.empty() ? std::string("/") : pointer) + ": " + why);
+}
+
+const json& object(const json& j, const std::string& pointer) {
+    if (!j.is_object()) fail(pointer, "expected an object, got " + type_of(j));
+    return j;
+}
+
+const json& required(const json& obj, const std::string& pointer, std::string_view key) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) fail(pointer, "missing field \"" + std::string(key) + "\"");
+    return *it;
+}
+
+const json* optional(const json& obj, std::string_view key) {
+    const auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+}
+
+double number(const json& j, const std::string& pointer) {
+    if (!j.is_number()) fail(pointer, "expected a number, got " + type_of(j));
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) fail(pointer, "number out of range");
+    return v;
+}
+
+// A whole number of pixels in [lowest, 2^24].
+int pixels(const json& obj, const std::string& pointer, std::string_view key, double lowest) {
+    const std::string at = child(pointer, key);
+    const double v = number(required(obj, pointer, key), at);
+    if (v != std::floor(v)) fail(at, "expected a whole number of pixels (got " + number_text(v) + ")");
+    if (v < lowest || v > max_pixels) {
+        fail(at, "must lie in [" + number_text(lowest) + ", " + number_text(max_pixels) + "] (got " + number_text(v) + ")");
+    }
+    return static_cast<int>(v);
+}
+
+FrameRect rect(const json& j, const std::string& pointer, double lowest_size) {
+    object(j, pointer);
+    return {pixels(j, pointer, "x", -max_pixels), pixels(j, pointer, "y", -max_pixels), pixels(j, pointer, "w", lowest_size),
+            pixels(j, pointer, "h", lowest_size)};
+}
+
+bool boolean(const json& obj, const std::string& pointer, std::string_view key, bool fallback) {
+    const json* v = optional(obj, key);
+    if (!v) return fallback;
+    if (!v->is_boolean()) fail(child(pointer, key), "expected true or false, got " + type_of(*v));
+    return v->get<bool>();
+}
+
+std::string string(const json& j, const std::string& pointer) {
+    if (!j.is_string()) fail(pointer, "expected a string, got " + type_of(j));
+    return j.get<std::string>();
+}
+
+std::size_t frame_index(const json& obj, const std::string& pointer, std::string_view key, std::size_t count) {
+    const std::string at = child(pointer, key);
+    const double v = number(required(obj, pointer, key), at);
+    if (v != std::floor(v) || v < 0) fail(at, "expected a frame index, a whole number >= 0 (got " + number_text(v) + ")");
+    if (v >= static_cast<double>(count)) {
+        fail(at, number_text(v) + " is past the last frame (frame count " + std::to_string(count) + ")");
+    }
+    return static_cast<std::size_t>(v);
+}
+
+std::string size_text(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+SpriteFrame read_frame(const json& j, const std::string& pointer, std::string name, int sheet_w, int sheet_h) {
+    object(j, pointer);
+    SpriteFrame f;
+    f.name = std::move(name);
+    f.rotated = boolean(j, pointer, "rotated", false);
+    const std::string frame_at = child(pointer, "frame");
+    const FrameRect upright = rect(required(j, pointer, "frame"), frame_at, 1);
+    // A rotated frame's w and h are the upright sprite's; on the sheet it covers h × w.
+    f.rect = f.rotated ? FrameRect{upright.x, upright.y, upright.height, upright.width} : upright;
+    if (f.rect.x < 0 || f.rect.y < 0 || std::int64_t{f.rect.x} + f.rect.width > sheet_w ||
+        std::int64_t{f.rect.y} + f.rect.height > sheet_h) {
+        fail(frame_at, "at (" + std::to_string(f.rect.x) + ", " + std::to_string(f.rect.y) + ") size " +
+                           size_text(f.rect.width, f.rect.height) + (f.rotated ? " (rotated)" : "") + " leaves the " +
+                           size_text(sheet_w, sheet_h) + " sheet (meta.size)");
+    }
+    if (const json* s = optional(j, "spriteSourceSize")) {
+        const std::string at = child(pointer, "spriteSourceSize");
+        const FrameRect r = rect(*s, at, 1);
+        if (r.width != upright.width || r.height != upright.height) {
+            fail(at, "size " + size_text(r.width, r.height) + " differs from the frame's " +
+                         size_text(upright.width, upright.height));
+        }
+        f.offset_x = r.x;
+        f.offset_y = r.y;
+    }
+    f.source_width = upright.width;
+    f.source_height = upright.height;
+    if (const json* s = optional(j, "sourceSize")) {
+        const std::string at = child(pointer, "sourceSize");
+        object(*s, at);
+        f.source_width = pixels(*s, at, "w", 1);
+        f.source_height = pixels(*s, at, "h", 1);
+    }
+    if (f.offset_x < 0 || f.offset_y < 0 || std::int64_t{f.offset_x} + upright.width > f.source_width ||
+        std::int64_t{f.offset_y} + upright.height > f.source_height) {
+        fail(child(pointer, "spriteSourceSize"),
+             "puts the trimmed " + size_text(upright.width, upright.height) + " pixels at (" + std::to_string(f.offset_x) +
+                 ", " + std::to_string(f.offset_y) + "), outside the " + size_text(f.source_width, f.source_height) +
+                 " sourceSize");
+    }
+    if (const json* d = optional(j, "duration")) {
+        const std::string at = child(pointer, "duration");
+        f.duration_ms = number(*d, at);
+        if (!(f.duration_ms > 0.0)) fail(at, "must be positive, milliseconds (got " + number_text(f.duration_ms) + ")");
+    }
+    if (const json* p = optional(j, "pivot")) {  // TexturePacker: a fraction of the untrimmed size
+        const std::string at = child(pointer, "pivot");
+        object(*p, at);
+        const double px = number(required(*p, at, "x"), child(at, "x"));
+        const double py = number(required(*p, at, "y"), child(at, "y"));
+        f.pivot = {px * f.source_width, py * f.source_height};
+    }
+    return f;
+}
+
+ClipDirection direction(const json& j, const std::string& pointer) {
+    const std::string s = string(j, pointer);
+    if (s == "forward") return ClipDirection::forward;
+    if (s == "reverse") return ClipDirection::reverse;
+    if (s == "pingpong") return ClipDirection::ping_pong;
+    if (s == "pingpong_reverse") return ClipDirection::ping_pong_reverse;
+    fail(pointer, "unknown direction \"" + s + "\" (expected one of: forward, reverse, pingpong, pingpong_reverse)");
+}
+
+// Aseprite writes "repeat" as a string of digits ("3"); a number is taken too.
+int repeat(const json& j, const std::string& pointer) {
+    double v = 0.0;
+    if (j.is_string()) {
+        const std::string s = j.get<std::string>();
+        if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) {
+            fail(pointer, "expected a count of passes, a whole number >= 0 (got \"" + s + "\")");
+        }
+        v = std::stod(s);
+    } else {
+        v = number(j, pointer);
+        if (v != std::floor(v) || v < 0 || v > 1e9) {
+            fail(pointer, "expected a count of passes, a whole number >= 0 (got " + number_text(v) + ")");
+        }
+    }
+    return static_cast<int>(v);
+}
+
+SpriteClip read_tag(const json& j, const std::string& pointer, std::size_t count) {
+    object(j, pointer);
+    SpriteClip c;
+    c.name = string(required(j, pointer, "name"), child(pointer, "name"));
+    c.from = frame_index(j, pointer, "from", count);
+    c.to = frame_index(j, pointer, "to", count);
+    if (c.to < c.from) fail(child(pointer, "to"), std::to_string(c.to) + " is before from (" + std::to_string(c.from) + ")");
+    if (const json* d = optional(j, "direction")) c.direction = direction(*d, child(pointer, "direction"));
+    if (const json* r = optional(j, "repeat")) c.repeat = repeat(*r, child(pointer, "repeat"));
+    return c;
+}
+
+SpriteSlice read_slice(const json& j, const std::string& pointer, std::size_t count) {
+    object(j, pointer);
+    SpriteSlice s;
+    s.name = string(required(j, pointer, "name"), child(pointer, "name"));
+    const std::string keys_at = child(pointer, "keys");
+    const json& keys = required(j, pointer, "keys");
+    if (!keys.is_array()) fail(keys_at, "expected an array, got " + type_of(keys));
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const std::string at = child(keys_at, k);
+        object(keys[k], at);
+        SliceKey key;
+        key.frame = frame_index(keys[k], at, "frame", count);
+        key.bounds = rect(required(keys[k], at, "bounds"), child(at, "bounds"), 0);
+        if (const json* p = optional(keys[k], "pivot")) {
+            const std::string pivot_at = child(at, "pivot");
+            object(*p, pivot_at);
+            key.has_pivot = true;
+            key.pivot = {number(required(*p, pivot_at, "x"), child(pivot_at, "x")),
+                         number(required(*p, pivot_at, "y"), child(pivot_at, "y"))};
+        }
+        if (!s.keys.empty() && key.frame <= s.keys.back().frame) {
+            fail(child(at, "frame"), "keys must be in increasing frame order (" + std::to_string(key.frame) + " after " +
+                                         std::to_string(s.keys.back().frame) + ")");
+        }
+        s.keys.push_back(key);
+    }
+    return s;
+}
+
+SpriteSheet read_sheet(const json& root) {
+    object(root, "");
+    const json& meta = object(required(root, "", "meta"), "/meta");
+    const json& size = object(required(meta, "/meta", "size"), "/meta/size");
+    SpriteSheetDef def;
+    def.width = pixels(size, "/meta/size", "w", 1);
+    def.height = pixels(size, "/meta/size", "h", 1);
+    if (const json* image = optional(meta, "image")) def.image = string(*image, "/meta/image");
+
+    const json& frames = required(root, "", "frames");
+    if (frames.is_object()) {
+        for (const auto& [key, value] : frames.items()) {
+            def.frames.push_back(read_frame(value, child("/frames", key), key, def.width, def.height));
+        }
+    } else if (frames.is_array()) {
+        for (std::size_t k = 0; k < frames.size(); ++k) {
+            const std::string at = child("/frames", k);
+            std::string name;
+            if (frames[k].is_object()) {
+                if (const json* n = optional(frames[k], "filename")) name = string(*n, child(at, "filename"));
+            }
+            def.frames.push_back(read_frame(frames[k], at, std::move(name), def.width, def.height));
+        }
+    } else {
+        fail("/frames", "expected an object (hash layout) or an array (array layout), got " + type_of(frames));
+    }
+    if (def.frames.empty()) fail("/frames", "a sheet needs at least one frame");
+
+    const std::size_t count = def.frames.size();
+    if (const json* tags = optional(meta, "frameTags")) {
+        if (!tags->is_array()) fail("/meta/frameTags", "expected an array, got " + type_of(*tags));
+        for (std::size_t k = 0; k < tags->size(); ++k) def.clips.push_back(read_tag((*tags)[k], child("/meta/frameTags", k), count));
+    }
+    if (const json* slices = optional(meta, "slices")) {
+        if (!slices->is_array()) fail("/meta/slices", "expected an array, got " + type_of(*slices));
+        for (std::size_t k = 0; k < slices->size(); ++k) def.slices.push_back(read_slice((*slices)[k], child("/meta/slices", k), count));
+    }
+    // Aseprite keeps pivots in slices: a frame takes the pivot of the first slice whose key in
+    // effect there has one, placed in the untrimmed image (key bounds + pivot).
+    for (std::size_t k = 0; k < count; ++k) {
+        for (const SpriteSlice& s : def.slices) {
+            const SliceKey* key = nullptr;
+            for (const SliceKey& candidate : s.keys) {
+                if (candidate.frame <= k) key = &candidate;
+            }
+            if (key && key->has_pivot) {
+                def.frames[k].pivot = {key->bounds.x + key->pivot.x, key->bounds.y + key->pivot.y};
+                break;
+            }
+        }
+    }
+    return SpriteSheet(std::move(def));
+}
+
+json rect_json(const FrameRect& r) { return {{"x", r.x}, {"y", r.y}, {"w", r.width}, {"h", r.height}}; }
+
+json duration_json(double ms) {
+    if (ms == std::floor(ms) && ms < 9e15) return static_cast<std::int64_t>(ms);
+    return ms;
+}
+
+}  // namespace
+
+SpriteSheet load_sprite_sheet(std::string_view text) {
+    json root;
+    try {
+        root = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        throw Error("sprite sheet: JSON syntax error at byte " + std::to_string(e.byte) + ": " +
+                    std::string(e.what()).substr(std::string(e.what()).find(':') + 2));
+    } catch (const json::exception& e) {
+        throw Error(std::string("sprite sheet: invalid JSON: ") + e.what());
+    }
+    return read_sheet(root);
+}
+
+SpriteSheet load_sprite_sheet_file(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        std::error_code ec;
+        const bool exists = std::filesystem::exists(file, ec);
+        throw Error("cannot read " + file.string() + ": " + (exists ? "permission denied or not a file" : "no such file"));
+    }
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    if (in.bad()) throw Error("cannot read " + file.string() + ": read error");
+    try {
+        return load_sprite_sheet(buffer.str());
+    } catch (const Error& e) {
+        throw Error(file.string() + ": " + e.what());
+    }
+}
+
+std::filesystem::path sprite_sheet_image_path(const SpriteSheet& sheet, const std::filesystem::path& json_file) {
+    return json_file.parent_path() / sheet.image();
+}
+
+std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) {
+    json frames = layout == SheetJsonLayout::hash ? json::object() : json::array();
+    std::set<std::string> names;
+    for (std::size_t k = 0; k < sheet.frame_count(); ++k) {
+        const SpriteFrame& f = sheet.frame(k);
+        json j;
+        if (layout == SheetJsonLayout::array) j["filename"] = f.name;
+        j["frame"] = rect_json({f.rect.x, f.rect.y, f.width(), f.height()});
+        j["rotated"] = f.rotated;
+        j["trimmed"] = f.trimmed();
+        j["spriteSourceSize"] = rect_json({f.offset_x, f.offset_y, f.width(), f.height()});
+        j["sourceSize"] = {{"w", f.source_width}, {"h", f.source_height}};
+        j["duration"] = duration_json(f.duration_ms);
+        if (layout == SheetJsonLayout::hash) {
+            if (f.name.empty() || !names.insert(f.name).second) {
+                throw Error("save_sprite_sheet: the hash layout needs unique, non-empty frame names (frame " +
+                            std::to_string(k) + " is named '" + f.name + "')");
+            }
+            frames[f.name] = std::move(j);
+        } else {
+            frames.push_back(std::move(j));
+        }
+    }
+    const char* directions[] = {"forward", "reverse", "pingpong", "pingpong_reverse"};
+    json tags = json::array();
+    for (const SpriteClip& c : sheet.clips()) {
+        json t = {{"name", c.name}, {"from", c.from}, {"to", c.to}, {"direction", directions[static_cast<int>(c.direction)]}};
+        if (c.repeat > 0) t["repeat"] = std::to_string(c.repeat);  // a string, as Aseprite writes it
+        tags.push_back(std::move(t));
+    }
+    json slices = json::array();
+    for (const SpriteSlice& s : sheet.slices()) {
+        json keys = json::array();
+        for (const SliceKey& key : s.keys) {
+            json k = {{"frame", key.frame}, {"bounds", rect_json(key.bounds)}};
+            if (key.has_pivot) k["pivot"] = {{"x", key.pivot.x}, {"y", key.pivot.y}};
+            keys.push_back(std::move(k));
+        }
+        slices.push_back({{"name", s.name}, {"keys", std::move(keys)}});
+    }
+    json meta = {{"app", "grape"},
+                 {"version", "1"},
+                 {"image", sheet.image()},
+                 {"format", "RGBA8888"},
+                 {"size", {{"w", sheet.width()}, {"h", sheet.height()}}},
+                 {"scale", "1"},
+                 {"frameTags", std::move(tags)},
+                 {"layers", json::array()},
+                 {"slices", std::move(slices)}};
+    const json root = {{"frames", std::move(frames)}, {"meta", std::move(meta)}};
+    return root.dump(1) + "\n";
+}
+
+}  // namespace grape

@@ -1,0 +1,221 @@
+// Tests for the sprite-sheet JSON readers (grape/sprite_sheet_json.hpp): grape's own sheet in
+// Aseprite's format in both layouts (tests/data/sprites, drawn and written by
+// make_sprite_sheet from the format's documentation), TexturePacker's hash and array layouts
+// with trimmed and rotated frames, and errors that name the JSON pointer.
+#include <grape/error.hpp>
+#include <grape/sprite_sheet_json.hpp>
+
+#include "clip_reference.hpp"
+#include "error_text.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#ifndef GRAPE_SPRITE_DATA
+#error "GRAPE_SPRITE_DATA must name tests/data/sprites"
+#endif
+
+namespace {
+
+using grape::ClipDirection;
+using grape::ClipEvent;
+using grape::ClipPlayer;
+using grape::SpriteSheet;
+using grape::testing::expect_error;
+using grape::testing::Reference;
+using grape::testing::RefEvent;
+
+const std::string data = GRAPE_SPRITE_DATA;
+
+void expect_same_sheet(const SpriteSheet& a, const SpriteSheet& b) {
+    EXPECT_EQ(a.image(), b.image());
+    EXPECT_EQ(a.width(), b.width());
+    EXPECT_EQ(a.height(), b.height());
+    ASSERT_EQ(a.frame_count(), b.frame_count());
+    for (std::size_t k = 0; k < a.frame_count(); ++k) {
+        const grape::SpriteFrame &f = a.frame(k), &g = b.frame(k);
+        EXPECT_EQ(f.name, g.name);
+        EXPECT_EQ(f.rect, g.rect);
+        EXPECT_EQ(f.rotated, g.rotated);
+        EXPECT_EQ(f.offset_x, g.offset_x);
+        EXPECT_EQ(f.offset_y, g.offset_y);
+        EXPECT_EQ(f.source_width, g.source_width);
+        EXPECT_EQ(f.source_height, g.source_height);
+        EXPECT_EQ(f.duration_ms, g.duration_ms);
+        EXPECT_EQ(f.pivot.x, g.pivot.x);
+        EXPECT_EQ(f.pivot.y, g.pivot.y);
+    }
+    ASSERT_EQ(a.clips().size(), b.clips().size());
+    for (std::size_t k = 0; k < a.clips().size(); ++k) {
+        EXPECT_EQ(a.clips()[k].name, b.clips()[k].name);
+        EXPECT_EQ(a.clips()[k].from, b.clips()[k].from);
+        EXPECT_EQ(a.clips()[k].to, b.clips()[k].to);
+        EXPECT_EQ(a.clips()[k].direction, b.clips()[k].direction);
+        EXPECT_EQ(a.clips()[k].repeat, b.clips()[k].repeat);
+    }
+    ASSERT_EQ(a.slices().size(), b.slices().size());
+    for (std::size_t k = 0; k < a.slices().size(); ++k) {
+        EXPECT_EQ(a.slices()[k].name, b.slices()[k].name);
+        ASSERT_EQ(a.slices()[k].keys.size(), b.slices()[k].keys.size());
+    }
+}
+
+TEST(SpriteSheetJson, OurSheetReadsTheSameInBothLayouts) {
+    const SpriteSheet hash = grape::load_sprite_sheet_file(data + "/grape_sheet.json");
+    const SpriteSheet array = grape::load_sprite_sheet_file(data + "/grape_sheet_array.json");
+    expect_same_sheet(hash, array);
+    EXPECT_EQ(hash.image(), "grape_sheet.png");
+    EXPECT_EQ(grape::sprite_sheet_image_path(hash, data + "/grape_sheet.json"),
+              std::filesystem::path(data) / "grape_sheet.png");
+    ASSERT_EQ(hash.frame_count(), 8u);
+    // Frames in file order with Aseprite's keys and uneven durations.
+    const double durations[] = {100, 150, 50, 200, 80, 120, 60, 240};
+    for (std::size_t k = 0; k < 8; ++k) {
+        EXPECT_EQ(hash.frame(k).name, "grape " + std::to_string(k) + ".aseprite");
+        EXPECT_EQ(hash.frame(k).duration_ms, durations[k]);
+        EXPECT_TRUE(hash.frame(k).trimmed());
+        EXPECT_EQ(hash.frame(k).source_width, 48);
+    }
+    // Tags of every direction, with and without repeats ("repeat" is a string in the file).
+    ASSERT_EQ(hash.clips().size(), 7u);
+    EXPECT_EQ(hash.clips()[hash.clip_index("rewind")].direction, ClipDirection::reverse);
+    EXPECT_EQ(hash.clips()[hash.clip_index("hop")].direction, ClipDirection::ping_pong);
+    EXPECT_EQ(hash.clips()[hash.clip_index("hop")].repeat, 3);
+    EXPECT_EQ(hash.clips()[hash.clip_index("sway")].direction, ClipDirection::ping_pong_reverse);
+    // The feet slice's pivot (bounds + pivot), in the untrimmed image, changes at frame 4.
+    EXPECT_EQ(hash.frame(0).pivot.x, 24.0);
+    EXPECT_EQ(hash.frame(0).pivot.y, 44.0);
+    EXPECT_EQ(hash.frame(5).pivot.x, 24.0);
+    ASSERT_NE(hash.slice_key("hit", 7), nullptr);
+    EXPECT_FALSE(hash.slice_key("hit", 7)->has_pivot);
+    // Saved and read again, nothing changes.
+    expect_same_sheet(grape::load_sprite_sheet(grape::save_sprite_sheet(hash, grape::SheetJsonLayout::array)), hash);
+}
+
+// Every clip of the sheet, forwards and (when it ends) backwards, at rates m/8 with 1/64 s
+// steps: frame by frame and event by event as the reference model has it.
+TEST(SpriteSheetJson, OurSheetPlaysFrameExactAgainstTheReference) {
+    const SpriteSheet sheet = grape::load_sprite_sheet_file(data + "/grape_sheet_array.json");
+    int checked = 0;
+    for (std::size_t c = 0; c < sheet.clips().size(); ++c) {
+        for (std::int64_t m : {1, 3, 8, 13, 40, 200, -1, -5, -8, -77}) {
+            const bool backward = m < 0;
+            if (backward && sheet.clips()[c].repeat == 0) continue;
+            const std::int64_t scale = 8 * 64;                     // times are N / 512 ms
+            const std::int64_t per_step = (backward ? -m : m) * 1000;  // |m/8|·(1/64 s)·1000·512
+            Reference ref(sheet, sheet.clips()[c], 2 + 600 * per_step / scale / 50, backward);
+            ClipPlayer player(sheet, c, {.rate = static_cast<double>(m) / 8});
+            std::vector<RefEvent> got;
+            player.on_event([&](const ClipEvent& e) { got.push_back({e.kind, e.frame, e.pass}); });
+            ASSERT_EQ(player.frame(), ref.frame());
+            for (int k = 1; k <= 600 && !ref.done; ++k) {
+                got.clear();
+                player.advance(1.0 / 64);
+                ASSERT_EQ(got, ref.play_to(per_step * k, scale)) << sheet.clips()[c].name << " rate " << m << "/8 step " << k;
+                ASSERT_EQ(player.frame(), ref.frame());
+            }
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 7 * 6 + 3 * 4);
+}
+
+// TexturePacker's JSON (Hash), written from its documentation: a trimmed frame, a rotated one
+// (stored turned 90° clockwise, its w and h the upright sprite's) and pivots as fractions.
+const char* texture_packer_hash = R"({"frames": {
+  "hero/run_01.png": {"frame": {"x": 2, "y": 2, "w": 30, "h": 40}, "rotated": false, "trimmed": true,
+                      "spriteSourceSize": {"x": 5, "y": 8, "w": 30, "h": 40}, "sourceSize": {"w": 40, "h": 48},
+                      "pivot": {"x": 0.5, "y": 1}},
+  "hero/run_02.png": {"frame": {"x": 34, "y": 2, "w": 36, "h": 20}, "rotated": true, "trimmed": true,
+                      "spriteSourceSize": {"x": 2, "y": 14, "w": 36, "h": 20}, "sourceSize": {"w": 40, "h": 48},
+                      "pivot": {"x": 0.25, "y": 0.5}},
+  "coin.png": {"frame": {"x": 2, "y": 44, "w": 16, "h": 16}, "rotated": false, "trimmed": false,
+               "spriteSourceSize": {"x": 0, "y": 0, "w": 16, "h": 16}, "sourceSize": {"w": 16, "h": 16}}},
+ "meta": {"app": "https://www.codeandweb.com/texturepacker", "version": "1.0", "image": "atlas.png",
+          "format": "RGBA8888", "size": {"w": 64, "h": 64}, "scale": "1", "smartupdate": "$x$"}})";
+
+TEST(SpriteSheetJson, TexturePackerHashAndArrayWithTrimmedAndRotatedFrames) {
+    const SpriteSheet hash = grape::load_sprite_sheet(texture_packer_hash);
+    ASSERT_EQ(hash.frame_count(), 3u);
+    EXPECT_EQ(hash.frame(0).name, "hero/run_01.png");  // file order, not key order
+    EXPECT_EQ(hash.frame(2).name, "coin.png");
+    const grape::SpriteFrame& run = hash.frame(0);
+    EXPECT_TRUE(run.trimmed());
+    EXPECT_EQ(run.offset_x, 5);
+    EXPECT_EQ(run.offset_y, 8);
+    EXPECT_EQ(run.pivot.x, 20.0);  // 0.5 · 40
+    EXPECT_EQ(run.pivot.y, 48.0);
+    EXPECT_EQ(run.duration_ms, 100.0);  // no durations in TexturePacker: Aseprite's default
+    const grape::SpriteFrame& turned = hash.frame(1);
+    EXPECT_TRUE(turned.rotated);
+    EXPECT_EQ(turned.rect, (grape::FrameRect{34, 2, 20, 36}));  // the region on the sheet
+    EXPECT_EQ(turned.width(), 36);
+    EXPECT_EQ(turned.height(), 20);
+    EXPECT_EQ(turned.pivot.x, 10.0);
+    EXPECT_FALSE(hash.frame(2).trimmed());
+    EXPECT_TRUE(hash.clips().empty());
+    // The same atlas as JSON (Array): frames carry their names as "filename".
+    std::string array = R"({"frames": [)";
+    array += R"({"filename": "hero/run_01.png", "frame": {"x": 2, "y": 2, "w": 30, "h": 40}, "rotated": false, "trimmed": true,
+                 "spriteSourceSize": {"x": 5, "y": 8, "w": 30, "h": 40}, "sourceSize": {"w": 40, "h": 48}, "pivot": {"x": 0.5, "y": 1}},)";
+    array += R"({"filename": "hero/run_02.png", "frame": {"x": 34, "y": 2, "w": 36, "h": 20}, "rotated": true, "trimmed": true,
+                 "spriteSourceSize": {"x": 2, "y": 14, "w": 36, "h": 20}, "sourceSize": {"w": 40, "h": 48}, "pivot": {"x": 0.25, "y": 0.5}},)";
+    array += R"({"filename": "coin.png", "frame": {"x": 2, "y": 44, "w": 16, "h": 16}, "rotated": false, "trimmed": false,
+                 "spriteSourceSize": {"x": 0, "y": 0, "w": 16, "h": 16}, "sourceSize": {"w": 16, "h": 16}}],)";
+    array += R"("meta": {"image": "atlas.png", "size": {"w": 64, "h": 64}, "scale": "1"}})";
+    expect_same_sheet(grape::load_sprite_sheet(array), hash);
+}
+
+// A small valid Aseprite sheet, and the same with one value broken: the error names its pointer.
+std::string sheet_with(const std::string& frame1, const std::string& tags, const std::string& size = R"({"w": 32, "h": 16})") {
+    return R"({"frames": {"a": {"frame": {"x": 0, "y": 0, "w": 16, "h": 16}, "duration": 100}, "b/c": )" + frame1 +
+           R"(}, "meta": {"size": )" + size + R"(, "frameTags": )" + tags + "}}";
+}
+
+TEST(SpriteSheetJson, ErrorsNameTheJsonPointer) {
+    const std::string good_frame = R"({"frame": {"x": 16, "y": 0, "w": 16, "h": 16}, "duration": 50})";
+    const std::string good_tags = R"([{"name": "t", "from": 0, "to": 1, "direction": "pingpong", "repeat": "2"}])";
+    EXPECT_EQ(grape::load_sprite_sheet(sheet_with(good_frame, good_tags)).clips()[0].repeat, 2);
+    using F = std::vector<std::string>;
+    const std::vector<std::pair<std::string, F>> cases = {
+        {sheet_with(R"({"frame": {"x": 16, "y": 0, "w": 16, "h": 16}, "duration": 0})", good_tags),
+         {"sprite sheet: /frames/b~1c/duration: must be positive", "got 0"}},
+        {sheet_with(R"({"frame": {"x": 20, "y": 0, "w": 16, "h": 16}})", good_tags),
+         {"/frames/b~1c/frame: at (20, 0) size 16x16 leaves the 32x16 sheet"}},
+        {sheet_with(R"({"frame": {"x": 16, "y": 0, "w": 16.5, "h": 16}})", good_tags), {"/frames/b~1c/frame/w", "whole number"}},
+        {sheet_with(R"({"frame": {"x": 16, "y": 0, "w": 16, "h": 16}, "rotated": 1})", good_tags),
+         {"/frames/b~1c/rotated: expected true or false"}},
+        {sheet_with(R"({"frame": {"x": 16, "y": 0, "w": 16, "h": 16}, "spriteSourceSize": {"x": 4, "y": 0, "w": 16, "h": 16}, "sourceSize": {"w": 16, "h": 16}})", good_tags),
+         {"/frames/b~1c/spriteSourceSize", "outside the 16x16 sourceSize"}},
+        {sheet_with(R"({"frame": {"x": 16, "y": 0, "w": 16, "h": 16}, "spriteSourceSize": {"x": 0, "y": 0, "w": 8, "h": 16}})", good_tags),
+         {"/frames/b~1c/spriteSourceSize: size 8x16 differs from the frame's 16x16"}},
+        {sheet_with(good_frame, R"([{"name": "t", "from": 0, "to": 2}])"), {"/meta/frameTags/0/to: 2 is past the last frame (frame count 2)"}},
+        {sheet_with(good_frame, R"([{"name": "t", "from": 1, "to": 0}])"), {"/meta/frameTags/0/to: 0 is before from (1)"}},
+        {sheet_with(good_frame, R"([{"name": "t", "from": 0, "to": 1, "direction": "backward"}])"),
+         {"/meta/frameTags/0/direction: unknown direction \"backward\"", "pingpong_reverse"}},
+        {sheet_with(good_frame, R"([{"name": "t", "from": 0, "to": 1, "repeat": "-1"}])"), {"/meta/frameTags/0/repeat", "whole number >= 0"}},
+        {sheet_with(good_frame, R"([{"from": 0, "to": 1}])"), {"/meta/frameTags/0: missing field \"name\""}},
+        {sheet_with(good_frame, "{}"), {"/meta/frameTags: expected an array, got an object"}},
+        {sheet_with(good_frame, good_tags, R"({"w": 0, "h": 16})"), {"/meta/size/w: must lie in [1, "}},
+        {R"({"frames": [], "meta": {"size": {"w": 8, "h": 8}}})", {"/frames: a sheet needs at least one frame"}},
+        {R"({"frames": 3, "meta": {"size": {"w": 8, "h": 8}}})", {"/frames: expected an object (hash layout) or an array"}},
+        {R"({"frames": []})", {"sprite sheet: /: missing field \"meta\""}},
+        {R"({"frames": [{"frame": {"x": 0, "y": 0, "w": 8, "h": 8}}], "meta": {"size": {"w": 8, "h": 8},
+             "slices": [{"name": "s", "keys": [{"frame": 3, "bounds": {"x": 0, "y": 0, "w": 1, "h": 1}}]}]}})",
+         {"/meta/slices/0/keys/0/frame: 3 is past the last frame"}},
+        {R"({"frames": [}")", {"sprite sheet: JSON syntax error at byte"}},
+    };
+    for (const auto& broken : cases) {
+        const std::string message = grape::testing::error_text([&] { grape::load_sprite_sheet(broken.first); });
+        for (const std::string& fragment : broken.second) EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    }
+    expect_error([] { grape::load_sprite_sheet_file(data + "/none.json"); }, {"cannot read", "none.json: no such file"});
+    // The hash layout needs frame names to key by.
+    const SpriteSheet unnamed({.width = 8, .height = 8, .frames = {{.rect = {0, 0, 8, 8}}}});
+    expect_error([&] { grape::save_sprite_sheet(unnamed, grape::SheetJsonLayout::hash); }, {"unique, non-empty frame names"});
+}
+
+}  // namespace
