@@ -17,7 +17,7 @@
 // crosses, in order. A play counts as finished within 1e-9 of its length (in plays), so 60
 // ticks of 1/60 s end a 1 s play on the 60th tick although the sum falls short by an ulp.
 // Arc-length (reparametrized) linear and cubic Bézier paths are evaluated from a table the
-// engine builds once per shared path, within 2e-10·length of Path::point.
+// path module builds once per shared path, within 2e-10·length of Path::point.
 #pragma once
 
 #include <grape/curve.hpp>

@@ -56,100 +56,23 @@ struct EngineImpl::Dispatch {
 
 // --- tables ----------------------------------------------------------------------------------
 
-namespace {
-
-inline double hermite_v(const double* table, double steps, double u) noexcept {
-    const double s = u * steps;
-    double k = std::floor(s);
-    if (k >= steps) k = steps - 1.0;
-    const double t = s - k;
-    const double* e = table + 2 * static_cast<std::size_t>(k);
-    const double t2 = t * t;
-    const double t3 = t2 * t;
-    return (2.0 * t3 - 3.0 * t2 + 1.0) * e[0] + (t3 - 2.0 * t2 + t) * e[1] + (3.0 * t2 - 2.0 * t3) * e[2] +
-           (t3 - t2) * e[3];
-}
-
-// Doubles K until the Hermite table of v(u) lands within 1e-10·length of the node's own
-// solve at three points inside every step; gives up (generic path) where the source stops
-// (dv/du unbounded) or K would pass 16384.
-bool build_reparam_table(const ReparametrizedNode& r, PathEntry& entry) {
-    const PathNode& source = *entry.source;
-    const double length = r.length();
-    if (!(length > 0.0)) return false;
-    for (int steps = 64; steps <= 16384; steps *= 2) {
-        const double k_steps = steps;
-        std::vector<double> table(2 * static_cast<std::size_t>(steps + 1));
-        bool finite = true;
-        for (int k = 0; k <= steps && finite; ++k) {
-            const double v = r.source_u(k / k_steps);
-            const double speed = grape::length(source.d1(v));
-            finite = speed > 1e-12 * length;
-            table[2 * k] = v;
-            table[2 * k + 1] = finite ? length / speed / k_steps : 0.0;
-        }
-        if (!finite) return false;
-        bool good = true;
-        for (int k = 0; k < steps && good; ++k) {
-            for (double t : {0.25, 0.5, 0.75}) {
-                const double u = (k + t) / k_steps;
-                const Vec2 exact = source.point(r.source_u(u));
-                const Vec2 fast = source.point(hermite_v(table.data(), k_steps, u));
-                if (distance(exact, fast) > 1e-10 * length) {
-                    good = false;
-                    break;
-                }
-            }
-        }
-        if (good) {
-            entry.table = std::move(table);
-            entry.steps = k_steps;
-            return true;
-        }
-    }
-    return false;
-}
-
-}  // namespace
-
 std::uint32_t EngineImpl::acquire_path(const Path& path) {
-    const PathNode* node = &path.node();
-    if (auto it = path_index_.find(node); it != path_index_.end()) {
+    const void* shape = shape_id(path);
+    if (auto it = path_index_.find(shape); it != path_index_.end()) {
         ++paths_[it->second].refs;
         return it->second;
     }
     PathEntry entry;
     entry.path = path;
-    entry.node = node;
+    entry.shape = shape;
+    entry.kernel = make_kernel(path);
     entry.refs = 1;
-    switch (node->kind()) {
-        case PathKind::linear: entry.fast = FastPath::linear; break;
-        case PathKind::cubic_bezier: entry.fast = FastPath::cubic; break;
-        case PathKind::reparametrized: {
-            const auto* r = static_cast<const ReparametrizedNode*>(node);
-            entry.source = &r->source().node();
-            const PathKind source_kind = entry.source->kind();
-            if ((source_kind == PathKind::cubic_bezier || source_kind == PathKind::linear) &&
-                build_reparam_table(*r, entry)) {
-                entry.fast = source_kind == PathKind::cubic_bezier ? FastPath::reparam_cubic : FastPath::reparam_linear;
-            }
-            break;
-        }
-        default: break;
-    }
     PathFast fast;
-    fast.fast = entry.fast;
-    fast.node = node;
-    fast.table = entry.table.data();  // the vector's buffer survives moving the entry
-    fast.steps = entry.steps;
-    const PathNode* shape = entry.source ? entry.source : node;
-    if (fast.fast == FastPath::linear || fast.fast == FastPath::reparam_linear) {
-        const auto* n = static_cast<const LinearNode*>(shape);
-        fast.c[0] = n->a;
-        fast.c[1] = n->delta;
-    } else if (fast.fast == FastPath::cubic || fast.fast == FastPath::reparam_cubic) {
-        const auto* n = static_cast<const CubicBezierNode*>(shape);
-        for (int k = 0; k < 4; ++k) fast.c[k] = n->c[k];
+    fast.fast = entry.kernel.kind;
+    for (int k = 0; k < 4; ++k) fast.c[k] = entry.kernel.c[k];
+    if (entry.kernel.table) {  // shared: the table survives moving the entry
+        fast.table = entry.kernel.table->values().data();
+        fast.steps = entry.kernel.table->steps();
     }
     std::uint32_t index;
     if (!free_paths_.empty()) {
@@ -163,14 +86,14 @@ std::uint32_t EngineImpl::acquire_path(const Path& path) {
         path_fast_.push_back(fast);
         free_paths_.reserve(paths_.size());  // so releasing during a tick never allocates
     }
-    path_index_.emplace(node, index);
+    path_index_.emplace(shape, index);
     return index;
 }
 
 void EngineImpl::release_path(std::uint32_t index) noexcept {
     PathEntry& e = paths_[index];
     if (--e.refs != 0) return;
-    path_index_.erase(e.node);
+    path_index_.erase(e.shape);
     e = PathEntry();                // drops the shape if nobody else holds it
     path_fast_[index] = PathFast();
     free_paths_.push_back(index);   // capacity reserved at creation
@@ -252,22 +175,22 @@ inline double EngineImpl::ease(CurveKind kind, std::uint16_t curve, double x) co
     }
 }
 
-// The same arithmetic as LinearNode::point and CubicBezierNode::point, on copied coefficients.
+// The kernel's formulas on copied coefficients (Path::point bit for bit for lines and cubics).
 inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
     if (u >= 0.0 && u <= 1.0) {
         const PathFast& f = path_fast_[path];
         switch (f.fast) {
-            case FastPath::linear: return f.c[0] + f.c[1] * u;
-            case FastPath::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
-            case FastPath::reparam_cubic: {
-                const double v = hermite_v(f.table, f.steps, u);
+            case KernelKind::linear: return f.c[0] + f.c[1] * u;
+            case KernelKind::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+            case KernelKind::reparam_cubic: {
+                const double v = ArcLengthTable::evaluate(f.table, f.steps, u);
                 return ((f.c[3] * v + f.c[2]) * v + f.c[1]) * v + f.c[0];
             }
-            case FastPath::reparam_linear: return f.c[0] + f.c[1] * hermite_v(f.table, f.steps, u);
-            case FastPath::generic: return f.node->point(u);
+            case KernelKind::reparam_linear: return f.c[0] + f.c[1] * ArcLengthTable::evaluate(f.table, f.steps, u);
+            case KernelKind::generic: break;
         }
     }
-    return paths_[path].path.point(u);  // outside [0, 1]: along the end tangents
+    return paths_[path].path.point(u);  // other kinds, and outside [0, 1] along the end tangents
 }
 
 inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept {
@@ -384,8 +307,8 @@ void EngineImpl::tick(double dt) {
             const double u = parameter_free(h.kind) ? ease(h.kind, 0, x) : ease(h.kind, cold[i].curve, x);
             const PathFast& f = fast[h.path];
             Vec2 p;
-            if (f.fast == FastPath::linear && u >= 0.0 && u <= 1.0) p = f.c[0] + f.c[1] * u;
-            else if (f.fast == FastPath::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+            if (f.fast == KernelKind::linear && u >= 0.0 && u <= 1.0) p = f.c[0] + f.c[1] * u;
+            else if (f.fast == KernelKind::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
             else p = point(h.path, u);
             write_2d(h, p);
         }
