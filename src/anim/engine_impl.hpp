@@ -58,7 +58,7 @@ struct Extra {
     // Shared so that a running handler survives being replaced from inside itself: the
     // caller holds a copy of the pointer for the duration of the call (no allocation).
     std::shared_ptr<const std::function<void()>> on_complete;
-    std::shared_ptr<const std::function<void(int)>> on_loop;
+    std::shared_ptr<const std::function<void(int, std::uint64_t)>> on_loop;  // (play, skipped)
     std::shared_ptr<const std::function<void(Vec2, double)>> on_update_2d;
     std::shared_ptr<const std::function<void(std::span<const double>)>> on_update_nd;
     bool write_rotation = false;          // 2-D targets: the heading goes to x + rotation_offset
@@ -143,7 +143,7 @@ private:
     void write_2d(const Hot& h, Vec2 p) const noexcept;
     void write_state(std::uint32_t dense);
     void advance_slow(std::uint32_t dense, double phase);
-    void fire_events(std::uint32_t dense, std::uint32_t first_play, std::uint32_t loops, bool completes);
+    void fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes);
     void mark_dead(std::uint32_t dense) noexcept;
     void remove_now(std::uint32_t dense) noexcept;
     void compact() noexcept;

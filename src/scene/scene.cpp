@@ -721,32 +721,16 @@ json parse_text(std::string_view text, const std::string& where) {
 
 // --------------------------------------------------------------------------------- public
 
-double SceneAnimation::progress(double t) const noexcept {
-    double play = 0.0;
-    double tau = 0.0;
-    if (t > delay && duration > 0.0) {
-        const double local = (t - delay) / duration;
-        play = std::floor(local);
-        tau = local - play;
-        if (repeat >= 0 && play > static_cast<double>(repeat)) {
-            play = static_cast<double>(repeat);
-            tau = 1.0;
-        } else if (tau == 0.0 && play > 0.0) {
-            // Exactly at the end of a play: show that play's end, not the next one's start.
-            play -= 1.0;
-            tau = 1.0;
-        }
-    }
-    const bool odd = std::fmod(play, 2.0) == 1.0;
-    const bool backwards = reversed != (yoyo && odd);
-    // Backwards is the forward play run back in time, as the anim engine plays it.
-    return curve(backwards ? 1.0 - tau : tau);
+AnimationDef SceneAnimation::def() const noexcept {
+    return {.curve = curve, .delay = delay, .repeat = repeat, .reversed = reversed, .yoyo = yoyo};
 }
 
-double SceneAnimation::end_time() const noexcept {
-    if (repeat < 0) return std::numeric_limits<double>::infinity();
-    return delay + duration * (static_cast<double>(repeat) + 1.0);
+double SceneAnimation::progress(double t) const noexcept {
+    if (!(duration > 0.0)) return curve(reversed ? 1.0 : 0.0);  // not playable: its start
+    return progress_at(def(), duration, t);
 }
+
+double SceneAnimation::end_time() const noexcept { return grape::end_time(def(), duration); }
 
 const NamedPath* Scene::find_path(std::string_view name) const noexcept {
     for (const NamedPath& p : paths)
