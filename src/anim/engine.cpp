@@ -86,7 +86,7 @@ std::uint32_t EngineImpl::acquire_path(const Path& path) {
     PathFast fast;
     fast.fast = entry.kernel.kind;
     for (int k = 0; k < 4; ++k) fast.c[k] = entry.kernel.c[k];
-    if (entry.kernel.table) {  // shared: the table survives moving the entry
+    if (entry.kernel.table) {  // the table's buffer survives moving the entry
         fast.table = entry.kernel.table->values().data();
         fast.steps = entry.kernel.table->steps();
     }

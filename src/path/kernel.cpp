@@ -78,10 +78,9 @@ PathKernel make_kernel(const Path& path) {
         case PathKind::reparametrized: {
             const PathNode& source = NodeAccess::node(static_cast<const ReparametrizedNode&>(node).source());
             if (source.kind() != PathKind::linear && source.kind() != PathKind::cubic_bezier) return kernel;
-            auto table = ArcLengthTable::build(path);
-            if (!table) return kernel;
+            kernel.table = ArcLengthTable::build(path);
+            if (!kernel.table) return kernel;
             copy_coefficients(source, kernel.c);
-            kernel.table = std::make_shared<const ArcLengthTable>(std::move(*table));
             kernel.kind = source.kind() == PathKind::linear ? KernelKind::reparam_linear : KernelKind::reparam_cubic;
             return kernel;
         }

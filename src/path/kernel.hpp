@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -66,7 +65,7 @@ enum class KernelKind : std::uint8_t {
 struct PathKernel {
     KernelKind kind = KernelKind::generic;
     Vec2 c[4] = {};  ///< linear: start, end − start; cubic: power-basis coefficients (of the source)
-    std::shared_ptr<const ArcLengthTable> table;  ///< reparam_*: v(u)
+    std::optional<ArcLengthTable> table;  ///< reparam_*: v(u) (its buffer survives moving the kernel)
 };
 
 /// The kernel of a path (builds the arc-length table of a reparametrized line or cubic).
