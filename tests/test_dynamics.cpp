@@ -4,6 +4,7 @@
 #include <grape/dynamics.hpp>
 
 #include "seed_dynamics.hpp"
+#include "seed_paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -952,6 +953,21 @@ TEST(Names, RoundTrip) {
     EXPECT_EQ(integrator_from_string("verlet"), Integrator::velocity_verlet);
     for (DriftControl d : {DriftControl::none, DriftControl::baumgarte, DriftControl::projection})
         EXPECT_EQ(drift_control_from_string(to_string(d)), d);
+}
+
+// A Bead on a complex path carries its speed across joins whatever the static type it was
+// given: stepping both the same way gives the same states.
+TEST(PathSpec, BeadOnAComplexPathIgnoresItsStaticType) {
+    const ComplexPath complex = seed_complex();
+    const BeadDef def{.u = 0.2, .speed = 300.0};
+    Bead typed(complex, def);
+    Bead plain(static_cast<const Path&>(complex), def);
+    for (int k = 0; k < 600; ++k) {
+        typed.step(1.0 / 60.0);
+        plain.step(1.0 / 60.0);
+        ASSERT_EQ(typed.position(), plain.position()) << "step " << k;
+        ASSERT_EQ(typed.u(), plain.u()) << "step " << k;
+    }
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include <grape/error.hpp>
 #include <grape/path.hpp>
 
-#include "../src/path/path_node.hpp"
+#include "path/kernel.hpp"
 #include "seed_paths.hpp"
 
 #include "error_text.hpp"
@@ -63,7 +63,7 @@ std::vector<NamedPath> all_paths() {
 
 // The pieces [a, b] on which a path is smooth.
 std::vector<std::pair<double, double>> pieces(const Path& p) {
-    const auto& br = p.node().breaks();
+    const auto br = grape::detail::smooth_breaks(p);
     std::vector<std::pair<double, double>> out;
     for (std::size_t i = 0; i + 1 < br.size(); ++i) out.emplace_back(br[i], br[i + 1]);
     return out;
@@ -198,9 +198,8 @@ TEST(PathLength, ClosedForms) {
 TEST(PathLength, MatchesIndependentQuadratureTo1e12) {
     for (const auto& [name, path] : all_paths()) {
         if (name == "projectile_up_and_down" || name == "bezier_cusp" || name == "hermite_cusp") continue;  // kinks
-        const double ref = reference_length(path.kind() == grape::PathKind::reparametrized
-                                                ? static_cast<const grape::detail::ReparametrizedNode&>(path.node()).source()
-                                                : path);
+        const auto reparametrized = grape::path_cast<grape::ReparametrizedSpec>(path);
+        const double ref = reference_length(reparametrized ? reparametrized->source : path);
         EXPECT_NEAR(path.length(), ref, 1e-12 * ref) << name;
     }
 }
@@ -307,7 +306,7 @@ TEST(SeedPaths, NestedComplexOfThreeCirclesBezierAndSine) {
 TEST(SeedPaths, ComplexPathsAreContinuousAtEveryCue) {
     for (const auto& path : {Path(grape::scenes::seed_complex()), Path(grape::scenes::seed_nested_complex()),
                              Path(grape::scenes::seed_circles())}) {
-        for (const double cue : path.node().breaks()) {
+        for (const double cue : grape::detail::smooth_breaks(path)) {
             if (cue == 0.0 || cue == 1.0) continue;
             const double before = std::nextafter(cue, 0.0);
             // Rounding of both sides' evaluations: a few ulp of the coordinates (≤ 600).
@@ -424,15 +423,14 @@ TEST(Reparametrized, ArcLengthErrorBelow1e9ForEveryKind) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const auto& [name, path] : all_paths()) {
         const Path r = path.reparametrized();
-        const auto& node = static_cast<const grape::detail::ReparametrizedNode&>(r.node());
-        const Path& source = node.source();
+        const Path source = grape::path_cast<grape::ReparametrizedSpec>(r)->source;
         const double L = source.length();
         EXPECT_EQ(r.length(), L) << name;
         double worst = 0.0;
         for (int i = 0; i <= 2000; ++i) {
             const double u = i < 1000 ? i / 1000.0 : unit(rng);
             // s(v(u)) by the source's own length_at (checked against independent quadrature above).
-            worst = std::max(worst, std::abs(source.length_at(node.source_u(u)) - u * L));
+            worst = std::max(worst, std::abs(source.length_at(grape::detail::source_parameter(r, u)) - u * L));
         }
         EXPECT_LE(worst, 1e-9 * L) << name;
         EXPECT_EQ(r.point(0.0), source.point(0.0)) << name;
@@ -456,17 +454,18 @@ TEST(Reparametrized, SpeedIsConstantAndDerivativesAreConsistent) {
             const Vec2 d2 = r.d2(u);
             // Constant speed ⇒ x″ ⟂ x′ exactly by the chain rule; the rounding is that of the
             // two terms |X″|·(L/σ)² whose difference x″ is.
-            const auto& node = static_cast<const grape::detail::ReparametrizedNode&>(r.node());
-            const double v = node.source_u(u);
-            const double sigma = grape::length(node.source().d1(v));
-            const double terms = grape::length(node.source().d2(v)) * (L / sigma) * (L / sigma);
+            const Path source = grape::path_cast<grape::ReparametrizedSpec>(r)->source;
+            const double v = grape::detail::source_parameter(r, u);
+            const double sigma = grape::length(source.d1(v));
+            const double terms = grape::length(source.d2(v)) * (L / sigma) * (L / sigma);
             EXPECT_LE(std::abs(grape::dot(d1, d2)), 64 * eps * L * terms + 1e-300) << name;
             // Positions carry ≤ 1e-9·L of table error; a difference over the 8h stencil turns
             // that into ≤ Σ|w|·1e-9·L/h of derivative error (plus rounding). Stencils that
             // straddle a kink of the source (spline joins, cusps) are not smooth: skip them.
             bool smooth = true;
-            const double va = node.source_u(u - 4 * h), vb = node.source_u(u + 4 * h);
-            for (double b : node.source().node().breaks()) smooth = smooth && !(b > va && b < vb);
+            const double va = grape::detail::source_parameter(r, u - 4 * h);
+            const double vb = grape::detail::source_parameter(r, u + 4 * h);
+            for (double b : grape::detail::smooth_breaks(source)) smooth = smooth && !(b > va && b < vb);
             if (!smooth) continue;
             const Vec2 fd = central_difference([&](double v) { return r.point(v); }, u, h);
             const double scale = max_abs_coordinate(r);
@@ -522,7 +521,7 @@ TEST(PathBounds, TightAroundDenseSamples) {
             sampled.add(path.point(i / double(n)));
             d2_max = std::max(d2_max, grape::length(path.d2(i / double(n))));
         }
-        for (double b : path.node().breaks()) sampled.add(path.point(b));
+        for (double b : grape::detail::smooth_breaks(path)) sampled.add(path.point(b));
         for (const auto& [a, b] : pieces(path)) sampled.add(path.point(std::nextafter(b, a)));
         // Every sample inside (rounding slack); the box no larger than the samples' own box
         // plus how far a coordinate can move past a sample near its extreme: |x″|·Δu²/8.

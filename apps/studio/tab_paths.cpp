@@ -2,7 +2,8 @@
 // included, or one of every kind from the gallery), a curve (every easing, or any curve
 // name such as "cubic-bezier(0.3,0,0.2,1)" or "steps(5)"), duration, repeat, reverse, yoyo
 // and arc length; the path is drawn with its debug rendering and a marker plays along it.
-// Bézier and spline control points can be dragged; the animation follows.
+// Bézier and spline control points can be dragged (the path's spec is edited and rebuilt);
+// the animation follows.
 #include "studio.hpp"
 
 #include <seed_paths.hpp>
@@ -31,100 +32,56 @@ namespace grape::studio {
 
 namespace {
 
-// How an entry's control points rebuild its path. `scene`: through the path's scene JSON,
-// whose "points" are the control points for every kind that has them.
-enum class Edit { none, quadratic, cubic, linear_spline, cosine_spline, catmull_rom, scene };
-
 struct Entry {
     std::string name;
     Path path;
-    Edit edit = Edit::none;
-    std::vector<Vec2> controls;   // Bézier control points or spline points
-    bool reparametrize = false;   // Bézier built by arc length (the seed's flag)
-    CatmullRom type = CatmullRom::uniform;
-    std::string json;             // Edit::scene: the path as scene JSON
+    std::vector<Vec2> controls;  // the points a drag moves: Bézier control points or spline points
+    bool bezier = false;         // draw the control polygon
 };
 
-// A Bézier's control points from its end derivatives (exact: x′(0) = n(p1 − p0),
-// x′(1) = n(pn − pn−1) for degree n), so any Bézier from the catalogue can be edited.
+// The spec whose points a drag edits: a reparametrized path's source (the same shape).
+PathSpec editable_spec(const Path& path) {
+    PathSpec spec = describe(path);
+    if (const auto* r = std::get_if<ReparametrizedSpec>(&spec)) return describe(r->source);
+    return spec;
+}
+
+// The spec's movable points: a Bézier's control points or a spline's points (none for the
+// other kinds).
+std::span<Vec2> points_of(PathSpec& spec) {
+    return std::visit([](auto& s) -> std::span<Vec2> {
+        if constexpr (requires { s.control; }) return s.control;
+        else if constexpr (requires { s.points; }) return s.points;
+        else return {};
+    }, spec);
+}
+
 Entry entry_from_path(std::string name, const Path& path) {
     Entry e;
     e.name = std::move(name);
     e.path = path;
-    const Vec2 p0 = path.point(0.0);
-    const Vec2 pn = path.point(1.0);
-    if (path.kind() == PathKind::quadratic_bezier) {
-        e.edit = Edit::quadratic;
-        e.controls = {p0, p0 + path.d1(0.0) / 2.0, pn};
-    } else if (path.kind() == PathKind::cubic_bezier) {
-        e.edit = Edit::cubic;
-        e.controls = {p0, p0 + path.d1(0.0) / 3.0, pn - path.d1(1.0) / 3.0, pn};
-    }
-#ifdef GRAPE_STUDIO_SCENE
-    else {
-        // Splines (and anything else with points) through the scene format.
-        const nlohmann::json j = nlohmann::json::parse(path_to_json(path));
-        if (j.contains("points") && j["points"].is_array()) {
-            e.edit = Edit::scene;
-            e.json = j.dump();
-            for (const auto& point : j["points"]) e.controls.push_back({point.at(0).get<double>(), point.at(1).get<double>()});
-        }
-    }
-#endif
+    PathSpec spec = editable_spec(path);
+    const auto points = points_of(spec);
+    e.controls.assign(points.begin(), points.end());
+    e.bezier = kind_of(spec) == PathKind::quadratic_bezier || kind_of(spec) == PathKind::cubic_bezier;
     return e;
 }
 
 std::vector<Entry> catalogue() {
     std::vector<Entry> entries;
-    // The seed's examples; the typed factories give the Bézier and spline points to edit.
     for (auto& [name, path] : scenes::seed_paths()) entries.push_back(entry_from_path("seed_" + name, path));
-    for (Entry& e : entries) {
-        if (e.name == "seed_bezier" || e.name == "seed_bezier_reparametrized") {
-            const CubicBezierPath b = scenes::seed_bezier(e.name == "seed_bezier_reparametrized");
-            e.edit = Edit::cubic;
-            e.reparametrize = e.name == "seed_bezier_reparametrized";
-            e.controls = {b.control(0), b.control(1), b.control(2), b.control(3)};
-        } else if (e.name == "seed_linear_spline_p1") {
-            const auto s = scenes::seed_linear_spline();
-            e.edit = Edit::linear_spline;
-            e.controls.assign(s.points().begin(), s.points().end());
-        } else if (e.name == "seed_cosine_spline_p2") {
-            const auto s = scenes::seed_cosine_spline();
-            e.edit = Edit::cosine_spline;
-            e.controls.assign(s.points().begin(), s.points().end());
-        } else if (e.name == "seed_catmull_rom_spline_p3") {
-            const auto s = scenes::seed_catmull_rom_spline();
-            e.edit = Edit::catmull_rom;
-            e.type = s.type();
-            e.controls.assign(s.points().begin(), s.points().end());
-        }
-    }
     for (auto& [name, path] : scenes::path_gallery()) entries.push_back(entry_from_path("gallery_" + name, path));
     return entries;
 }
 
-// The path through an entry's control points (throws grape::Error for a degenerate set).
+// The entry's path with its points moved to `controls`, reparametrized again if it was
+// (throws grape::Error for a degenerate set).
 Path rebuild(const Entry& e) {
-    switch (e.edit) {
-        case Edit::quadratic: return QuadraticBezierPath(e.controls[0], e.controls[1], e.controls[2], e.reparametrize);
-        case Edit::cubic:
-            return CubicBezierPath(e.controls[0], e.controls[1], e.controls[2], e.controls[3], e.reparametrize);
-        case Edit::linear_spline: return LinearSplinePath(e.controls);
-        case Edit::cosine_spline: return CosineSplinePath(e.controls);
-        case Edit::catmull_rom: return CatmullRomSplinePath(e.controls, e.type);
-        case Edit::scene: {
-#ifdef GRAPE_STUDIO_SCENE
-            nlohmann::json j = nlohmann::json::parse(e.json);
-            j["points"] = nlohmann::json::array();
-            for (Vec2 p : e.controls) j["points"].push_back({p.x, p.y});
-            return path_from_json(j.dump());
-#else
-            break;
-#endif
-        }
-        case Edit::none: break;
-    }
-    return e.path;
+    PathSpec spec = editable_spec(e.path);
+    const auto points = points_of(spec);
+    std::copy_n(e.controls.begin(), std::min(points.size(), e.controls.size()), points.begin());
+    const Path path = from_spec(spec);
+    return e.path.kind() == PathKind::reparametrized ? path.reparametrized() : path;
 }
 
 class PathsTab final : public Tab {
@@ -171,7 +128,7 @@ public:
         ImGui::TextUnformatted("Path");
         if (ImGui::BeginListBox("##paths", {-1.0f, 170.0f})) {
             for (std::size_t i = 0; i < entries_.size(); ++i) {
-                const bool editable = entries_[i].edit != Edit::none;
+                const bool editable = !entries_[i].controls.empty();
                 std::string label = entries_[i].name + (editable ? "  (drag points)" : "");
                 if (ImGui::Selectable(label.c_str(), i == current_)) select(i);
             }
@@ -249,8 +206,8 @@ public:
         draw_path(canvas, min, max);
 
         // Control polygon and handles.
-        if (e.edit != Edit::none) {
-            const bool bezier = e.edit == Edit::quadratic || e.edit == Edit::cubic;
+        if (!e.controls.empty()) {
+            const bool bezier = e.bezier;
             if (bezier)
                 for (std::size_t i = 0; i + 1 < e.controls.size(); ++i)
                     canvas.line(e.controls[i], e.controls[i + 1], colour::faint, 1.0f);

@@ -13,11 +13,18 @@
 //   engine.tick(1.0 / 60.0);
 //
 // Time is exact: ticking any dt sequence that sums to T lands where seek gives the same
-// time (to rounding), repeats and yoyo included, and one large dt fires every loop event it
-// crosses, in order. A play counts as finished within 1e-9 of its length (in plays), so 60
-// ticks of 1/60 s end a 1 s play on the 60th tick although the sum falls short by an ulp.
-// Arc-length (reparametrized) linear and cubic Bézier paths are evaluated from a table the
-// engine builds once per shared path, within 2e-10·length of Path::point.
+// time (to rounding), repeats and yoyo included, and where `play_at` (the one timing model,
+// a pure function also used by scenes) puts it. One large dt fires the loop events it
+// crosses in order, up to `max_loop_events` per animation per tick (then one event for the
+// last play, counting the skipped ones). A play counts as finished within 1e-9 of its length
+// (in plays), so 60 ticks of 1/60 s end a 1 s play on the 60th tick although the sum falls
+// short by an ulp. Arc-length (reparametrized) linear and cubic Bézier paths are evaluated
+// from a table the path module builds once per shared path, within 2e-10·length of
+// Path::point.
+//
+// Limits: at most 65,535 distinct curves with parameters (back, elastic, cubic-bezier, steps,
+// monotone; equal curves share one) alive in one engine at once, and 2³¹ animations;
+// creation throws grape::Error beyond them.
 //
 // Threads: an Engine and its animations belong to one thread: tick, create, seek, pause,
 // kill, the handles' queries and every event handler run on the thread that owns the
@@ -56,6 +63,46 @@ struct AnimationDef {
     bool heading = false;     ///< also track the path's heading (radians); 2-D animations
                               ///< bound to a target with a `rotation` member write it there
 };
+
+// --- the timing model: pure functions of time ------------------------------------------------
+
+/// A play counts as finished within this much of its end, in plays: summed frame times such
+/// as 60 × 1/60 fall short of 1 by a few ulp and must still complete on that frame.
+inline constexpr double play_snap = 1e-9;
+
+/// The most on_loop calls one tick makes per animation. A tick that starts more plays calls
+/// on_loop once, for the last of them, with the number it skipped.
+inline constexpr int max_loop_events = 16;
+
+/// Where an animation stands: which play runs, how far into it, which way.
+struct PlayState {
+    double play = 0.0;       ///< plays begun before the current one (a whole number ≥ 0; +inf
+                             ///< after infinitely many)
+    double phase = 0.0;      ///< fraction of the current play elapsed, in [0, 1]; < 0 while
+                             ///< waiting (−phase·duration seconds of delay left)
+    bool backward = false;   ///< the current play runs from the path's end to its start
+    bool finished = false;   ///< at the end of the last play (never for endless animations)
+};
+
+/// The state `position` plays after the first play began (negative: waiting), for an
+/// animation of `plays` plays (0: endless) whose first play runs `backward` when `reversed`,
+/// and every second one the other way when `yoyo`. Snap rule: a play within play_snap of its
+/// end counts as ended; from 2⁵³ plays on the phase is 0 (a double has no fraction left
+/// there), and +inf gives the start of a play after infinitely many. NaN counts as 0.
+PlayState play_at_position(double position, double plays, bool reversed, bool yoyo) noexcept;
+
+/// The state at `t` seconds (engine time) after an animation of `def` and `duration`
+/// seconds per play was created, as the Engine plays it: animation time runs at
+/// def.time_scale, the first play starts after def.delay seconds of animation time.
+PlayState play_at(const AnimationDef& def, double duration, double t) noexcept;
+
+/// The path parameter u at engine time t: def.curve of the play fraction, run backwards
+/// (curve(1 − τ)) on backward plays; the start while waiting, the end once finished.
+double progress_at(const AnimationDef& def, double duration, double t) noexcept;
+
+/// Engine seconds from creation until the last play ends: (delay + duration·plays) /
+/// time_scale; +inf for endless animations or time_scale 0.
+double end_time(const AnimationDef& def, double duration) noexcept;
 
 /// A member of T that a property animation drives: a `double T::*` or a `float T::*`.
 template <class T>
@@ -118,7 +165,7 @@ public:
     /// Jumps to `seconds` of animation time since the first play began (negative: back into
     /// the delay, that many seconds before the start; past the end of a finite animation:
     /// its end, and it completes on the next tick). Writes the new state to the target at
-    /// once; fires no event (events come from tick).
+    /// once; fires no event (events come from tick). Non-finite seconds are ignored.
     void seek(double seconds) const noexcept;
     /// Changes the speed (≥ 0 and finite; other values are ignored).
     void set_time_scale(double scale) const noexcept;
@@ -128,11 +175,17 @@ public:
 
     /// Calls `handler` once when the animation completes (after its last play has written its
     /// end state). The handler may create, pause, seek or kill any animation, this one
-    /// included; seeking this one back into its plays from the handler restarts it.
+    /// included; seeking this one back into its plays from the handler restarts it. If the
+    /// handler throws, the animation has completed all the same and the error leaves tick().
     void on_complete(std::function<void()> handler) const;
-    /// Calls `handler(play)` each time a new play starts (play = 1, 2, ...), once per play
-    /// even when one tick crosses several.
+    /// Calls `handler(play)` each time a new play starts (play = 1, 2, ..., saturating at
+    /// INT32_MAX), once per play when one tick starts up to max_loop_events plays; beyond
+    /// that, once for the last play started (the others are skipped).
     void on_loop(std::function<void(int)> handler) const;
+    /// The same with `skipped`: how many plays started in this tick before `play` without an
+    /// event of their own (0 unless the tick started more than max_loop_events plays;
+    /// saturates at UINT64_MAX).
+    void on_loop(std::function<void(int play, std::uint64_t skipped)> handler) const;
 
     friend bool operator==(const Animation&, const Animation&) noexcept = default;
 
@@ -161,12 +214,15 @@ public:
     Engine& operator=(const Engine&) = delete;
 
     /// Advances every live animation by dt engine seconds (finite, ≥ 0; throws grape::Error
-    /// otherwise, or when called from inside one of its own handlers).
+    /// otherwise, or when called from inside one of its own handlers). Work is bounded per
+    /// animation whatever dt is (see max_loop_events).
     void tick(double dt);
 
     /// Moves `target.x` and `target.y` (both double or both float) along a 2-D path for
     /// `duration` seconds (> 0 and finite) per play. With `def.heading` and a `rotation`
-    /// member of the same type, the heading is written there too.
+    /// member of the same type, the heading is written there too. Every creation throws
+    /// grape::Error for a bad duration or def, and for timings a double cannot hold: plays
+    /// per second (time_scale / duration), delay / duration or the end time overflowing.
     template <class T>
     Animation create_2d_animation(T& target, const Path& path, double duration, const AnimationDef& def = {});
 

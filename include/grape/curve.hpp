@@ -252,8 +252,29 @@ std::string_view to_string(CurveKind kind) noexcept;
 
 // --- inline evaluation: one switch, the formula kinds inlined -----------------------------
 
-inline double Curve::operator()(double t) const noexcept {
-    switch (kind_) {
+/// True for the kinds that carry numbers (back, elastic, cubic_bezier, steps, monotone):
+/// their evaluation needs the Curve, the others' only the kind.
+constexpr bool has_parameters(CurveKind kind) noexcept {
+    switch (kind) {
+        case CurveKind::back_in:
+        case CurveKind::back_out:
+        case CurveKind::back_in_out:
+        case CurveKind::elastic_in:
+        case CurveKind::elastic_out:
+        case CurveKind::elastic_in_out:
+        case CurveKind::cubic_bezier:
+        case CurveKind::steps:
+        case CurveKind::monotone: return true;
+        default: return false;
+    }
+}
+
+namespace detail {
+/// The formula of a kind without parameters (has_parameters(kind) false) at t; t itself for
+/// the kinds with parameters. Inline, so a loop over many kinds (the anim engine's tick)
+/// evaluates it without a call.
+inline double ease_formula(CurveKind kind, double t) noexcept {
+    switch (kind) {
         case CurveKind::linear: return t;
         case CurveKind::quad_in: return ease::quad_in(t);
         case CurveKind::quad_out: return ease::quad_out(t);
@@ -276,20 +297,27 @@ inline double Curve::operator()(double t) const noexcept {
         case CurveKind::circ_in: return ease::circ_in(t);
         case CurveKind::circ_out: return ease::circ_out(t);
         case CurveKind::circ_in_out: return ease::circ_in_out(t);
+        case CurveKind::bounce_in: return ease::bounce_in(t);
+        case CurveKind::bounce_out: return ease::bounce_out(t);
+        case CurveKind::bounce_in_out: return ease::bounce_in_out(t);
+        default: return t;
+    }
+}
+}  // namespace detail
+
+inline double Curve::operator()(double t) const noexcept {
+    switch (kind_) {
         case CurveKind::back_in: return ease::back_in(t, p_[0]);
         case CurveKind::back_out: return ease::back_out(t, p_[0]);
         case CurveKind::back_in_out: return ease::back_in_out(t, p_[0]);
         case CurveKind::elastic_in: return ease::elastic_in(t, p_[0], p_[1]);
         case CurveKind::elastic_out: return ease::elastic_out(t, p_[0], p_[1]);
         case CurveKind::elastic_in_out: return ease::elastic_in_out(t, p_[0], p_[1]);
-        case CurveKind::bounce_in: return ease::bounce_in(t);
-        case CurveKind::bounce_out: return ease::bounce_out(t);
-        case CurveKind::bounce_in_out: return ease::bounce_in_out(t);
         case CurveKind::cubic_bezier: return detail::cubic_bezier_eval(p_[0], p_[1], p_[2], p_[3], t);
         case CurveKind::steps: return detail::steps_eval(p_[0], p_[1], t);
         case CurveKind::monotone: return detail::monotone_eval(*points_, t);
+        default: return detail::ease_formula(kind_, t);
     }
-    return t;
 }
 
 }  // namespace grape

@@ -482,10 +482,11 @@ struct BeadDef {
 /// vanishes) use path.reparametrized(): at constant |x′| the speed carries through.
 class Bead {
 public:
-    /// On any path. Throws grape::Error for a bad BeadDef (non-finite values, mass ≤ 0,
-    /// drag < 0, restitution outside [0, 1], u outside [0, 1]).
+    /// On any path; a complex one (whatever its static type) keeps the speed along the path
+    /// at joins between its parts. Throws grape::Error for a bad BeadDef (non-finite values,
+    /// mass ≤ 0, drag < 0, restitution outside [0, 1], u outside [0, 1]).
     Bead(const Path& path, const BeadDef& def);
-    /// On a ComplexPath: joins between parts keep the speed along the path.
+    /// On a ComplexPath: the same as Bead(const Path&, def).
     Bead(const ComplexPath& path, const BeadDef& def);
     /// On a user curve (u unbounded). Throws grape::Error if `curve` is empty or def is bad.
     Bead(ParametricCurve curve, const BeadDef& def);

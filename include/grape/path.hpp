@@ -4,9 +4,13 @@
 // number of animations and bead simulations at once. Each kind (LinearPath, CirclePath, ...)
 // is a `Path` whose constructor validates its arguments (throwing grape::Error) and which
 // adds accessors for its own parameters. Evaluation is noexcept and allocation-free.
+// Any Path, whatever its static type, says what it is: `describe(path)` gives its kind and
+// parameters as a plain value (a PathSpec), `from_spec` builds the same path back, and
+// `path_cast<CubicBezierSpec>(path)` reads one kind's parameters if the path is of that kind.
 //
 //   grape::SpiralPath spiral({100, 100}, 200, 0);
 //   grape::Vec2 p = spiral.point(0.5);
+//   if (auto c = grape::path_cast<grape::ComplexSpec>(path)) { /* c->parts, c->cues */ }
 //
 // Threads: a Path (any kind, reparametrized and complex paths included) is immutable after
 // construction, so one Path may be read from any number of threads at once (point, tangent,
@@ -17,18 +21,21 @@
 
 #include <grape/math.hpp>
 
+#include <array>
 #include <cstddef>
 #include <initializer_list>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace grape {
 
 namespace detail {
-class PathNode;     // the shape behind a Path (src/path/path_node.hpp)
-struct PathAccess;  // lets the library's modules wrap and share nodes (path_node.hpp)
+class PathNode;  // the shape behind a Path, private to the path module
 }
 
 /// Every kind of 2-D path.
@@ -103,18 +110,12 @@ public:
     /// Which kind of path this is.
     PathKind kind() const noexcept;
 
-    /// The shape, for modules that evaluate paths in bulk (anim, dynamics, render).
-    const detail::PathNode& node() const noexcept { return *node_; }
-
     /// Same shape object (not a geometric comparison).
     friend bool operator==(const Path& a, const Path& b) noexcept { return a.node_ == b.node_; }
 
 protected:
     explicit Path(std::shared_ptr<const detail::PathNode> node) noexcept;
     std::shared_ptr<const detail::PathNode> node_;
-
-private:
-    friend struct detail::PathAccess;
 };
 
 /// A straight segment from `start` to `end`; u is proportional to distance.
@@ -271,6 +272,131 @@ public:
     std::span<const double> cues() const noexcept;
 };
 
+// --- what a path is: plain values -------------------------------------------------------
+
+/// LinearPath's parameters.
+struct LinearSpec {
+    Vec2 start;  ///< point at u = 0
+    Vec2 end;    ///< point at u = 1
+};
+/// CirclePath's parameters (angles in radians).
+struct CircleSpec {
+    Vec2 centre;
+    double radius = 1.0;
+    double start_angle = 0.0;
+    double end_angle = 2.0 * pi;
+};
+/// EllipticalArcPath's parameters (angles in radians).
+struct EllipticalArcSpec {
+    Vec2 centre;
+    double rx = 1.0;
+    double ry = 1.0;
+    double rotation = 0.0;
+    double start_angle = 0.0;
+    double end_angle = 2.0 * pi;
+};
+/// SpiralPath's parameters (angles in radians).
+struct SpiralSpec {
+    Vec2 centre;
+    double start_radius = 0.0;
+    double end_radius = 1.0;
+    double start_angle = 0.0;
+    double end_angle = 2.0 * pi;
+};
+/// SineWavePath's parameters.
+struct SineWaveSpec {
+    Vec2 start;
+    Vec2 end;
+    double frequency = 1.0;  ///< full waves along the segment
+    double amplitude = 0.0;  ///< world units
+};
+/// QuadraticBezierPath's control points p0, p1, p2 (as a Bézier, not reparametrized).
+struct QuadraticBezierSpec {
+    std::array<Vec2, 3> control;
+};
+/// CubicBezierPath's control points p0..p3 (as a Bézier, not reparametrized).
+struct CubicBezierSpec {
+    std::array<Vec2, 4> control;
+};
+/// LinearSplinePath's points.
+struct LinearSplineSpec {
+    std::vector<Vec2> points;
+};
+/// CosineSplinePath's points.
+struct CosineSplineSpec {
+    std::vector<Vec2> points;
+};
+/// HermiteSplinePath's points and tangents (one per point).
+struct HermiteSplineSpec {
+    std::vector<Vec2> points;
+    std::vector<Vec2> tangents;
+};
+/// CatmullRomSplinePath's points and knot spacing.
+struct CatmullRomSplineSpec {
+    std::vector<Vec2> points;
+    CatmullRom type = CatmullRom::uniform;
+};
+/// PhysicsPath's parameters.
+struct PhysicsSpec {
+    Vec2 position;      ///< world units
+    Vec2 velocity;      ///< units per second
+    Vec2 acceleration;  ///< units per second²
+    double seconds = 1.0;
+};
+/// ComplexPath's parts and cues (the parts are paths: describe them in turn).
+struct ComplexSpec {
+    std::vector<Path> parts;
+    std::vector<double> cues;
+};
+/// The arc-length reparametrization of `source` (Path::reparametrized()); a Bézier built
+/// with `reparametrize` is one of these around the plain Bézier.
+struct ReparametrizedSpec {
+    Path source;
+};
+
+/// Every kind with its parameters. The alternatives come in PathKind's order, so
+/// `spec.index()` is the kind (kind_of).
+using PathSpec = std::variant<LinearSpec, CircleSpec, EllipticalArcSpec, SpiralSpec, SineWaveSpec,
+                              QuadraticBezierSpec, CubicBezierSpec, LinearSplineSpec, CosineSplineSpec,
+                              HermiteSplineSpec, CatmullRomSplineSpec, PhysicsSpec, ComplexSpec,
+                              ReparametrizedSpec>;
+
+/// The kind and parameters of any path, whatever its static type (copies spline points;
+/// a query, not for per-frame loops).
+PathSpec describe(const Path& path);
+/// The path a spec describes: from_spec(describe(p)) evaluates bit for bit like p. Throws
+/// grape::Error as the kind's constructor does for invalid parameters.
+Path from_spec(const PathSpec& spec);
+
+/// The kind a spec describes.
+inline PathKind kind_of(const PathSpec& spec) noexcept { return static_cast<PathKind>(spec.index()); }
+
+namespace detail {
+template <class S, class V>
+struct spec_index;
+template <class S, class... Specs>
+struct spec_index<S, std::variant<Specs...>> {
+    static constexpr std::size_t value = [] {
+        constexpr bool same[] = {std::is_same_v<S, Specs>...};
+        std::size_t i = 0;
+        while (i < sizeof...(Specs) && !same[i]) ++i;
+        return i;
+    }();
+    static_assert(value < sizeof...(Specs), "path_cast: not one of PathSpec's alternatives");
+};
+}  // namespace detail
+
+/// The PathKind of a spec type: spec_kind<CircleSpec> == PathKind::circle.
+template <class S>
+inline constexpr PathKind spec_kind = static_cast<PathKind>(detail::spec_index<S, PathSpec>::value);
+
+/// One kind's parameters, if `path` is of that kind (S one of PathSpec's alternatives).
+template <class S>
+std::optional<S> path_cast(const Path& path) {
+    if (path.kind() != spec_kind<S>) return std::nullopt;
+    return std::get<S>(describe(path));
+}
+
 /// SVG path data (`M L H V C S Q T A Z`, absolute and relative, implicit repeats, arcs by the
 /// SVG implementation notes) as a ComplexPath with cues set by length; y points down as in
 /// SVG. Throws grape::Error naming the character offset of a syntax error.
@@ -300,6 +426,8 @@ public:
     PathND(std::size_t dimension, std::span<const double> keyframes);
     std::size_t dimension() const noexcept { return dimension_; }
     std::size_t keyframe_count() const noexcept { return keys_.size() / dimension_; }
+    /// The keyframes, dimension() values each, one after another.
+    std::span<const double> keyframes() const noexcept { return keys_; }
     /// Writes the dimension() values at u into out (out.size() ≥ dimension()).
     void point(double u, std::span<double> out) const noexcept;
     /// Writes d/du of the values at u into out.

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <grape/config.hpp>
+#include <grape/anim.hpp>
 #include <grape/curve.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
@@ -49,9 +50,11 @@ struct SceneAnimation {
     bool yoyo = false;       ///< every other play runs backwards
     bool reversed = false;   ///< the first play runs from the path's end to its start
 
-    /// Progress u along the path at scene time t seconds, as the anim engine plays it:
-    /// curve(τ) going forwards, curve(1 − τ) going backwards (τ the fraction of the current
-    /// play); before the delay it sits at its start, after its last play at its end.
+    /// The AnimationDef the anim engine plays this with (curve and timing).
+    AnimationDef def() const noexcept;
+    /// Progress u along the path at scene time t seconds: progress_at(def(), duration, t),
+    /// the anim module's timing model (curve(τ) going forwards, curve(1 − τ) going
+    /// backwards; before the delay at its start, after its last play at its end).
     double progress(double t) const noexcept;
     /// path.point(progress(t)).
     Vec2 position(double t) const noexcept { return path.point(progress(t)); }

@@ -24,20 +24,36 @@ constexpr double play_end = 1.0 - snap;
 
 using detail::number_text;
 
-bool parameter_free(CurveKind k) noexcept {
-    return k <= CurveKind::bounce_in_out && !(k >= CurveKind::back_in && k <= CurveKind::elastic_in_out);
+// A whole number of plays as the engine's 32-bit play counter advances by it: modulo 2³²,
+// which keeps the parity yoyo needs (every double from 2⁵³ on, and +inf, counts as even).
+std::uint32_t wrap_plays(double whole) noexcept {
+    if (!(whole < 1.8446744073709552e19)) return 0;  // ≥ 2⁶⁴ (multiples of 2³²) and +inf
+    return static_cast<std::uint32_t>(std::fmod(whole, 4294967296.0));
 }
 
 void validate(std::string_view where, double duration, const AnimationDef& def) {
     const std::string w(where);
     if (!(std::isfinite(duration) && duration > 0.0))
         throw Error(w + ": duration must be positive and finite (got " + number_text(duration) + ")");
+    if (!std::isfinite(1.0 / duration))
+        throw Error(w + ": duration is too small: 1 / duration overflows (got " + number_text(duration) + ")");
     if (!(std::isfinite(def.delay) && def.delay >= 0.0))
         throw Error(w + ": delay must be >= 0 and finite (got " + number_text(def.delay) + ")");
     if (def.repeat < -1)
         throw Error(w + ": repeat must be >= 0, or -1 for forever (got " + std::to_string(def.repeat) + ")");
     if (!(std::isfinite(def.time_scale) && def.time_scale >= 0.0))
         throw Error(w + ": time_scale must be >= 0 and finite (got " + number_text(def.time_scale) + ")");
+    // The record keeps plays per second and the delay in plays; both, and the end of the last
+    // play in seconds, must be numbers.
+    if (!std::isfinite(def.time_scale / duration))
+        throw Error(w + ": time_scale / duration overflows (time_scale " + number_text(def.time_scale) +
+                    ", duration " + number_text(duration) + ")");
+    if (!std::isfinite(def.delay / duration))
+        throw Error(w + ": delay / duration overflows (delay " + number_text(def.delay) + ", duration " +
+                    number_text(duration) + ")");
+    if (def.repeat >= 0 && !std::isfinite(def.delay + duration * (static_cast<double>(def.repeat) + 1.0)))
+        throw Error(w + ": delay + duration · (repeat + 1) overflows (delay " + number_text(def.delay) +
+                    ", duration " + number_text(duration) + ", repeat " + std::to_string(def.repeat) + ")");
 }
 
 }  // namespace
@@ -56,100 +72,23 @@ struct EngineImpl::Dispatch {
 
 // --- tables ----------------------------------------------------------------------------------
 
-namespace {
-
-inline double hermite_v(const double* table, double steps, double u) noexcept {
-    const double s = u * steps;
-    double k = std::floor(s);
-    if (k >= steps) k = steps - 1.0;
-    const double t = s - k;
-    const double* e = table + 2 * static_cast<std::size_t>(k);
-    const double t2 = t * t;
-    const double t3 = t2 * t;
-    return (2.0 * t3 - 3.0 * t2 + 1.0) * e[0] + (t3 - 2.0 * t2 + t) * e[1] + (3.0 * t2 - 2.0 * t3) * e[2] +
-           (t3 - t2) * e[3];
-}
-
-// Doubles K until the Hermite table of v(u) lands within 1e-10·length of the node's own
-// solve at three points inside every step; gives up (generic path) where the source stops
-// (dv/du unbounded) or K would pass 16384.
-bool build_reparam_table(const ReparametrizedNode& r, PathEntry& entry) {
-    const PathNode& source = *entry.source;
-    const double length = r.length();
-    if (!(length > 0.0)) return false;
-    for (int steps = 64; steps <= 16384; steps *= 2) {
-        const double k_steps = steps;
-        std::vector<double> table(2 * static_cast<std::size_t>(steps + 1));
-        bool finite = true;
-        for (int k = 0; k <= steps && finite; ++k) {
-            const double v = r.source_u(k / k_steps);
-            const double speed = grape::length(source.d1(v));
-            finite = speed > 1e-12 * length;
-            table[2 * k] = v;
-            table[2 * k + 1] = finite ? length / speed / k_steps : 0.0;
-        }
-        if (!finite) return false;
-        bool good = true;
-        for (int k = 0; k < steps && good; ++k) {
-            for (double t : {0.25, 0.5, 0.75}) {
-                const double u = (k + t) / k_steps;
-                const Vec2 exact = source.point(r.source_u(u));
-                const Vec2 fast = source.point(hermite_v(table.data(), k_steps, u));
-                if (distance(exact, fast) > 1e-10 * length) {
-                    good = false;
-                    break;
-                }
-            }
-        }
-        if (good) {
-            entry.table = std::move(table);
-            entry.steps = k_steps;
-            return true;
-        }
-    }
-    return false;
-}
-
-}  // namespace
-
 std::uint32_t EngineImpl::acquire_path(const Path& path) {
-    const PathNode* node = &path.node();
-    if (auto it = path_index_.find(node); it != path_index_.end()) {
+    const void* shape = shape_id(path);
+    if (auto it = path_index_.find(shape); it != path_index_.end()) {
         ++paths_[it->second].refs;
         return it->second;
     }
     PathEntry entry;
     entry.path = path;
-    entry.node = node;
+    entry.shape = shape;
+    entry.kernel = make_kernel(path);
     entry.refs = 1;
-    switch (node->kind()) {
-        case PathKind::linear: entry.fast = FastPath::linear; break;
-        case PathKind::cubic_bezier: entry.fast = FastPath::cubic; break;
-        case PathKind::reparametrized: {
-            const auto* r = static_cast<const ReparametrizedNode*>(node);
-            entry.source = &r->source().node();
-            const PathKind source_kind = entry.source->kind();
-            if ((source_kind == PathKind::cubic_bezier || source_kind == PathKind::linear) &&
-                build_reparam_table(*r, entry)) {
-                entry.fast = source_kind == PathKind::cubic_bezier ? FastPath::reparam_cubic : FastPath::reparam_linear;
-            }
-            break;
-        }
-        default: break;
-    }
     PathFast fast;
-    fast.fast = entry.fast;
-    fast.node = node;
-    fast.table = entry.table.data();  // the vector's buffer survives moving the entry
-    fast.steps = entry.steps;
-    const PathNode* shape = entry.source ? entry.source : node;
-    if (fast.fast == FastPath::linear || fast.fast == FastPath::reparam_linear) {
-        const auto* n = static_cast<const LinearNode*>(shape);
-        fast.c[0] = n->a;
-        fast.c[1] = n->delta;
-    } else if (fast.fast == FastPath::cubic || fast.fast == FastPath::reparam_cubic) {
-        const auto* n = static_cast<const CubicBezierNode*>(shape);
-        for (int k = 0; k < 4; ++k) fast.c[k] = n->c[k];
+    fast.fast = entry.kernel.kind;
+    for (int k = 0; k < 4; ++k) fast.c[k] = entry.kernel.c[k];
+    if (entry.kernel.table) {  // the table's buffer survives moving the entry
+        fast.table = entry.kernel.table->values().data();
+        fast.steps = entry.kernel.table->steps();
     }
     std::uint32_t index;
     if (!free_paths_.empty()) {
@@ -163,14 +102,14 @@ std::uint32_t EngineImpl::acquire_path(const Path& path) {
         path_fast_.push_back(fast);
         free_paths_.reserve(paths_.size());  // so releasing during a tick never allocates
     }
-    path_index_.emplace(node, index);
+    path_index_.emplace(shape, index);
     return index;
 }
 
 void EngineImpl::release_path(std::uint32_t index) noexcept {
     PathEntry& e = paths_[index];
     if (--e.refs != 0) return;
-    path_index_.erase(e.node);
+    path_index_.erase(e.shape);
     e = PathEntry();                // drops the shape if nobody else holds it
     path_fast_[index] = PathFast();
     free_paths_.push_back(index);   // capacity reserved at creation
@@ -200,7 +139,7 @@ std::uint16_t EngineImpl::acquire_curve(const Curve& curve) {
 }
 
 std::uint16_t EngineImpl::acquire_curve_for(std::uint32_t path, const Curve& curve) {
-    if (parameter_free(curve.kind())) return 0;  // evaluated by kind, no slot needed
+    if (!has_parameters(curve.kind())) return 0;  // evaluated by kind, no slot needed
     try {
         return acquire_curve(curve);
     } catch (...) {
@@ -221,53 +160,28 @@ void EngineImpl::release_curve(std::uint16_t index) noexcept {
 
 // --- evaluation ------------------------------------------------------------------------------
 
+// The curve of a record: parameter-free kinds by curve.hpp's inline formula, the others
+// through their Curve in the table.
 inline double EngineImpl::ease(CurveKind kind, std::uint16_t curve, double x) const noexcept {
-    switch (kind) {
-        case CurveKind::linear: return x;
-        case CurveKind::quad_in: return ease::quad_in(x);
-        case CurveKind::quad_out: return ease::quad_out(x);
-        case CurveKind::quad_in_out: return ease::quad_in_out(x);
-        case CurveKind::cubic_in: return ease::cubic_in(x);
-        case CurveKind::cubic_out: return ease::cubic_out(x);
-        case CurveKind::cubic_in_out: return ease::cubic_in_out(x);
-        case CurveKind::quart_in: return ease::quart_in(x);
-        case CurveKind::quart_out: return ease::quart_out(x);
-        case CurveKind::quart_in_out: return ease::quart_in_out(x);
-        case CurveKind::quint_in: return ease::quint_in(x);
-        case CurveKind::quint_out: return ease::quint_out(x);
-        case CurveKind::quint_in_out: return ease::quint_in_out(x);
-        case CurveKind::sine_in: return ease::sine_in(x);
-        case CurveKind::sine_out: return ease::sine_out(x);
-        case CurveKind::sine_in_out: return ease::sine_in_out(x);
-        case CurveKind::expo_in: return ease::expo_in(x);
-        case CurveKind::expo_out: return ease::expo_out(x);
-        case CurveKind::expo_in_out: return ease::expo_in_out(x);
-        case CurveKind::circ_in: return ease::circ_in(x);
-        case CurveKind::circ_out: return ease::circ_out(x);
-        case CurveKind::circ_in_out: return ease::circ_in_out(x);
-        case CurveKind::bounce_in: return ease::bounce_in(x);
-        case CurveKind::bounce_out: return ease::bounce_out(x);
-        case CurveKind::bounce_in_out: return ease::bounce_in_out(x);
-        default: return curves_[curve].curve(x);  // the kinds with parameters
-    }
+    return has_parameters(kind) ? curves_[curve].curve(x) : detail::ease_formula(kind, x);
 }
 
-// The same arithmetic as LinearNode::point and CubicBezierNode::point, on copied coefficients.
+// The kernel's formulas on copied coefficients (Path::point bit for bit for lines and cubics).
 inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
     if (u >= 0.0 && u <= 1.0) {
         const PathFast& f = path_fast_[path];
         switch (f.fast) {
-            case FastPath::linear: return f.c[0] + f.c[1] * u;
-            case FastPath::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
-            case FastPath::reparam_cubic: {
-                const double v = hermite_v(f.table, f.steps, u);
+            case KernelKind::linear: return f.c[0] + f.c[1] * u;
+            case KernelKind::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+            case KernelKind::reparam_cubic: {
+                const double v = ArcLengthTable::evaluate(f.table, f.steps, u);
                 return ((f.c[3] * v + f.c[2]) * v + f.c[1]) * v + f.c[0];
             }
-            case FastPath::reparam_linear: return f.c[0] + f.c[1] * hermite_v(f.table, f.steps, u);
-            case FastPath::generic: return f.node->point(u);
+            case KernelKind::reparam_linear: return f.c[0] + f.c[1] * ArcLengthTable::evaluate(f.table, f.steps, u);
+            case KernelKind::generic: break;
         }
     }
-    return paths_[path].path.point(u);  // outside [0, 1]: along the end tangents
+    return paths_[path].path.point(u);  // other kinds, and outside [0, 1] along the end tangents
 }
 
 inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept {
@@ -381,11 +295,11 @@ void EngineImpl::tick(double dt) {
             }
             h.phase = phase;
             const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;
-            const double u = parameter_free(h.kind) ? ease(h.kind, 0, x) : ease(h.kind, cold[i].curve, x);
+            const double u = has_parameters(h.kind) ? curves_[cold[i].curve].curve(x) : detail::ease_formula(h.kind, x);
             const PathFast& f = fast[h.path];
             Vec2 p;
-            if (f.fast == FastPath::linear && u >= 0.0 && u <= 1.0) p = f.c[0] + f.c[1] * u;
-            else if (f.fast == FastPath::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+            if (f.fast == KernelKind::linear && u >= 0.0 && u <= 1.0) p = f.c[0] + f.c[1] * u;
+            else if (f.fast == KernelKind::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
             else p = point(h.path, u);
             write_2d(h, p);
         }
@@ -408,37 +322,29 @@ void EngineImpl::tick(double dt) {
     }
 }
 
-// Loops, completion, waiting custom records and custom writes.
+// Loops, completion, waiting custom records and custom writes. The plays crossed come from
+// the timing model, counted from the current play (whose direction stands for `reversed`).
 void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
-    std::uint32_t loops = 0;
+    double loops = 0.0;
     bool completes = false;
     const std::uint32_t first_play = c.play;
     if (phase >= play_end) {
-        const double crossed = std::floor(phase + snap);
-        if (c.plays != 0 && static_cast<double>(c.play) + crossed >= static_cast<double>(c.plays)) {
-            loops = c.plays - 1 - c.play;
-            c.play = c.plays - 1;
-            phase = 1.0;
-            completes = true;
-        } else {
-            // An endless animation may cross more than 2³² plays in one absurd dt; the count
-            // saturates, the play index wraps (keeping its parity for yoyo).
-            loops = crossed >= 4294967295.0 ? UINT32_MAX : static_cast<std::uint32_t>(crossed);
-            c.play += static_cast<std::uint32_t>(std::fmod(crossed, 4294967296.0));
-            phase = std::max(phase - crossed, 0.0);
-        }
-        const bool odd = (c.play & 1u) != 0;
-        const bool backward = ((h.flags & flag_reversed) != 0) != (((h.flags & flag_yoyo) != 0) && odd);
-        h.flags = static_cast<std::uint8_t>(backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+        const double plays_left = c.plays == 0 ? 0.0 : static_cast<double>(c.plays - c.play);
+        const PlayState s = play_at_position(phase, plays_left, (h.flags & flag_backward) != 0, (h.flags & flag_yoyo) != 0);
+        loops = s.play;
+        completes = s.finished;
+        c.play = completes ? c.plays - 1 : c.play + wrap_plays(s.play);
+        phase = s.phase;
+        h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
     }
     h.phase = phase;
     write_state(dense);
-    if (loops > 0 || completes) fire_events(dense, first_play, loops, completes);
+    if (loops > 0.0 || completes) fire_events(dense, first_play, loops, completes);
 }
 
-void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, std::uint32_t loops, bool completes) {
+void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes) {
     const std::uint32_t slot = cold_[dense].slot;
     const std::uint32_t generation = slots_[slot].generation;
     // The state every handler should find; a handler that seeks, kills or restarts this
@@ -450,20 +356,35 @@ void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, std:
         return slots_[slot].generation == generation && cold_[dense].play == play && h.phase == phase &&
                !(h.flags & flag_dead);
     };
+    auto play_number = [first_play](double k) {  // play first_play + k as on_loop reports it
+        return static_cast<int>(std::min(static_cast<double>(first_play) + k, static_cast<double>(INT32_MAX)));
+    };
     if (hot_[dense].flags & flag_listens) {
         Extra& e = extras_.find(slot)->second;
-        if (loops > 0 && e.on_loop) {
+        if (loops > 0.0 && e.on_loop) {
             const auto handler = e.on_loop;
             Dispatch d(*this);
-            for (std::uint32_t k = 1; k <= loops; ++k) {
-                (*handler)(static_cast<int>(std::min<std::uint32_t>(first_play + k, INT32_MAX)));
+            if (loops <= max_loop_events) {
+                for (int k = 1; k <= static_cast<int>(loops); ++k) {
+                    (*handler)(play_number(k), 0);
+                    if (!unchanged()) return;
+                }
+            } else {  // bounded work: one event for the last play, counting the skipped ones
+                const double skipped = loops - 1.0;
+                (*handler)(play_number(loops), skipped < 1.8446744073709552e19 ? static_cast<std::uint64_t>(skipped)
+                                                                               : UINT64_MAX);
                 if (!unchanged()) return;
             }
         }
         if (completes && e.on_complete) {
             const auto handler = e.on_complete;
             Dispatch d(*this);
-            (*handler)();
+            try {
+                (*handler)();
+            } catch (...) {
+                if (unchanged()) mark_dead(dense);  // completed all the same: no second completion
+                throw;
+            }
             if (!unchanged()) return;  // restarted (or killed) by its own handler
         }
     }
@@ -571,23 +492,14 @@ const Extra* EngineImpl::extra(std::uint32_t slot) const noexcept {
 Extra& EngineImpl::extra_for(std::uint32_t slot) { return extras_[slot]; }
 
 void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
-    if (std::isnan(seconds)) return;
+    if (!std::isfinite(seconds)) return;
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
-    const double position = seconds / c.duration;
-    if (c.plays != 0 && position >= static_cast<double>(c.plays) - snap) {
-        c.play = c.plays - 1;
-        h.phase = 1.0;
-    } else if (position < 0.0) {
-        c.play = 0;
-        h.phase = std::max(position, -1e300);
-    } else {
-        const double whole = std::floor(position + snap);  // as tick counts plays
-        c.play = static_cast<std::uint32_t>(std::fmod(whole, 4294967296.0));
-        h.phase = std::max(position - whole, 0.0);
-    }
-    const bool backward = ((h.flags & flag_reversed) != 0) != (((h.flags & flag_yoyo) != 0) && (c.play & 1u));
-    h.flags = static_cast<std::uint8_t>(backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+    const PlayState s = play_at_position(seconds / c.duration, static_cast<double>(c.plays),
+                                         (h.flags & flag_reversed) != 0, (h.flags & flag_yoyo) != 0);
+    c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
+    h.phase = s.phase;
+    h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
     try {
         Dispatch d(*this);
         write_state(dense);
@@ -597,7 +509,8 @@ void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
 
 void EngineImpl::set_time_scale(std::uint32_t dense, double scale) noexcept {
     if (!(std::isfinite(scale) && scale >= 0.0)) return;
-    hot_[dense].rate = scale / cold_[dense].duration;
+    const double rate = scale / cold_[dense].duration;
+    if (std::isfinite(rate)) hot_[dense].rate = rate;  // an overflowing rate is ignored too
 }
 
 void EngineImpl::mark_dead(std::uint32_t dense) noexcept {
@@ -824,8 +737,17 @@ void Animation::on_complete(std::function<void()> handler) const {
 }
 
 void Animation::on_loop(std::function<void(int)> handler) const {
+    if (!handler) {
+        on_loop(std::function<void(int, std::uint64_t)>());
+        return;
+    }
+    on_loop(std::function<void(int, std::uint64_t)>([h = std::move(handler)](int play, std::uint64_t) { h(play); }));
+}
+
+void Animation::on_loop(std::function<void(int play, std::uint64_t skipped)> handler) const {
     GRAPE_FIND();
-    impl.extra_for(slot_).on_loop = handler ? std::make_shared<const std::function<void(int)>>(std::move(handler)) : nullptr;
+    impl.extra_for(slot_).on_loop =
+        handler ? std::make_shared<const std::function<void(int, std::uint64_t)>>(std::move(handler)) : nullptr;
     impl.hot(dense).flags |= detail::flag_listens;
 }
 

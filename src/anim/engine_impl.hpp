@@ -5,7 +5,7 @@
 
 #include <grape/anim.hpp>
 
-#include "../path/path_node.hpp"
+#include "path/kernel.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -58,7 +58,7 @@ struct Extra {
     // Shared so that a running handler survives being replaced from inside itself: the
     // caller holds a copy of the pointer for the duration of the call (no allocation).
     std::shared_ptr<const std::function<void()>> on_complete;
-    std::shared_ptr<const std::function<void(int)>> on_loop;
+    std::shared_ptr<const std::function<void(int, std::uint64_t)>> on_loop;  // (play, skipped)
     std::shared_ptr<const std::function<void(Vec2, double)>> on_update_2d;
     std::shared_ptr<const std::function<void(std::span<const double>)>> on_update_nd;
     bool write_rotation = false;          // 2-D targets: the heading goes to x + rotation_offset
@@ -70,30 +70,20 @@ struct Extra {
     std::vector<double> values;           // N-D current values
 };
 
-enum class FastPath : std::uint8_t { generic, linear, cubic, reparam_linear, reparam_cubic };
-
 struct PathEntry {
-    Path path;                         // keeps the shape alive
-    const PathNode* node = nullptr;
-    const PathNode* source = nullptr;  // reparametrized kinds: the source node
-    FastPath fast = FastPath::generic;
+    Path path;           // keeps the shape alive
+    const void* shape = nullptr;  // its key in path_index_
+    PathKernel kernel;   // coefficients and, for reparametrized lines and cubics, v(u)
     std::uint32_t refs = 0;
-    // Reparametrized kinds: v(u) and dv/du·h at K + 1 even steps h = 1/K, so the hot loop
-    // finds the source parameter by one cubic Hermite step instead of the node's Newton
-    // solve. Built per shared path, kept only when it matches the node's solve within
-    // 1e-10·length in position.
-    std::vector<double> table;
-    double steps = 0.0;  // K
 };
 
 /// What the hot loop reads of a shared path: one or two cache lines, the linear and cubic
-/// coefficients copied in so that most updates never touch the node.
+/// coefficients copied in so that most updates never leave the engine's storage.
 struct PathFast {
-    Vec2 c[4];                       // linear: start, delta; cubic: power-basis coefficients
-    const double* table = nullptr;   // reparametrized: PathEntry::table
+    Vec2 c[4];                       // PathKernel::c
+    const double* table = nullptr;   // reparametrized: the kernel's ArcLengthTable values
     double steps = 0.0;
-    const PathNode* node = nullptr;  // generic evaluation inside [0, 1]
-    FastPath fast = FastPath::generic;
+    KernelKind fast = KernelKind::generic;
 };
 
 struct CurveEntry {
@@ -153,7 +143,7 @@ private:
     void write_2d(const Hot& h, Vec2 p) const noexcept;
     void write_state(std::uint32_t dense);
     void advance_slow(std::uint32_t dense, double phase);
-    void fire_events(std::uint32_t dense, std::uint32_t first_play, std::uint32_t loops, bool completes);
+    void fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes);
     void mark_dead(std::uint32_t dense) noexcept;
     void remove_now(std::uint32_t dense) noexcept;
     void compact() noexcept;
@@ -169,7 +159,7 @@ private:
     std::vector<PathEntry> paths_;
     std::vector<PathFast> path_fast_;  // same index as paths_
     std::vector<std::uint32_t> free_paths_;
-    std::unordered_map<const PathNode*, std::uint32_t> path_index_;
+    std::unordered_map<const void*, std::uint32_t> path_index_;
     std::vector<CurveEntry> curves_;
     std::vector<std::uint16_t> free_curves_;
     std::unordered_map<std::string, std::uint16_t> curve_index_;

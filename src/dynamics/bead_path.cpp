@@ -12,21 +12,20 @@ ParametricCurve curve_of(const Path& path) {
 
 Bead::Bead(const Path& path, const BeadDef& def) {
     std::vector<Part> parts;
-    parts.push_back({curve_of(path), 0.0, 1.0});
+    if (const auto complex = path_cast<ComplexSpec>(path)) {
+        // One part per top-level part of a complex path, so joins keep the speed along it.
+        for (std::size_t i = 0; i < complex->parts.size(); ++i) {
+            const double u0 = complex->cues[i];
+            const double u1 = i + 1 < complex->parts.size() ? complex->cues[i + 1] : 1.0;
+            if (u1 > u0) parts.push_back({curve_of(complex->parts[i]), u0, u1});  // empty spans are skipped, as the path does
+        }
+        if (parts.empty()) throw Error("Bead: path has no part with a non-empty span");
+    } else {
+        parts.push_back({curve_of(path), 0.0, 1.0});
+    }
     init_parts(std::move(parts), def);
 }
 
-Bead::Bead(const ComplexPath& path, const BeadDef& def) {
-    std::vector<Part> parts;
-    const auto sub = path.parts();
-    const auto cues = path.cues();
-    for (std::size_t i = 0; i < sub.size(); ++i) {
-        const double u0 = cues[i];
-        const double u1 = i + 1 < sub.size() ? cues[i + 1] : 1.0;
-        if (u1 > u0) parts.push_back({curve_of(sub[i]), u0, u1});  // empty spans are skipped, as the path does
-    }
-    if (parts.empty()) throw Error("Bead: path has no part with a non-empty span");
-    init_parts(std::move(parts), def);
-}
+Bead::Bead(const ComplexPath& path, const BeadDef& def) : Bead(static_cast<const Path&>(path), def) {}
 
 }  // namespace grape

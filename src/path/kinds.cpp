@@ -382,7 +382,7 @@ ComplexNode::ComplexNode(std::vector<Path> parts_in, std::vector<double> cues_in
         const double end = i + 1 < parts.size() ? cues[i + 1] : 1.0;
         // An empty span is skipped; so is one too thin for 1/width (adjacent doubles).
         if (!(end > start) || !std::isfinite(1.0 / (end - start))) continue;
-        const PathNode* node = &parts[i].node();
+        const PathNode* node = &NodeAccess::node(parts[i]);
         pieces_.push_back(Piece{node, start, end - start, 1.0 / (end - start), s});
         starts_.push_back(start);
         s += node->length();

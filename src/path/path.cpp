@@ -86,7 +86,7 @@ std::vector<Vec2> pairs(const char* who, const char* name, std::span<const doubl
 template <class T>
 const T& underlying(const detail::PathNode& node) noexcept {
     if (node.kind() == PathKind::reparametrized) {
-        return static_cast<const T&>(static_cast<const detail::ReparametrizedNode&>(node).source().node());
+        return static_cast<const T&>(detail::NodeAccess::node(static_cast<const detail::ReparametrizedNode&>(node).source()));
     }
     return static_cast<const T&>(node);
 }
@@ -290,7 +290,7 @@ QuadraticBezierPath::QuadraticBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, bool reparam
           return make_node<detail::QuadraticNode>(PathKind::quadratic_bezier, p0, c1, c2,
                                                   std::array<Vec2, 3>{p0, p1, p2}, 1.0);
       }()) {
-    if (reparametrize) node_ = make_node<detail::ReparametrizedNode>(detail::PathAccess::wrap(node_));
+    if (reparametrize) node_ = make_node<detail::ReparametrizedNode>(detail::NodeAccess::wrap(node_));
 }
 Vec2 QuadraticBezierPath::control(std::size_t i) const noexcept {
     return underlying<detail::QuadraticNode>(*node_).inputs[std::min<std::size_t>(i, 2)];
@@ -307,7 +307,7 @@ CubicBezierPath::CubicBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, bool repara
                             {p0, 3.0 * (p1 - p0), 3.0 * (p2 - 2.0 * p1 + p0), p3 - p0 + 3.0 * (p1 - p2)});
           return make_node<detail::CubicBezierNode>(p0, p1, p2, p3);
       }()) {
-    if (reparametrize) node_ = make_node<detail::ReparametrizedNode>(detail::PathAccess::wrap(node_));
+    if (reparametrize) node_ = make_node<detail::ReparametrizedNode>(detail::NodeAccess::wrap(node_));
 }
 Vec2 CubicBezierPath::control(std::size_t i) const noexcept {
     return underlying<detail::CubicBezierNode>(*node_).p[std::min<std::size_t>(i, 3)];

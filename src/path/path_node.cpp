@@ -228,7 +228,7 @@ void CubicBezierNode::interior_breaks(std::vector<double>& out) const {
 // --- ReparametrizedNode -------------------------------------------------------------------
 
 ReparametrizedNode::ReparametrizedNode(Path source)
-    : PathNode(PathKind::reparametrized), source_(std::move(source)), source_node_(&source_.node()) {
+    : PathNode(PathKind::reparametrized), source_(std::move(source)), source_node_(&NodeAccess::node(source_)) {
     build();
 }
 

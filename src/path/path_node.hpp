@@ -1,12 +1,11 @@
-// grape — the shape behind a Path (private to the library, shared by the modules that
-// evaluate paths in bulk: anim's hot loop, dynamics, render).
+// grape — the shape behind a Path (private to the path module; other modules read paths
+// through describe() in path.hpp, or through kernel.hpp for bulk evaluation).
 //
 // A PathNode is immutable once `finish()` has run (make_node does it): it evaluates a
 // point and its first two derivatives for u in [0, 1] and caches its length, bounds and the
 // u where it may be non-smooth. The Path handle adds the end-tangent extension outside
-// [0, 1]. The node types that anim special-cases (LinearNode, CubicBezierNode,
-// ReparametrizedNode) are declared here with their fields and inline evaluation, so a
-// caller that knows the kind can evaluate without a virtual call.
+// [0, 1]. LinearNode, CubicBezierNode and ReparametrizedNode are declared here with their
+// fields and inline evaluation; kernel.cpp copies what bulk evaluators need from them.
 #pragma once
 
 #include <grape/path.hpp>
@@ -90,12 +89,17 @@ private:
     std::vector<double> cumulative_;  // arc length at each break
 };
 
-/// The Path handle's private side, for the library's own modules.
-struct PathAccess {
+/// The Path handle's node, for the path module's own sources. Path keeps its node
+/// protected; a class derived from it may name the member, so the public header needs no
+/// friend for this.
+struct NodeAccess : Path {
+    /// The node behind any Path.
+    static const PathNode& node(const Path& path) noexcept { return *(path.*(&NodeAccess::node_)); }
     /// A Path sharing `node`.
-    static Path wrap(std::shared_ptr<const PathNode> node) noexcept { return Path(std::move(node)); }
-    /// The shared pointer behind a Path (to keep a node alive beside raw pointers to it).
-    static const std::shared_ptr<const PathNode>& shared(const Path& path) noexcept { return path.node_; }
+    static Path wrap(std::shared_ptr<const PathNode> node) noexcept { return NodeAccess(std::move(node)); }
+
+private:
+    explicit NodeAccess(std::shared_ptr<const PathNode> node) noexcept : Path(std::move(node)) {}
 };
 
 /// Constructs a node and fills its caches.
@@ -201,8 +205,6 @@ public:
 
     /// The path this one reparametrizes.
     const Path& source() const noexcept { return source_; }
-    /// The table (for tests and benchmarks).
-    const std::vector<Span>& spans() const noexcept { return spans_; }
 
 protected:
     bool closed_form_length() const noexcept override { return true; }

@@ -5,7 +5,6 @@
 // and piecewise-cubic splines segment by segment from four points per segment (a cubic is
 // fixed by four of its points). Everything else is flattened by Path::flatten.
 #include "cairo_util.hpp"
-#include "path_access.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -120,6 +119,14 @@ void add_arc(cairo_t* cr, const Path& path, double tolerance) {
     cairo_set_matrix(cr, &saved);
 }
 
+// The segment count (points − 1) of a spline; 0 for other kinds.
+std::size_t spline_segments(const PathSpec& spec) {
+    return std::visit([](const auto& s) -> std::size_t {
+        if constexpr (requires { s.points; }) return s.points.empty() ? 0 : s.points.size() - 1;
+        else return 0;
+    }, spec);
+}
+
 void add_path_range(cairo_t* cr, const Path& path, double tolerance) {
     switch (path.kind()) {
         case PathKind::linear: {
@@ -149,7 +156,7 @@ void add_path_range(cairo_t* cr, const Path& path, double tolerance) {
         case PathKind::linear_spline:
         case PathKind::hermite_spline:
         case PathKind::catmull_rom_spline: {
-            const std::size_t segments = spline_segments(path);
+            const std::size_t segments = spline_segments(describe(path));
             if (segments == 0) break;
             begin_at(cr, path.point(0.0), tolerance);
             for (std::size_t i = 0; i < segments; ++i) {
@@ -161,7 +168,7 @@ void add_path_range(cairo_t* cr, const Path& path, double tolerance) {
             return;
         }
         case PathKind::complex: {
-            const auto view = complex_view(path);
+            const auto view = path_cast<ComplexSpec>(path);
             if (!view) break;
             for (std::size_t i = 0; i < view->parts.size(); ++i) {
                 const double end = i + 1 < view->cues.size() ? view->cues[i + 1] : 1.0;
@@ -172,8 +179,8 @@ void add_path_range(cairo_t* cr, const Path& path, double tolerance) {
         }
         case PathKind::reparametrized: {
             // The same shape as its source, so the source's exact curves draw it.
-            if (const Path* source = reparametrized_source(path)) {
-                add_path_range(cr, *source, tolerance);
+            if (const auto reparametrized = path_cast<ReparametrizedSpec>(path)) {
+                add_path_range(cr, reparametrized->source, tolerance);
                 return;
             }
             break;
@@ -199,7 +206,7 @@ namespace {
 // Cue positions (in u of the whole) of a complex path and of complex paths nested in it.
 void collect_cues(const Path& path, double u0, double u1, std::vector<double>& out) {
     if (path.kind() != PathKind::complex) return;
-    const auto view = detail::complex_view(path);
+    const auto view = path_cast<ComplexSpec>(path);
     if (!view) return;
     for (std::size_t i = 0; i < view->parts.size(); ++i) {
         const double a = view->cues[i];

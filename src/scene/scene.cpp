@@ -7,8 +7,6 @@
 #include "atomic_file.hpp"
 
 #include "json_pointer.hpp"
-#include "path_node.hpp"
-#include "kinds.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -288,119 +286,71 @@ ordered points_json(std::span<const Vec2> points) {
     return a;
 }
 
-template <class T>
-const T& node_as(const detail::PathNode& node) {
-    return dynamic_cast<const T&>(node);
-}
+ordered path_json(const Path& path);
 
-ordered path_json(const Path& path) {
-    using namespace detail;
-    const PathNode& node = path.node();
-    ordered j;
-    switch (node.kind()) {
-        case PathKind::linear: {
-            const auto& n = node_as<LinearNode>(node);
-            j["kind"] = "linear";
-            j["start"] = point_json(n.a);
-            j["end"] = point_json(n.b);
-            return j;
-        }
-        case PathKind::circle:
-        case PathKind::elliptical_arc: {
-            const auto& n = node_as<ArcNode>(node);
-            const bool circle = node.kind() == PathKind::circle;
-            j["kind"] = circle ? "circle" : "elliptical_arc";
-            j["centre"] = point_json(n.centre);
-            if (circle) {
-                j["radius"] = n.rx;
-            } else {
-                j["rx"] = n.rx;
-                j["ry"] = n.ry;
-                j["rotation"] = n.rotation;
-            }
-            j["start_angle"] = n.a0;
-            j["end_angle"] = n.a1;
-            return j;
-        }
-        case PathKind::spiral: {
-            const auto& n = node_as<SpiralNode>(node);
-            j["kind"] = "spiral";
-            j["centre"] = point_json(n.centre);
-            j["start_radius"] = n.r0;
-            j["end_radius"] = n.r1;
-            j["start_angle"] = n.a0;
-            j["end_angle"] = n.a1;
-            return j;
-        }
-        case PathKind::sine_wave: {
-            const auto& n = node_as<SineWaveNode>(node);
-            j["kind"] = "sine_wave";
-            j["start"] = point_json(n.a);
-            j["end"] = point_json(n.b);
-            j["frequency"] = n.frequency;
-            j["amplitude"] = n.amplitude;
-            return j;
-        }
-        case PathKind::quadratic_bezier: {
-            const auto& n = node_as<QuadraticNode>(node);
-            j["kind"] = "quadratic_bezier";
-            j["points"] = points_json(n.inputs);
-            return j;
-        }
-        case PathKind::physics: {
-            const auto& n = node_as<QuadraticNode>(node);
-            j["kind"] = "physics";
-            j["position"] = point_json(n.inputs[0]);
-            j["velocity"] = point_json(n.inputs[1]);
-            j["acceleration"] = point_json(n.inputs[2]);
-            j["seconds"] = n.seconds;
-            return j;
-        }
-        case PathKind::cubic_bezier: {
-            const auto& n = node_as<CubicBezierNode>(node);
-            j["kind"] = "cubic_bezier";
-            j["points"] = points_json(n.p);
-            return j;
-        }
-        case PathKind::linear_spline:
-        case PathKind::cosine_spline: {
-            const auto& n = node_as<PolylineNode>(node);
-            j["kind"] = node.kind() == PathKind::linear_spline ? "linear_spline" : "cosine_spline";
-            j["points"] = points_json(n.points);
-            return j;
-        }
-        case PathKind::hermite_spline: {
-            const auto& n = node_as<CubicSplineNode>(node);
-            j["kind"] = "hermite_spline";
-            j["points"] = points_json(n.points);
-            j["tangents"] = points_json(n.tangents);
-            return j;
-        }
-        case PathKind::catmull_rom_spline: {
-            const auto& n = node_as<CubicSplineNode>(node);
-            j["kind"] = "catmull_rom_spline";
-            j["points"] = points_json(n.points);
-            j["type"] = n.type == CatmullRom::uniform ? "uniform" : n.type == CatmullRom::centripetal ? "centripetal" : "chordal";
-            return j;
-        }
-        case PathKind::complex: {
-            const auto& n = node_as<ComplexNode>(node);
-            j["kind"] = "complex";
-            ordered parts = ordered::array();
-            for (const Path& p : n.parts) parts.push_back(path_json(p));
-            j["parts"] = std::move(parts);
-            j["cues"] = n.cues;
-            return j;
-        }
-        case PathKind::reparametrized: {
-            const auto& n = node_as<ReparametrizedNode>(node);
-            j = path_json(n.source());
-            j["reparametrize"] = true;
-            return j;
-        }
+// One JSON object per spec; field names as the reader expects them.
+struct SpecJson {
+    ordered operator()(const LinearSpec& s) const {
+        return {{"kind", "linear"}, {"start", point_json(s.start)}, {"end", point_json(s.end)}};
     }
-    throw Error("scene: cannot save a path of kind " + std::string(to_string(node.kind())));
-}
+    ordered operator()(const CircleSpec& s) const {
+        return {{"kind", "circle"}, {"centre", point_json(s.centre)}, {"radius", s.radius},
+                {"start_angle", s.start_angle}, {"end_angle", s.end_angle}};
+    }
+    ordered operator()(const EllipticalArcSpec& s) const {
+        return {{"kind", "elliptical_arc"}, {"centre", point_json(s.centre)}, {"rx", s.rx}, {"ry", s.ry},
+                {"rotation", s.rotation}, {"start_angle", s.start_angle}, {"end_angle", s.end_angle}};
+    }
+    ordered operator()(const SpiralSpec& s) const {
+        return {{"kind", "spiral"}, {"centre", point_json(s.centre)}, {"start_radius", s.start_radius},
+                {"end_radius", s.end_radius}, {"start_angle", s.start_angle}, {"end_angle", s.end_angle}};
+    }
+    ordered operator()(const SineWaveSpec& s) const {
+        return {{"kind", "sine_wave"}, {"start", point_json(s.start)}, {"end", point_json(s.end)},
+                {"frequency", s.frequency}, {"amplitude", s.amplitude}};
+    }
+    ordered operator()(const QuadraticBezierSpec& s) const {
+        return {{"kind", "quadratic_bezier"}, {"points", points_json(s.control)}};
+    }
+    ordered operator()(const CubicBezierSpec& s) const {
+        return {{"kind", "cubic_bezier"}, {"points", points_json(s.control)}};
+    }
+    ordered operator()(const LinearSplineSpec& s) const {
+        return {{"kind", "linear_spline"}, {"points", points_json(s.points)}};
+    }
+    ordered operator()(const CosineSplineSpec& s) const {
+        return {{"kind", "cosine_spline"}, {"points", points_json(s.points)}};
+    }
+    ordered operator()(const HermiteSplineSpec& s) const {
+        return {{"kind", "hermite_spline"}, {"points", points_json(s.points)}, {"tangents", points_json(s.tangents)}};
+    }
+    ordered operator()(const CatmullRomSplineSpec& s) const {
+        const char* type = s.type == CatmullRom::uniform       ? "uniform"
+                           : s.type == CatmullRom::centripetal ? "centripetal"
+                                                               : "chordal";
+        return {{"kind", "catmull_rom_spline"}, {"points", points_json(s.points)}, {"type", type}};
+    }
+    ordered operator()(const PhysicsSpec& s) const {
+        return {{"kind", "physics"}, {"position", point_json(s.position)}, {"velocity", point_json(s.velocity)},
+                {"acceleration", point_json(s.acceleration)}, {"seconds", s.seconds}};
+    }
+    ordered operator()(const ComplexSpec& s) const {
+        ordered parts = ordered::array();
+        for (const Path& p : s.parts) parts.push_back(path_json(p));
+        ordered j;
+        j["kind"] = "complex";
+        j["parts"] = std::move(parts);
+        j["cues"] = s.cues;
+        return j;
+    }
+    ordered operator()(const ReparametrizedSpec& s) const {
+        ordered j = path_json(s.source);
+        j["reparametrize"] = true;
+        return j;
+    }
+};
+
+ordered path_json(const Path& path) { return std::visit(SpecJson{}, describe(path)); }
 
 // --------------------------------------------------------------------------- scene parts
 
@@ -755,32 +705,16 @@ json parse_text(std::string_view text, const std::string& where) {
 
 // --------------------------------------------------------------------------------- public
 
-double SceneAnimation::progress(double t) const noexcept {
-    double play = 0.0;
-    double tau = 0.0;
-    if (t > delay && duration > 0.0) {
-        const double local = (t - delay) / duration;
-        play = std::floor(local);
-        tau = local - play;
-        if (repeat >= 0 && play > static_cast<double>(repeat)) {
-            play = static_cast<double>(repeat);
-            tau = 1.0;
-        } else if (tau == 0.0 && play > 0.0) {
-            // Exactly at the end of a play: show that play's end, not the next one's start.
-            play -= 1.0;
-            tau = 1.0;
-        }
-    }
-    const bool odd = std::fmod(play, 2.0) == 1.0;
-    const bool backwards = reversed != (yoyo && odd);
-    // Backwards is the forward play run back in time, as the anim engine plays it.
-    return curve(backwards ? 1.0 - tau : tau);
+AnimationDef SceneAnimation::def() const noexcept {
+    return {.curve = curve, .delay = delay, .repeat = repeat, .reversed = reversed, .yoyo = yoyo};
 }
 
-double SceneAnimation::end_time() const noexcept {
-    if (repeat < 0) return std::numeric_limits<double>::infinity();
-    return delay + duration * (static_cast<double>(repeat) + 1.0);
+double SceneAnimation::progress(double t) const noexcept {
+    if (!(duration > 0.0)) return curve(reversed ? 1.0 : 0.0);  // not playable: its start
+    return progress_at(def(), duration, t);
 }
+
+double SceneAnimation::end_time() const noexcept { return grape::end_time(def(), duration); }
 
 const NamedPath* Scene::find_path(std::string_view name) const noexcept {
     for (const NamedPath& p : paths)

@@ -1,0 +1,252 @@
+// The timing model (play_at, progress_at, end_time) against the engine that plays by it, and
+// the engine's limits: timings a double cannot hold are refused at creation, non-finite
+// seeks are ignored, one tick's loop events are bounded, a throwing completion handler
+// still completes its animation.
+#include <grape/anim.hpp>
+#include <grape/error.hpp>
+
+#include "error_text.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using grape::Animation;
+using grape::AnimationDef;
+using grape::Engine;
+using grape::testing::expect_error;
+
+namespace {
+
+struct Point {
+    double x = -999.0;  // sentinel: "never written"
+    double y = -999.0;
+};
+
+const grape::LinearPath unit_line({0, 0}, {1, 0});  // x is the progress u
+
+// tick ≡ seek ≡ progress_at for random timings (delay, repeat, yoyo, reversed, time scale)
+// and every curve: three computations of the same state.
+TEST(TimingModel, TickSeekAndProgressAtAgreeForEveryCurve) {
+    std::vector<grape::Curve> curves;
+    for (const auto name : grape::curve_names()) curves.push_back(grape::parse_curve(name));
+    curves.push_back(grape::parse_curve("back-out(2.5)"));
+    curves.push_back(grape::parse_curve("elastic-in(1.2,0.4)"));
+    curves.push_back(grape::parse_curve("cubic-bezier(0.25,0.1,0.25,1)"));
+    curves.push_back(grape::parse_curve("monotone(0,0,0.5,0.8,1,1)"));
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (std::size_t round = 0; round < 3 * curves.size(); ++round) {
+        const AnimationDef def{.curve = curves[round % curves.size()],
+                               .delay = unit(rng),
+                               .repeat = static_cast<int>(rng() % 4) - 1,
+                               .reversed = rng() % 2 == 0,
+                               .yoyo = rng() % 2 == 0,
+                               .time_scale = 0.5 + unit(rng)};
+        const double duration = 0.3 + 2.0 * unit(rng);
+        Engine ticked, sought;
+        Animation a = ticked.create_animation(unit_line, duration, def);
+        Animation b = sought.create_animation(unit_line, duration, def);
+        const double dt = 1.0 / 64.0;  // exact in binary
+        for (int k = 1; k <= 64 * 6; ++k) {
+            ticked.tick(dt);
+            const double t = k * dt;
+            const double expected = grape::progress_at(def, duration, t);
+            // The engine adds dt·rate k ≤ 384 times to a phase of at most ~25 plays, progress_at
+            // multiplies once: ≤ 384 ulps of 25 ≈ 2e-12 of phase, times a curve slope ≤ ~20
+            // (elastic): 4e-11.
+            if (a.alive()) {
+                EXPECT_NEAR(a.progress(), expected, 1e-10) << to_string(def.curve) << " t = " << t;
+            }
+            b.seek(t * def.time_scale - def.delay);
+            EXPECT_NEAR(b.progress(), expected, 1e-10) << to_string(def.curve) << " t = " << t;  // stays alive: never ticked
+            if (!a.alive()) {
+                // Completed: exactly at the end, and only once the model says the last play ended.
+                EXPECT_TRUE(grape::play_at(def, duration, t).finished) << " t = " << t;
+                EXPECT_LE(grape::end_time(def, duration), t + 1e-9);
+                break;
+            }
+        }
+    }
+}
+
+TEST(TimingModel, PlaysSnapAndDirections) {
+    using grape::play_at_position;
+    // Within play_snap of a play's end counts as the next play; the last play's end is final.
+    auto s = play_at_position(1.0 - 1e-10, 3, false, true);
+    EXPECT_EQ(s.play, 1.0);
+    EXPECT_TRUE(s.backward);  // yoyo: the second play runs back
+    EXPECT_EQ(s.phase, 0.0);
+    s = play_at_position(3.0 - 1e-10, 3, true, false);
+    EXPECT_TRUE(s.finished);
+    EXPECT_EQ(s.play, 2.0);
+    EXPECT_EQ(s.phase, 1.0);
+    EXPECT_TRUE(s.backward);  // reversed, no yoyo: every play backwards
+    s = play_at_position(-0.25, 0, false, false);
+    EXPECT_EQ(s.phase, -0.25);  // waiting
+    EXPECT_EQ(s.play, 0.0);
+    // Beyond 2⁵³ plays no fraction is left; +inf is a play's start, not NaN.
+    s = play_at_position(std::ldexp(1.0, 60) + std::ldexp(1.0, 9), 0, false, true);
+    EXPECT_EQ(s.phase, 0.0);
+    EXPECT_FALSE(s.backward);  // an even count
+    s = play_at_position(INFINITY, 0, false, true);
+    EXPECT_EQ(s.phase, 0.0);
+    EXPECT_FALSE(s.finished);
+    s = play_at_position(INFINITY, 2, false, false);
+    EXPECT_TRUE(s.finished);
+    EXPECT_EQ(grape::end_time({.delay = 1, .repeat = 2, .time_scale = 2}, 3), (1 + 3 * 3) / 2.0);
+    EXPECT_EQ(grape::end_time({.repeat = -1}, 3), INFINITY);
+}
+
+TEST(EngineLimits, TimingsThatOverflowAreRefusedNamingTheArgument) {
+    Engine engine;
+    Point p;
+    // 1/duration overflows: the record's plays per second would be inf, phases NaN.
+    expect_error([&] { engine.create_2d_animation(p, unit_line, 1e-310); }, {"duration", "overflows", "1e-310"});
+    expect_error([&] { engine.create_animation(unit_line, 1e-10, {.time_scale = 1e300}); },
+                 {"create_animation", "time_scale / duration overflows"});
+    // A huge delay in plays of a tiny duration: the waiting phase would be −inf.
+    expect_error([&] { engine.create_2d_animation(p, unit_line, 1e-10, {.delay = 1e300}); },
+                 {"delay / duration overflows", "1e+300"});
+    expect_error([&] { engine.create_2d_animation(p, unit_line, 1e308, {.delay = 1e308, .repeat = 1}); },
+                 {"delay + duration · (repeat + 1) overflows"});
+    EXPECT_EQ(engine.size(), 0u);
+    EXPECT_EQ(p.x, -999.0);  // nothing written
+    // The smallest durations that are still fine.
+    engine.create_2d_animation(p, unit_line, 1e-300, {.repeat = -1});
+    EXPECT_EQ(engine.size(), 1u);
+}
+
+TEST(EngineLimits, NonFiniteSeeksAreIgnored) {
+    Engine engine;
+    Point p;
+    Animation a = engine.create_2d_animation(p, unit_line, 2.0, {.repeat = -1});
+    engine.tick(0.5);
+    const double x = p.x;
+    EXPECT_EQ(x, 0.25);
+    for (const double t : {INFINITY, -INFINITY, NAN}) {
+        a.seek(t);
+        EXPECT_EQ(p.x, x) << t;
+        EXPECT_EQ(a.progress(), 0.25) << t;
+        EXPECT_EQ(a.repetition(), 0) << t;
+    }
+    // A finite seek whose position in plays overflows lands at a play's start, not NaN.
+    Animation tiny = engine.create_2d_animation(p, unit_line, 1e-300, {.repeat = -1});
+    tiny.seek(1e300);
+    EXPECT_EQ(p.x, 0.0);
+    EXPECT_EQ(tiny.progress(), 0.0);
+}
+
+// One tick of 1e4 s on an endless 1e-6 s animation starts 1e10 plays: one loop event with the
+// skipped count, and exactly the state the timing model gives.
+TEST(EngineLimits, OneTickDeliversBoundedLoopEventsAndTheExactState) {
+    Engine engine;
+    Point p;
+    const double duration = 1e-6;
+    Animation a = engine.create_2d_animation(p, unit_line, duration, {.repeat = -1, .yoyo = true});
+    int calls = 0;
+    int last_play = 0;
+    std::uint64_t skipped = 0;
+    a.on_loop([&](int play, std::uint64_t s) {
+        last_play = play;
+        skipped = s;
+        if (++calls > grape::max_loop_events) a.kill();  // an unbounded engine stops here
+    });
+    // The one-argument handler gets the same single event.
+    Point q;
+    Animation b = engine.create_2d_animation(q, unit_line, duration, {.repeat = -1});
+    int plain_calls = 0;
+    b.on_loop([&](int) {
+        if (++plain_calls > grape::max_loop_events) b.kill();
+    });
+    const auto start = std::chrono::steady_clock::now();
+    engine.tick(1e4);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(calls, 1);
+    EXPECT_EQ(plain_calls, 1);
+    EXPECT_TRUE(b.alive());
+    EXPECT_LT(seconds, 1.0);  // a handful of operations; the unbounded engine took minutes
+    const double position = 1e4 * (1.0 / duration);  // the engine's phase arithmetic
+    const double crossed = std::floor(position + grape::play_snap);
+    EXPECT_EQ(last_play, INT32_MAX);  // play numbers saturate
+    EXPECT_EQ(skipped, static_cast<std::uint64_t>(crossed) - 1);
+    const grape::PlayState s = grape::play_at_position(position, 0, false, true);
+    EXPECT_EQ(a.progress(), s.backward ? 1.0 - s.phase : s.phase);
+    EXPECT_EQ(a.repetition(), static_cast<int>(std::fmod(crossed, 4294967296.0)));
+    EXPECT_EQ(p.x, a.progress());
+    // The next frame goes on from there as usual.
+    calls = 0;
+    engine.tick(0.25 * duration);
+    EXPECT_EQ(calls, 0);
+    EXPECT_NEAR(p.x, s.backward ? 0.75 - s.phase : s.phase + 0.25, 1e-6);  // phase rounding of 1e10 plays
+}
+
+TEST(EngineLimits, UpToMaxLoopEventsEachPlayHasItsOwnEvent) {
+    for (const int plays : {grape::max_loop_events, grape::max_loop_events + 1}) {
+        Engine engine;
+        std::vector<std::pair<int, std::uint64_t>> events;
+        Animation a = engine.create_animation(unit_line, 1.0, {.repeat = -1});
+        a.on_loop([&](int play, std::uint64_t skipped) { events.emplace_back(play, skipped); });
+        engine.tick(plays + 0.5);
+        if (plays <= grape::max_loop_events) {
+            ASSERT_EQ(events.size(), static_cast<std::size_t>(plays));
+            for (int k = 0; k < plays; ++k) EXPECT_EQ(events[k], (std::pair<int, std::uint64_t>{k + 1, 0}));
+        } else {
+            ASSERT_EQ(events.size(), 1u);
+            EXPECT_EQ(events[0], (std::pair<int, std::uint64_t>{plays, plays - 1}));
+        }
+        EXPECT_EQ(a.repetition(), plays);
+        EXPECT_EQ(a.progress(), 0.5);
+    }
+}
+
+// A tick whose phase overflows (infinitely many plays) lands on a play's start: no NaN, no
+// out-of-range conversion (run under -fsanitize=float-cast-overflow).
+TEST(EngineLimits, ATickAcrossInfinitelyManyPlaysStaysFinite) {
+    Engine engine;
+    Point p;
+    Animation a = engine.create_2d_animation(p, unit_line, 1e-300, {.repeat = -1, .yoyo = true});
+    std::uint64_t skipped = 0;
+    int calls = 0;
+    a.on_loop([&](int, std::uint64_t s) {
+        skipped = s;
+        ++calls;
+    });
+    engine.tick(1e300);  // 1e600 plays
+    EXPECT_EQ(calls, 1);
+    EXPECT_EQ(skipped, UINT64_MAX);
+    EXPECT_EQ(p.x, 0.0);
+    EXPECT_EQ(a.progress(), 0.0);
+    EXPECT_TRUE(a.alive());
+    Animation finite = engine.create_2d_animation(p, unit_line, 1e-300, {.repeat = 3});
+    engine.tick(1e300);
+    EXPECT_FALSE(finite.alive());
+    EXPECT_EQ(p.x, 1.0);  // completed at its end
+}
+
+TEST(EngineLimits, AThrowingCompletionHandlerStillCompletes) {
+    Engine engine;
+    Point p;
+    int completes = 0;
+    Animation a = engine.create_2d_animation(p, unit_line, 1.0);
+    a.on_complete([&] {
+        ++completes;
+        throw std::runtime_error("handler failed");
+    });
+    EXPECT_THROW(engine.tick(2.0), std::runtime_error);
+    EXPECT_EQ(completes, 1);
+    EXPECT_FALSE(a.alive());
+    EXPECT_EQ(engine.size(), 0u);
+    EXPECT_EQ(p.x, 1.0);
+    EXPECT_NO_THROW(engine.tick(1.0));  // gone: no second completion
+    EXPECT_EQ(completes, 1);
+}
+
+}  // namespace
