@@ -6,7 +6,7 @@
 #include <grape/path.hpp>
 #include <grape/path_query.hpp>
 
-#include "../src/path/path_node.hpp"
+#include "path/kernel.hpp"
 #include "seed_paths.hpp"
 
 #include "error_text.hpp"
@@ -99,7 +99,7 @@ double tolerance(const Path& p) { return 1e-12 * extent(p); }
 // end where complex parts do not meet is its left limit), then golden-section search around
 // the best few sampled minima, on point() alone.
 ClosestPoint brute_force(const Path& p, Vec2 q, double lo = 0.0, double hi = 1.0, int samples = 4000) {
-    const auto& br = p.node().breaks();
+    const auto& br = grape::detail::smooth_breaks(p);
     std::vector<double> us;
     const int per_piece = std::max(48, samples / static_cast<int>(br.size() - 1));
     for (std::size_t i = 0; i + 1 < br.size(); ++i) {
@@ -398,7 +398,7 @@ TEST(Frame, ConsistentWithHeadingOnEveryKind) {
     // 1e-5 of the turning rate scale for h = 1e-5 of a piece.
     for (const auto& [name, path] : query_paths()) {
         SCOPED_TRACE(name);
-        const auto& br = path.node().breaks();
+        const auto& br = grape::detail::smooth_breaks(path);
         for (std::size_t i = 0; i + 1 < br.size(); ++i) {
             const double a = br[i], b = br[i + 1];
             const double h = 1e-5 * (b - a);
@@ -443,8 +443,9 @@ bool meets_unsliceable(const Path& p, double u0, double u1) {
         case grape::PathKind::sine_wave:
         case grape::PathKind::cosine_spline: return true;
         case grape::PathKind::reparametrized: {
-            const auto& r = static_cast<const grape::detail::ReparametrizedNode&>(p.node());
-            return meets_unsliceable(r.source(), r.source_u(u0), r.source_u(u1));
+            const auto r = grape::path_cast<grape::ReparametrizedSpec>(p);
+            return meets_unsliceable(r->source, grape::detail::source_parameter(p, u0),
+                                     grape::detail::source_parameter(p, u1));
         }
         case grape::PathKind::complex: {
             const grape::ComplexPath c = static_cast<const grape::ComplexPath&>(p);

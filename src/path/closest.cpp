@@ -216,7 +216,7 @@ double settle(Point point, double u, double lo, Vec2 target) noexcept {
 
 // The u of a reparametrized node whose source parameter is v (source_u is increasing).
 double reparametrized_u(const ReparametrizedNode& r, double v, double lo, double hi) noexcept {
-    const PathNode& src = r.source().node();
+    const PathNode& src = detail::NodeAccess::node(r.source());
     const double total = src.length();
     auto fd = [&](double u) noexcept {
         const double speed = length(src.d1(r.source_u(u)));
@@ -267,7 +267,7 @@ void search(const PathNode& node, double lo, double hi, Map map, Search& s) noex
             Search inner(s.q, s.tol, 1.0 / s.inv);
             inner.bound = std::min(s.bound, s.least);
             inner.budget = s.budget;
-            search(r.source().node(), r.source_u(lo), r.source_u(hi), Map{}, inner);
+            search(detail::NodeAccess::node(r.source()), r.source_u(lo), r.source_u(hi), Map{}, inner);
             s.budget = inner.budget;
             if (inner.d < infinity) {
                 const double u = settle([&r](double v) noexcept { return r.point(v); },
@@ -300,7 +300,7 @@ void search(const PathNode& node, double lo, double hi, Map map, Search& s) noex
 
 ClosestPoint nearest(const Path& path, Vec2 q, double lo, double hi, const double* from) noexcept {
     if (!is_finite(q)) return {lo, path.point(lo), infinity};
-    const PathNode& node = path.node();
+    const PathNode& node = detail::NodeAccess::node(path);
     const Bounds& box = node.bounds();
     const Vec2 size = box.size();
     const double extent = std::max(std::abs(size.x), std::abs(size.y));

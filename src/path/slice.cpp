@@ -87,7 +87,7 @@ Path cut_complex(const ComplexNode& c, double u0, double u1) {
 
 Path cut(const Path& path, double u0, double u1) {
     if (u0 == 0.0 && u1 == 1.0) return path;
-    const detail::PathNode& node = path.node();
+    const detail::PathNode& node = detail::NodeAccess::node(path);
     switch (node.kind()) {
         case PathKind::linear: return LinearPath(path.point(u0), path.point(u1));
         case PathKind::circle:
@@ -212,7 +212,7 @@ struct SvgWriter {
     }
 
     void path(const Path& p) {
-        const detail::PathNode& node = p.node();
+        const detail::PathNode& node = detail::NodeAccess::node(p);
         move_to(node.point(0.0));
         switch (node.kind()) {
             case PathKind::linear: command('L', {node.point(1.0)}); return;
