@@ -33,6 +33,9 @@ function(grape_module name)
   add_library(grape::${name} ALIAS grape_${name})
   set_target_properties(grape_${name} PROPERTIES EXPORT_NAME ${name} POSITION_INDEPENDENT_CODE ON
                         VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
+  # Installed shared libraries find each other next to themselves (render needs sprite, ...):
+  # a program's own RUNPATH does not apply to its libraries' dependencies.
+  set_target_properties(grape_${name} PROPERTIES INSTALL_RPATH "$ORIGIN")
   target_include_directories(grape_${name} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
     $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>

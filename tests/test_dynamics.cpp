@@ -20,8 +20,6 @@ namespace {
 using namespace grape;
 using namespace grape::scenes;
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
-
 #ifdef NDEBUG
 constexpr bool fast_build = true;
 #else
