@@ -8,6 +8,7 @@
 
 #include <emscripten/bind.h>
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -24,7 +25,7 @@ AnimationDef animation_def(const val& o) {
     }
     def.delay = number_or(o, "delay", def.delay, where);
     const double repeat = number_or(o, "repeat", def.repeat, where);
-    if (repeat != static_cast<double>(static_cast<int>(repeat)) || repeat < -1)
+    if (!(repeat >= -1 && repeat <= 2147483647.0) || repeat != std::floor(repeat))
         throw Error("animation options: 'repeat' must be an integer ≥ −1 (got " + detail::number_text(repeat) + ")");
     def.repeat = static_cast<int>(repeat);
     def.reversed = bool_or(o, "reversed", def.reversed);

@@ -5,6 +5,7 @@
 
 #include <emscripten/bind.h>
 
+#include <cmath>
 #include <string>
 
 namespace grape::web {
@@ -93,7 +94,7 @@ bool released(const KeyState& k, unsigned key) { return k.released_this_frame(ke
 BitVector mask(const KeyState& k, val keys) {
     BitVector m(k.key_count());
     for (double key : numbers(keys)) {
-        if (!(key >= 0.0) || key >= double(k.key_count()) || key != double(unsigned(key)))
+        if (!(key >= 0.0) || key >= double(k.key_count()) || key != std::floor(key))
             throw Error("KeyState.mask: key " + detail::number_text(key) + " is not a code below " + std::to_string(k.key_count()));
         m.set(unsigned(key));
     }

@@ -6,6 +6,7 @@
 
 #include <emscripten/bind.h>
 
+#include <cmath>
 #include <string>
 
 namespace grape::web {
@@ -33,7 +34,7 @@ SpritePlayer* make_player(unsigned frames, val o) {
         def.rate = number_or(o, "rate", def.rate, "SpritePlayer");
         if (has(o, "mode")) def.mode = mode_from_string(string_or(o, "mode", "", "SpritePlayer"));
         const double start = number_or(o, "startFrame", 0.0, "SpritePlayer");
-        if (!(start >= 0.0) || start != double(unsigned(start)))
+        if (!(start >= 0.0 && start <= 4294967295.0) || start != std::floor(start))
             throw Error("SpritePlayer: startFrame must be a whole number ≥ 0 (got " + detail::number_text(start) + ")");
         def.start_frame = unsigned(start);
         return new SpritePlayer(frames, def);
@@ -60,7 +61,7 @@ TileSheet* make_sheet(val o) {
     try {
         auto whole = [&](const char* name, int fallback) {
             const double v = number_or(o, name, fallback, "TileSheet");
-            if (v != double(int(v))) throw Error(std::string("TileSheet: '") + name + "' must be a whole number");
+            if (!(v >= -2147483648.0 && v <= 2147483647.0) || v != std::floor(v)) throw Error(std::string("TileSheet: '") + name + "' must be a whole number");
             return int(v);
         };
         return new TileSheet(TileSheetDef{.width = whole("width", 0),
