@@ -5,18 +5,27 @@
 namespace grape {
 
 namespace {
+// ü = (x′·F/m − (x′·x″)u̇²)/|x′|² divides by the speed: a path of length 0 (SVG data that
+// draws nothing) has none anywhere.
+void require_length(const Path& path) {
+    if (!(path.length() > 0.0))
+        throw Error("Bead: the path has length 0 (it stands at one point), so there is nothing to slide along");
+}
+
 ParametricCurve curve_of(const Path& path) {
     return [path](double u) { return CurveFrame{path.point(u), path.d1(u), path.d2(u)}; };
 }
 }  // namespace
 
 Bead::Bead(const Path& path, const BeadDef& def) {
+    require_length(path);
     std::vector<Part> parts;
     parts.push_back({curve_of(path), 0.0, 1.0});
     init_parts(std::move(parts), def);
 }
 
 Bead::Bead(const ComplexPath& path, const BeadDef& def) {
+    require_length(path);
     std::vector<Part> parts;
     const auto sub = path.parts();
     const auto cues = path.cues();
