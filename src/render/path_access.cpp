@@ -3,6 +3,7 @@
 
 #include "kinds.hpp"
 #include "path_node.hpp"
+#include "svg_parser.hpp"
 
 namespace grape::detail {
 
@@ -22,6 +23,11 @@ std::size_t spline_segments(const Path& path) noexcept {
 const Path* reparametrized_source(const Path& path) noexcept {
     const auto* node = dynamic_cast<const ReparametrizedNode*>(&path.node());
     return node ? &node->source() : nullptr;
+}
+
+const std::vector<SvgSegment>* svg_commands(const Path& path) noexcept {
+    const auto* node = dynamic_cast<const SvgNode*>(&path.node());
+    return node ? &node->commands : nullptr;
 }
 
 }  // namespace grape::detail

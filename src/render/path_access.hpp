@@ -1,5 +1,6 @@
 // What render needs to know about a path beyond its public evaluation: the parts and cues
-// of a complex path, the segment count of a spline, the source of a reparametrized path.
+// of a complex path, the segment count of a spline, the source of a reparametrized path, the
+// commands of SVG data.
 // Kept in one place because it reads the path module's internals.
 #pragma once
 
@@ -8,6 +9,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace grape::detail {
 
@@ -23,5 +25,8 @@ std::optional<ComplexView> complex_view(const Path& path) noexcept;
 std::size_t spline_segments(const Path& path) noexcept;
 /// The path a reparametrized path was made from; nullptr otherwise.
 const Path* reparametrized_source(const Path& path) noexcept;
+struct SvgSegment;
+/// The commands of a path made from SVG data (moves, segments, closes); nullptr otherwise.
+const std::vector<SvgSegment>* svg_commands(const Path& path) noexcept;
 
 }  // namespace grape::detail
