@@ -1,7 +1,8 @@
 # grape_warnings(TARGET): the settings of every target grape builds from its own code.
 # Warnings are on for grape's code only (third-party headers come in as SYSTEM includes);
 # they are errors only with GRAPE_WERROR=ON (CI and scripts/ set it; a project that builds
-# grape as a dependency never gets -Werror). GRAPE_SANITIZE adds ASan + UBSan to these
+# grape as a dependency never gets -Werror). GRAPE_SANITIZE adds ASan + UBSan (with
+# float-cast-overflow) to these
 # targets alone, never to the flags of a project that includes grape.
 function(grape_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
@@ -9,7 +10,9 @@ function(grape_warnings target)
     set_property(TARGET ${target} PROPERTY COMPILE_WARNING_AS_ERROR ON)
   endif()
   if(GRAPE_SANITIZE)
-    set(flags -fsanitize=address,undefined -fno-sanitize-recover=all)
+    # float-cast-overflow: not part of -fsanitize=undefined, and out-of-range float-to-integer
+    # conversions are exactly the faults extreme times and lengths provoke.
+    set(flags -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all)
     target_compile_options(${target} PRIVATE ${flags} -fno-omit-frame-pointer)
     # PUBLIC: whatever links a sanitized static library must link the runtimes too.
     get_target_property(type ${target} TYPE)

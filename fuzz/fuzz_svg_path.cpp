@@ -23,10 +23,19 @@ bool is_nan(grape::Vec2 v) { return std::isnan(v.x) || std::isnan(v.y); }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
+    // SVG's error rule never throws grape::Error; its path is a valid one (checked below
+    // like the strict parse's), and its error names an offset inside the data.
+    const grape::SvgPathParse prefix = grape::parse_svg_path_prefix(text);
+    require(std::isfinite(prefix.path.length()) && prefix.path.length() >= 0.0);
+    require(grape::is_finite(prefix.path.point(0.5)));
+    if (prefix.error) require(prefix.error->offset <= size && prefix.error->message.starts_with("SVG path data: "));
     try {
         const grape::ComplexPath path = grape::parse_svg_path(text);
+        require(!prefix.error);
+        require(path.length() == prefix.path.length());
         const double length = path.length();
-        require(std::isfinite(length) && length > 0.0);
+        // Data that draws nothing (empty, movetos only) is valid: length 0 at its point.
+        require(std::isfinite(length) && length >= 0.0);
         const auto cues = path.cues();
         require(!cues.empty() && cues.front() == 0.0 && cues.size() == path.parts().size());
         for (std::size_t i = 1; i < cues.size(); ++i) require(cues[i - 1] <= cues[i] && cues[i] <= 1.0);

@@ -968,4 +968,86 @@ TEST(PathSpec, BeadOnAComplexPathIgnoresItsStaticType) {
     }
 }
 
+// --- degenerate starts and states that leave the finite range --------------------------------
+
+TEST(DegenerateConstraints, APendulumStartingAtItsAnchorIsRefused) {
+    // At its anchor the rod's gradient x − anchor is zero: no direction for the force, and
+    // under Baumgarte feedback (−ks·C with C = −½L²) the particle was flung to |y| ~ 1e152
+    // within 40 steps while every step reported ok.
+    ParticleSystem system;
+    const auto bob = system.add_particle({.position = {0, 0}});
+    system.add_gravity({0, 500});
+    expect_error([&] { system.add_anchor(bob, {0, 0}, 100); }, "add_anchor: particle 0 sits at the anchor");
+    const auto other = system.add_particle({.position = {0, 0}});
+    expect_error([&] { system.add_distance(bob, other, 10); }, "add_distance: particles 0 and 1 are at the same point");
+    // Moved onto its anchor later: the step refuses, naming the constraint, and changes nothing.
+    ParticleSystem moved;
+    const auto p = moved.add_particle({.position = {100, 0}});
+    moved.add_gravity({0, 500});
+    moved.add_anchor(p, {0, 0}, 100);
+    moved.set_position(p, {0, 0});
+    expect_error([&] { moved.step(1.0 / 60); }, "step: constraint 0 (anchor) has a zero gradient");
+    EXPECT_EQ(moved.position(p), (Vec2{0, 0}));
+    EXPECT_EQ(moved.time(), 0.0);
+}
+
+TEST(DegenerateConstraints, AParticleAtTheCentreOfAnImplicitCircleIsRefused) {
+    // C = x² + y² − 100²: ∇C = 2(x, y) vanishes at the centre (conjugate gradient flung the
+    // particle to 1e152 from there, reporting ok).
+    ParticleSystem system({.solver = {.method = LinearSolver::conjugate_gradient}});
+    const auto p = system.add_particle({.position = {0, 0}});
+    system.add_gravity({0, 500});
+    const auto circle = ImplicitCurve::from_function([](auto x, auto y) { return x * x + y * y - 10000.0; });
+    expect_error([&] { system.add_curve(p, circle); }, "add_curve: the curve's gradient is zero at particle 0");
+    // On the circle it runs, and stays on it (|C|/|∇C| small) and finite.
+    system.set_position(p, {100, 0});
+    system.add_curve(p, circle);
+    for (int i = 0; i < 40; ++i) EXPECT_EQ(system.step(1.0 / 60).status, SolveStatus::ok);
+    EXPECT_NEAR(grape::length(system.position(p)), 100.0, 1.0);  // Baumgarte drift, far below a flung 1e152
+}
+
+TEST(NonFiniteStates, ADenormalMassIsRefused) {
+    // 1/1e-310 = inf: every acceleration was inf·0 = NaN.
+    ParticleSystem system;
+    expect_error([&] { system.add_particle({.mass = 1e-310}); }, "add_particle: mass must be at least");
+    EXPECT_NO_THROW(system.add_particle({.mass = 1e-300}));
+}
+
+TEST(NonFiniteStates, Rk45StopsAtOnceAndTheStateStaysAsItWas) {
+    // A force that is NaN where the particle stands: before, rk45 rejected sub-steps until
+    // max_substeps (10⁵ evaluations for one step) and reported nothing.
+    for (const Integrator integrator : {Integrator::rk45, Integrator::rk4, Integrator::euler}) {
+        SCOPED_TRACE(to_string(integrator));
+        ParticleSystem system({.integrator = integrator});
+        const auto p = system.add_particle({.position = {1, 0}, .velocity = {1, 0}});
+        system.add_force([](const ForceContext& c) {
+            if (c.positions[0].x > 0.5) c.forces[0].x += std::numeric_limits<double>::quiet_NaN();
+        });
+        const StepReport report = system.step(0.01);
+        EXPECT_EQ(report.status, SolveStatus::non_finite);
+        EXPECT_LE(report.substeps + report.rejected, 1);  // one Dormand–Prince attempt at most
+        EXPECT_EQ(system.position(p), (Vec2{1, 0}));
+        EXPECT_EQ(system.velocity(p), (Vec2{1, 0}));
+        EXPECT_EQ(system.time(), 0.0);
+    }
+}
+
+TEST(NonFiniteStates, AStepThatOverflowsSaysSo) {
+    // An acceleration of 1e300 over dt = 1e10 leaves the doubles: the step is not taken.
+    ParticleSystem system({.integrator = Integrator::rk4});
+    const auto p = system.add_particle({.position = {1, 2}});
+    system.add_gravity({0, 1e300});
+    EXPECT_EQ(system.step(1e10).status, SolveStatus::non_finite);
+    EXPECT_EQ(system.position(p), (Vec2{1, 2}));
+    // A modest step still works.
+    EXPECT_EQ(system.step(1e-160).status, SolveStatus::ok);
+}
+
+TEST(DegenerateConstraints, ABeadNeedsAPathOfPositiveLength) {
+    // SVG data that draws nothing is a valid path of length 0; a bead's equation divides by
+    // |x′|², zero everywhere on it, so the bead is refused instead of producing NaN.
+    expect_error([] { Bead(parse_svg_path("M5 7"), {}); }, "Bead: the path has length 0");
+    expect_error([] { Bead(Path(parse_svg_path("M5 7")).reparametrized(), {}); }, "Bead: the path has length 0");
+}
+
 }  // namespace

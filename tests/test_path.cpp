@@ -819,4 +819,24 @@ TEST(Reparametrized, ExtremeScalesBuildInBoundedTime) {
     EXPECT_TRUE(grape::is_finite(b.point(0.5)));
 }
 
+TEST(Reparametrized, DenormalLengthsGiveTheRightPoint) {
+    // A segment of length L moves at constant speed already: point(u) = u·L exactly in
+    // exact arithmetic. At L = 3e-320 the table's spans underflowed to zero length and
+    // count/L overflowed (converted to size_t: undefined), so every u landed on the end.
+    // Denormals carry few digits: the tolerance is a few of their ulps (4.9e-324 each).
+    for (const double length : {1e-310, 3e-320, 1e-322}) {
+        SCOPED_TRACE(length);
+        const Path r = grape::LinearPath({0, 0}, {length, 0}).reparametrized();
+        for (const double u : {0.125, 0.25, 0.5, 0.75}) {
+            EXPECT_NEAR(r.point(u).x, u * length, 4e-324 + 1e-15 * length) << "u = " << u;
+            EXPECT_EQ(r.point(u).y, 0.0);
+        }
+    }
+    // A cubic of denormal size, against its own arc length at the same fraction.
+    const double l = 3e-320;
+    const grape::CubicBezierPath c({0, 0}, {l, l}, {2 * l, 0}, {3 * l, l});
+    const Path r = c.reparametrized();
+    EXPECT_NEAR(r.point(0.5).x, c.point(0.5).x, 0.01 * 3 * l);  // symmetric about u = ½
+}
+
 }  // namespace

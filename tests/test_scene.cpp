@@ -428,7 +428,14 @@ TEST(SceneErrors, NameThePointerAndTheReason) {
                  "/paths/0/path/cues/1", "cues must lie in [0, 1]");
     expect_error(R"({"paths": [{"name": "x", "path": {"kind": "complex", "parts": [)" + line + R"(], "cues": [0, 0.5]}}]})",
                  "/paths/0/path/cues", "one cue per part");
-    expect_error(R"({"paths": [{"name": "x", "path": {"kind": "svg", "data": "M 0 0 L 1 @"}}]})", "/paths/0/path", "SVG");
+    // A syntax error in SVG data is a warning of the scene (SVG's error rule, SceneSvg below);
+    // a single path read by path_from_json stays strict.
+    try {
+        (void)grape::path_from_json(R"({"kind": "svg", "data": "M 0 0 L 1 @"})");
+        ADD_FAILURE() << "accepted SVG data with a syntax error";
+    } catch (const grape::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("SVG path data: expected a number at offset 10"), std::string::npos) << e.what();
+    }
     expect_error(R"({"paths": [{"name": "a", "path": )" + line + R"(}, {"name": "a", "path": )" + line + "}]}",
                  "/paths/1/name", "duplicate name \"a\"");
     expect_error(R"({"curves": [{"name": "c", "curve": "nope"}]})", "/curves/0/curve", "nope");
@@ -625,5 +632,25 @@ TEST(SceneSimulation, ParabolaMatchesTheCatalogue) {
     EXPECT_LT(std::abs(grape::conic_value(conic, fed_back.positions()[0])), std::abs(grape::conic_value(conic, a)));
 }
 #endif
+
+TEST(SceneSvg, DataWithASyntaxErrorIsReadBySvgsErrorRuleWithAWarning) {
+    // Truncated data from a real file: the path before the `l` that lacks its arguments,
+    // 22 + 11·√2 long, and one warning naming the value and the offset.
+    const grape::Scene scene = grape::load_scene(
+        R"({"paths": [{"name": "cut", "path": {"kind": "svg", "data": "M 13,9 3,19 h 11 v -3 l 1,-1 v -8 l"}}]})");
+    ASSERT_EQ(scene.paths.size(), 1u);
+    EXPECT_NEAR(scene.paths[0].path.length(), 22.0 + 11.0 * std::sqrt(2.0), 1e-13);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_EQ(scene.warnings[0],
+              "scene: /paths/0/path/data: SVG path data: expected a number at offset 35, found the end of the data; "
+              "the path stops before it, as SVG draws it");
+    // Valid data, empty data and a moveto alone give no warning (length 0 is valid).
+    const grape::Scene clean = grape::load_scene(
+        R"({"paths": [{"name": "a", "path": {"kind": "svg", "data": "M0 0 L3 4"}},
+                      {"name": "b", "path": {"kind": "svg", "data": ""}},
+                      {"name": "c", "path": {"kind": "svg", "data": "M5 7"}}]})");
+    EXPECT_TRUE(clean.warnings.empty());
+    EXPECT_EQ(clean.paths[2].path.point(0.5), (grape::Vec2{5, 7}));
+}
 
 }  // namespace

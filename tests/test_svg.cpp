@@ -353,8 +353,6 @@ TEST(Svg, ExtremeMagnitudesGiveNoNaN) {
 // Errors: each names the offset and what was expected
 
 TEST(Svg, ErrorsNameTheOffsetAndTheReason) {
-    EXPECT_EQ(error_of(""), "SVG path data: is empty (expected a moveto, M or m)");
-    EXPECT_EQ(error_of(" \n\t"), "SVG path data: is empty (expected a moveto, M or m)");
     EXPECT_EQ(error_of("L1 1"), "SVG path data: expected a moveto (M or m) at offset 0, found 'L'");
     EXPECT_EQ(error_of("  10 10"), "SVG path data: expected a moveto (M or m) at offset 2, found '1'");
     EXPECT_EQ(error_of("M0 0 L3 @"), "SVG path data: expected a number at offset 8, found '@'");
@@ -374,8 +372,6 @@ TEST(Svg, ErrorsNameTheOffsetAndTheReason) {
     EXPECT_EQ(error_of("M0 0 C 1 1 2 2"), "SVG path data: expected a number at offset 14, found the end of the data");
     EXPECT_EQ(error_of("M1e309 0 L1 1"), "SVG path data: a number is too large at offset 1 (beyond the range of a double)");
     EXPECT_EQ(error_of("M1.5e308 0 l1.5e308 0"), "SVG path data: a coordinate is too large at offset 12 (beyond the range of a double)");
-    EXPECT_EQ(error_of("M0 0"), "SVG path data: draws nothing (no segment of non-zero length)");
-    EXPECT_EQ(error_of("M1 1 L1 1 Z m0 0 z"), "SVG path data: draws nothing (no segment of non-zero length)");
     // Each segment's length fits, their sum does not.
     EXPECT_EQ(error_of("M-1e308 0 L0 0 L1e308 0 L0 0"),
               "SVG path data: the path's length overflows a double (segment at offset 16)");
@@ -385,7 +381,7 @@ TEST(Svg, ErrorsNameTheOffsetAndTheReason) {
 
 TEST(Svg, ErrorsAreThrownForEveryTruncation) {
     // Cutting valid data anywhere either still parses or throws grape::Error: never anything
-    // else, and every message names an offset inside the data (or says it draws nothing).
+    // else, and every message names an offset inside the data.
     const std::string data = "M10,20 c5 5 10-5 15 0s10 10 15 0q5-5 10 0t10 0a5 3 20 1 0 10 0h5v5l-3 3z";
     for (std::size_t n = 0; n <= data.size(); ++n) {
         const std::string cut = data.substr(0, n);
@@ -553,3 +549,148 @@ TEST(Svg, CubicsTooLargeToEvaluateAreRefused) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Data that draws nothing is valid (SVG 2 §9.3.9: an empty path is no error; a moveto-only
+// path stands at its point)
+
+namespace {
+
+void expect_stands_at(const Path& path, Vec2 at) {
+    EXPECT_EQ(path.length(), 0.0);
+    for (double u : {0.0, 0.25, 0.5, 1.0}) {
+        EXPECT_EQ(path.point(u), at) << "u = " << u;
+        EXPECT_EQ(path.d1(u), (Vec2{})) << "u = " << u;
+    }
+    EXPECT_EQ(path.bounds().min, at);
+    EXPECT_EQ(path.bounds().max, at);
+}
+
+}  // namespace
+
+TEST(SvgNothingDrawn, EmptyAndMovetoOnlyDataStandAtTheirPoint) {
+    expect_stands_at(parse_svg_path(""), {0.0, 0.0});
+    expect_stands_at(parse_svg_path(" \n\t"), {0.0, 0.0});
+    expect_stands_at(parse_svg_path("M0 0"), {0.0, 0.0});
+    expect_stands_at(parse_svg_path("M5 7"), {5.0, 7.0});
+    expect_stands_at(parse_svg_path("m5 7 m1 1"), {5.0, 7.0});  // the first moveto
+    // Zero-length segments (real data from an icon theme): length 0 at the point.
+    expect_stands_at(parse_svg_path("M 180.66031,30.859082 L 180.66031,30.859082"), {180.66031, 30.859082});
+    expect_stands_at(parse_svg_path("M1 1 L1 1 Z m0 0 z"), {1.0, 1.0});
+    expect_stands_at(parse_svg_path("M2 3 C2 3 2 3 2 3 Q2 3 2 3 A5 5 0 0 1 2 3 h0 v0"), {2.0, 3.0});
+}
+
+TEST(SvgNothingDrawn, ReparametrizedStandsStillAndFlattensToThePoint) {
+    // Reparametrizing a path of length 0 gives the same point at every u and speed 0 (there
+    // is no length to spread u over); nothing divides by the length.
+    const Path still = parse_svg_path("M5 7").reparametrized();
+    for (double u : {0.0, 0.5, 1.0}) {
+        EXPECT_EQ(still.point(u), (Vec2{5.0, 7.0}));
+        EXPECT_EQ(still.d1(u), (Vec2{}));
+    }
+    EXPECT_EQ(still.u_at_length(1.0), 0.0);
+    const std::vector<Vec2> flat = parse_svg_path("M5 7").flatten(0.1);
+    ASSERT_EQ(flat.size(), 2u);
+    EXPECT_EQ(flat[0], (Vec2{5.0, 7.0}));
+    EXPECT_EQ(flat[1], (Vec2{5.0, 7.0}));
+}
+
+// ---------------------------------------------------------------------------------------------
+// SVG's error rule: draw up to the command holding the first error
+
+TEST(SvgErrorRule, PrefixUpToTheErrorWithItsOffset) {
+    // M 13,9 3,19 (√200) h 11 v -3 l 1,-1 (√2) v -8, then an `l` without arguments:
+    // 10√2 + 11 + 3 + √2 + 8 = 22 + 11√2 = 37.556349186104043 (exact to the last digit:
+    // 11·√2 = 15.556349186104045…).
+    const std::string data = "M 13,9 3,19 h 11 v -3 l 1,-1 v -8 l";
+    const grape::SvgPathParse parsed = grape::parse_svg_path_prefix(data);
+    EXPECT_NEAR(parsed.path.length(), 22.0 + 11.0 * std::sqrt(2.0), 4 * eps * 38.0);  // a few ulps of 37.6
+    EXPECT_EQ(parsed.path.point(1.0), (Vec2{15.0, 7.0}));  // (13, 9) → (3, 19) → (14, 19) → (14, 16) → (15, 15) → (15, 7)
+    ASSERT_TRUE(parsed.error.has_value());
+    EXPECT_EQ(parsed.error->offset, data.size());
+    EXPECT_EQ(parsed.error->message, "SVG path data: expected a number at offset 35, found the end of the data");
+    // Strict parsing throws the same message.
+    EXPECT_EQ(error_of(data), parsed.error->message);
+}
+
+TEST(SvgErrorRule, ValidDataHasNoErrorAndTheSamePath) {
+    const std::string data = "M10,20 c5 5 10-5 15 0s10 10 15 0q5-5 10 0t10 0a5 3 20 1 0 10 0h5v5l-3 3z";
+    const grape::SvgPathParse parsed = grape::parse_svg_path_prefix(data);
+    EXPECT_FALSE(parsed.error.has_value());
+    expect_same_points(parsed.path, parse_svg_path(data));
+}
+
+TEST(SvgErrorRule, EveryTruncationGivesTheLongestValidPrefix) {
+    // Cut anywhere, the error-rule path equals the strict parse of the data up to the last
+    // complete command: found independently by cutting further until the strict parse passes.
+    const std::string data = "M10,20 c5 5 10-5 15 0s10 10 15 0q5-5 10 0t10 0a5 3 20 1 0 10 0h5v5l-3 3z";
+    for (std::size_t n = 0; n <= data.size(); ++n) {
+        const std::string cut = data.substr(0, n);
+        SCOPED_TRACE(cut);
+        const grape::SvgPathParse parsed = grape::parse_svg_path_prefix(cut);
+        EXPECT_EQ(parsed.error.has_value(), !error_of(cut).empty());
+        std::size_t k = n;
+        while (!error_of(cut.substr(0, k)).empty()) --k;
+        // The valid prefix can only be shorter when the cut ends inside a number that is
+        // itself valid ("M10,2" reads (10, 2)); compare the lengths and the end point.
+        const ComplexPath reference = parse_svg_path(cut.substr(0, k));
+        if (!parsed.error) continue;
+        EXPECT_NEAR(parsed.path.length(), reference.length(), 1e-12 * (1.0 + reference.length()));
+        EXPECT_EQ(parsed.path.point(1.0), reference.point(1.0));
+    }
+}
+
+TEST(SvgErrorRule, ErrorsBeforeAnyDrawingGiveThePathAtTheOrigin) {
+    for (const char* data : {"L1 1", "M @", "M1e309 0 L1 1", "X"}) {
+        SCOPED_TRACE(data);
+        const grape::SvgPathParse parsed = grape::parse_svg_path_prefix(data);
+        ASSERT_TRUE(parsed.error.has_value());
+        EXPECT_EQ(parsed.error->message, error_of(data));
+        expect_stands_at(parsed.path, {0.0, 0.0});
+    }
+    // After a moveto the path stands there.
+    const grape::SvgPathParse moved = grape::parse_svg_path_prefix("M3 4 L");
+    ASSERT_TRUE(moved.error.has_value());
+    EXPECT_EQ(moved.error->offset, 6u);
+    expect_stands_at(moved.path, {3.0, 4.0});
+}
+
+TEST(SvgErrorRule, ASegmentThatCannotBeAPathEndsThePrefix) {
+    // Each segment's length fits, the third makes the sum overflow: the first two remain.
+    const grape::SvgPathParse parsed = grape::parse_svg_path_prefix("M-1e308 0 L0 0 L1e308 0 L0 0");
+    ASSERT_TRUE(parsed.error.has_value());
+    EXPECT_EQ(parsed.error->offset, 16u);
+    EXPECT_EQ(parsed.path.length(), 1e308);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Arcs whose radii just reach their endpoints
+
+TEST(SvgJustReachingArcs, HalfCircleFromItsDiameterIsExact) {
+    // Radius 49 over a chord of 98: a half circle about (49, 0). Length 49π, the midpoint
+    // at the bottom, y = 49 (computed with Λ through 1/rx this came out as 153.93804148621365
+    // and y = 49.00000073: the centre offset √(1/Λ − 1) turned 1 − 2⁻⁵³ into 1.5e-8).
+    const ComplexPath path = parse_svg_path("M 98 0 A 49 49 0 1 1 0 0");
+    EXPECT_NEAR(path.length(), 49.0 * pi, 4 * eps * 154.0);  // a few ulps of 154
+    EXPECT_NEAR(path.point(0.5).x, 49.0, 4 * eps * 98.0);
+    EXPECT_NEAR(path.point(0.5).y, 49.0, 4 * eps * 98.0);
+    EXPECT_NEAR(path.point(1.0).x, 0.0, 4 * eps * 98.0);  // cos π, sin π: rounding of the radius 49
+    EXPECT_NEAR(path.point(1.0).y, 0.0, 4 * eps * 98.0);
+}
+
+TEST(SvgJustReachingArcs, DecimalDataThatOnlyRoundsToReachingIsSnapped) {
+    // Icons draw circles as two half-arcs with decimal data: from (20.32, 2.91) to
+    // (7.12, 25.31) is a chord of exactly 26 (13.2² + 22.4² = 676), radius 13, but the halved
+    // decimal coordinates give Λ = 1 − 2⁻⁵²; likewise the vertical chord 28.33 − 13.41 = 14.92
+    // with radius 7.46. Each circle has length 2πr.
+    struct Case { const char* data; double radius; };
+    for (const Case c : {Case{"M 20.32 2.91 A 13 13 0 0 1 7.12 25.31 A 13 13 0 0 1 20.32 2.91", 13.0},
+                         Case{"M 0.53 28.33 A 7.46 7.46 0 1 0 0.53 13.41 A 7.46 7.46 0 1 0 0.53 28.33", 7.46}}) {
+        SCOPED_TRACE(c.data);
+        const ComplexPath path = parse_svg_path(c.data);
+        // Snapped, the centre is the chord's midpoint: the error is the rounding of the data
+        // (a few ulps of the coordinates), not the 1e-8 of an unsnapped square root.
+        EXPECT_NEAR(path.length(), 2.0 * pi * c.radius, 1e-13 * c.radius);
+        EXPECT_NEAR(grape::distance(path.point(0.25), path.point(0.75)), 2.0 * c.radius, 1e-13 * c.radius);
+    }
+}

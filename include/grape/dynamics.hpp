@@ -134,6 +134,9 @@ struct StepStats {
     int substeps = 0;     ///< accepted sub-steps (1 for fixed-step integrators)
     int rejected = 0;     ///< rk45 sub-steps rejected by error control
     int forced = 0;       ///< rk45 sub-steps accepted at min_step despite the error
+    /// False when the state or rk45's error estimate left the finite range: the step stopped
+    /// there (rk45 at once, without rejecting sub-steps to max_substeps) and q, v are as before.
+    bool finite = true;
 };
 
 /// Advances any SecondOrderSystem by one step of the chosen integrator. Holds its scratch
@@ -237,9 +240,10 @@ enum class SolveStatus {
     ok,             ///< J W Jᵀ was regular and the solve succeeded
     singular,       ///< redundant or degenerate constraints: a least-squares/CG solution was used
     not_converged,  ///< conjugate gradient stopped at its iteration limit
+    non_finite,     ///< the state left the finite range: the step was not taken (state and time unchanged)
 };
 
-/// The status name ("ok", "singular", "not_converged").
+/// The status name ("ok", "singular", "not_converged", "non_finite").
 std::string_view to_string(SolveStatus status) noexcept;
 
 /// What one ParticleSystem::step did.
@@ -346,15 +350,18 @@ public:
     void add_force(ForceFunction force, PotentialFunction potential = {});
 
     // -- constraints --
-    /// |xa − xb| = length (C = ½(|d|² − L²)). Throws for unknown ids, a == b, length ≤ 0.
+    /// |xa − xb| = length (C = ½(|d|² − L²)). Throws for unknown ids, a == b, length ≤ 0, or
+    /// particles at the same point.
     ConstraintId add_distance(ParticleId a, ParticleId b, double length);
     /// |xa − xb| held at its current value.
     ConstraintId add_distance(ParticleId a, ParticleId b);
-    /// |xa − anchor| = length: a pendulum rod to a fixed point. Throws if length ≤ 0.
+    /// |xa − anchor| = length: a pendulum rod to a fixed point. Throws if length ≤ 0 or the
+    /// particle sits at the anchor (the rod would have no direction).
     ConstraintId add_anchor(ParticleId a, Vec2 anchor, double length);
     /// xa = point (two rows). Throws for an unknown id or a non-finite point.
     ConstraintId add_fixed_point(ParticleId a, Vec2 point);
-    /// C(xa) = 0 for an implicit curve.
+    /// C(xa) = 0 for an implicit curve. Throws if ∇C is zero at the particle (the centre of a
+    /// circle: the constraint force would have no direction).
     ConstraintId add_curve(ParticleId a, ImplicitCurve curve);
     /// A user constraint. Throws if it has no particles, an unknown id or no function.
     ConstraintId add_constraint(UserConstraint constraint);
@@ -371,6 +378,10 @@ public:
     // -- simulation --
     /// Advances by dt seconds (> 0, finite; throws grape::Error otherwise): integrates with
     /// constraint forces at every stage, projects when drift control says so, clears exerted forces.
+    /// A step that would leave the finite range is not taken (status non_finite). Throws
+    /// grape::Error when a constraint's gradient is zero at the current positions (a particle
+    /// at its anchor or on top of its distance partner, at the centre of a circle): its force
+    /// would have no direction, and Baumgarte feedback would fling the particle away.
     StepReport step(double dt);
     /// Simulated time in seconds.
     double time() const noexcept { return time_; }
@@ -429,6 +440,7 @@ private:
     Stepper stepper_{};
     std::unique_ptr<detail::SolverWorkspace> solver_{};
     detail::SolverWorkspace& evaluated_rows() const;  // rows evaluated at the current state
+    void refuse_degenerate_rows();                     // throws for a violated row with ∇C = 0
     static_assert(sizeof(Vec2) == 2 * sizeof(double), "positions are viewed as 2n doubles");
 };
 

@@ -27,6 +27,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <variant>
@@ -101,7 +102,8 @@ public:
     std::vector<Vec2> flatten(double tolerance) const;
 
     /// The same shape moving at constant speed: point(u) of the result lies at arc length
-    /// u·length() along this path (to 1e-9·length()), with consistent derivatives (|d1| is
+    /// u·length() along this path (to 1e-9·length(); a length in the denormal range as closely
+    /// as its few digits allow), with consistent derivatives (|d1| is
     /// length() everywhere, d2 is the chain rule's). Works for every kind; costs a table
     /// built once (tens of µs for a Bézier, a few KB) and one polynomial per evaluation.
     /// Reparametrizing a reparametrized path returns it unchanged.
@@ -270,6 +272,10 @@ public:
     std::span<const Path> parts() const noexcept;
     /// The cues as given.
     std::span<const double> cues() const noexcept;
+
+protected:
+    /// A handle on a node that is a complex path (parse_svg_path's).
+    explicit ComplexPath(std::shared_ptr<const detail::PathNode> node) noexcept : Path(std::move(node)) {}
 };
 
 // --- what a path is: plain values -------------------------------------------------------
@@ -399,8 +405,27 @@ std::optional<S> path_cast(const Path& path) {
 
 /// SVG path data (`M L H V C S Q T A Z`, absolute and relative, implicit repeats, arcs by the
 /// SVG implementation notes) as a ComplexPath with cues set by length; y points down as in
-/// SVG. Throws grape::Error naming the character offset of a syntax error.
+/// SVG. Data that draws nothing of positive length (empty, only movetos, zero-length
+/// segments) is valid: the path stands at its first moveto (the origin for empty data), with
+/// length 0. Throws grape::Error naming the character offset of a syntax error (strict).
 ComplexPath parse_svg_path(std::string_view data);
+
+/// Where SVG path data breaks the grammar (or a segment cannot be a path), and why.
+struct SvgPathError {
+    std::size_t offset = 0;  ///< character offset in the data
+    std::string message;     ///< "SVG path data: expected a number at offset 34, found the end of the data"
+};
+
+/// SVG path data read by SVG's error rule, and the error that ended it.
+struct SvgPathParse {
+    ComplexPath path;                   ///< everything before the command holding the error
+    std::optional<SvgPathError> error;  ///< empty when the whole data was read
+};
+
+/// SVG path data as browsers read it (SVG 2 §9.5.4): the path up to, not including, the
+/// command holding the first error (each implicit repetition of a command counts as one), as
+/// parse_svg_path would give for that prefix, and the error. Never throws grape::Error.
+SvgPathParse parse_svg_path_prefix(std::string_view data);
 
 /// A scalar from `from` to `to`: value(u) = from + (to − from)·u, extended linearly outside [0, 1].
 class Path1D {

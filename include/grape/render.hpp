@@ -99,6 +99,9 @@ struct StrokeStyle {
     LineCap cap = LineCap::round;      ///< line ends
     LineJoin join = LineJoin::round;   ///< corners
     std::vector<double> dashes = {};   ///< on/off lengths (output units); empty: solid
+    /// Miter joins longer than this many line widths are drawn beveled (≥ 1; SVG's default 4,
+    /// where cairo's own 10 shows spikes at sharp corners).
+    double miter_limit = 4.0;
 };
 
 /// Which points a self-overlapping shape covers.
@@ -206,7 +209,9 @@ public:
     void fill_rect(const Rect& rect, const FillStyle& style);
 
     /// The path over u in [0, 1]: Béziers, circle arcs, lines and cubic splines as exact
-    /// curves, other kinds flattened within a quarter of an output unit.
+    /// curves, other kinds flattened within a quarter of an output unit. A path from SVG data
+    /// is drawn as SVG draws it: `Z` closes its subpath (a join, not two caps) and a
+    /// zero-length subpath is a dot with round caps.
     void stroke_path(const Path& path, const StrokeStyle& style);
     /// The path closed by a straight line from its end back to its start, filled.
     void fill_path(const Path& path, const FillStyle& style);

@@ -127,6 +127,9 @@ struct Scene {
     std::vector<NamedCurve> curves;           ///< named curves
     std::vector<SceneAnimation> animations;   ///< animations (their paths are drawn too)
     std::vector<SceneSimulation> simulations; ///< particle simulations
+    /// What loading forgave, one message each: SVG path data with a syntax error is read by
+    /// SVG's error rule (the path before the command holding the error). Not saved.
+    std::vector<std::string> warnings;
 
     /// The named path; nullptr when there is none.
     const NamedPath* find_path(std::string_view name) const noexcept;

@@ -5,12 +5,20 @@
 namespace grape {
 
 namespace {
+// ü = (x′·F/m − (x′·x″)u̇²)/|x′|² divides by the speed: a path of length 0 (SVG data that
+// draws nothing) has none anywhere.
+void require_length(const Path& path) {
+    if (!(path.length() > 0.0))
+        throw Error("Bead: the path has length 0 (it stands at one point), so there is nothing to slide along");
+}
+
 ParametricCurve curve_of(const Path& path) {
     return [path](double u) { return CurveFrame{path.point(u), path.d1(u), path.d2(u)}; };
 }
 }  // namespace
 
 Bead::Bead(const Path& path, const BeadDef& def) {
+    require_length(path);
     std::vector<Part> parts;
     if (const auto complex = path_cast<ComplexSpec>(path)) {
         // One part per top-level part of a complex path, so joins keep the speed along it.

@@ -49,6 +49,7 @@ std::string_view to_string(SolveStatus status) noexcept {
     case SolveStatus::ok: return "ok";
     case SolveStatus::singular: return "singular";
     case SolveStatus::not_converged: return "not_converged";
+    case SolveStatus::non_finite: return "non_finite";
     }
     return "unknown";
 }
@@ -77,6 +78,10 @@ ParticleId ParticleSystem::add_particle(const ParticleDef& def) {
         throw Error("add_particle: velocity must be finite (got " + number_text(def.velocity.x) + ", " + number_text(def.velocity.y) + ")");
     if (!(def.mass > 0.0))
         throw Error("add_particle: mass must be positive, or infinity to pin (got " + number_text(def.mass) + ")");
+    // A denormal mass has an infinite inverse: every acceleration would be inf or NaN.
+    if (!std::isinf(def.mass) && !std::isfinite(1.0 / def.mass))
+        throw Error("add_particle: mass must be at least " + number_text(1.0 / std::numeric_limits<double>::max()) +
+                    " (its inverse overflows; got " + number_text(def.mass) + ")");
     const bool pinned = std::isinf(def.mass);
     positions_.push_back(def.position);
     velocities_.push_back(pinned ? Vec2{} : def.velocity);
@@ -162,6 +167,9 @@ ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b, double len
     if (ia == ib) throw Error("add_distance: a and b must be different particles (both " + std::to_string(ia) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
         throw Error("add_distance: length must be positive and finite (got " + number_text(length) + ")");
+    if (positions_[ia] == positions_[ib])
+        throw Error("add_distance: particles " + std::to_string(ia) + " and " + std::to_string(ib) +
+                    " are at the same point, where the rod has no direction; start them apart");
     return push_constraint({ConstraintKind::distance, ia, ib, {}, length, 0});
 }
 
@@ -175,6 +183,9 @@ ConstraintId ParticleSystem::add_anchor(ParticleId a, Vec2 anchor, double length
     if (!finite(anchor)) throw Error("add_anchor: anchor must be finite (got " + number_text(anchor.x) + ", " + number_text(anchor.y) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
         throw Error("add_anchor: length must be positive and finite (got " + number_text(length) + ")");
+    if (positions_[ia] == anchor)
+        throw Error("add_anchor: particle " + std::to_string(ia) +
+                    " sits at the anchor, where the rod has no direction; start it at a distance");
     return push_constraint({ConstraintKind::anchor, ia, 0, anchor, length, 0});
 }
 
@@ -186,6 +197,11 @@ ConstraintId ParticleSystem::add_fixed_point(ParticleId a, Vec2 point) {
 
 ConstraintId ParticleSystem::add_curve(ParticleId a, ImplicitCurve curve) {
     const auto ia = checked(a, "add_curve");
+    const CurveSample at = curve(positions_[ia]);
+    if (at.gradient == Vec2{} && at.value != 0.0)
+        throw Error("add_curve: the curve's gradient is zero at particle " + std::to_string(ia) +
+                    " (C = " + number_text(at.value) + ", as at the centre of a circle), so its force has no direction; "
+                    "start the particle elsewhere");
     curves_.push_back(std::move(curve));
     return push_constraint({ConstraintKind::curve, ia, 0, {}, 0.0, static_cast<std::uint32_t>(curves_.size() - 1)});
 }
@@ -242,19 +258,60 @@ void ParticleSystem::apply_forces(double t, std::span<const Vec2> x, std::span<c
     }
 }
 
+namespace {
+
+bool all_finite(std::span<const Vec2> points) noexcept {
+    for (const Vec2& p : points)
+        if (!finite(p)) return false;
+    return true;
+}
+
+}  // namespace
+
+void ParticleSystem::refuse_degenerate_rows() {
+    if (constraints_.empty()) return;
+    auto& s = evaluated_rows();
+    for (std::size_t r = 0; r < s.rows; ++r) {
+        // C = 0 with no gradient (a user constraint at rest) asks for no force: let it be.
+        if (s.gradient_norm2[r] > 0.0 || s.c[r] == 0.0) continue;
+        const auto index = s.row_constraint[r];
+        const ConstraintRecord& c = constraints_[index];
+        static constexpr const char* kinds[] = {"distance", "anchor", "fixed point", "curve", "user"};
+        throw Error("step: constraint " + std::to_string(index) + " (" + kinds[static_cast<int>(c.kind)] +
+                    ") has a zero gradient at the current positions (C = " + number_text(s.c[r]) +
+                    "): its force would have no direction; move the particles off the degenerate point");
+    }
+}
+
 StepReport ParticleSystem::step(double dt) {
     if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("step: dt must be positive and finite (got " + number_text(dt) + ")");
     auto& s = *solver_;
     s.prepare(*this, dt);
+    refuse_degenerate_rows();
     const std::span<double> q(reinterpret_cast<double*>(positions_.data()), 2 * positions_.size());
     const std::span<double> v(reinterpret_cast<double*>(velocities_.data()), 2 * velocities_.size());
     const StepStats stats = stepper_.step(s, time_, q, v, dt);
-    time_ += dt;
     StepReport report;
     report.evaluations = s.evaluations;
     report.substeps = stats.substeps;
     report.rejected = stats.rejected;
-    if (def_.drift.method == DriftControl::projection) report.projection_iterations = s.project(positions_, velocities_);
+    if (!stats.finite) {
+        // The stepper left q and v as they were: say so, and do not advance the clock.
+        report.status = SolveStatus::non_finite;
+        report.cg_iterations = s.cg_iterations;
+        std::fill(exerted_.begin(), exerted_.end(), Vec2{});
+        return report;
+    }
+    time_ += dt;
+    if (def_.drift.method == DriftControl::projection) {
+        const std::vector<Vec2> x0 = positions_, v0 = velocities_;
+        report.projection_iterations = s.project(positions_, velocities_);
+        if (!all_finite(positions_) || !all_finite(velocities_)) {
+            positions_ = x0;
+            velocities_ = v0;
+            s.note(SolveStatus::non_finite);
+        }
+    }
     report.status = s.worst;
     report.cg_iterations = s.cg_iterations;
     std::fill(exerted_.begin(), exerted_.end(), Vec2{});

@@ -178,13 +178,22 @@ StepStats Stepper::step(SecondOrderSystem& system, double t, std::span<double> q
                 ynew[i] = y[i] + h * (a71 * k1[i] + a73 * k3[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
             f(ts + h, ynew, k7);
             double err = 0.0;
+            bool finite = true;
+            for (std::size_t i = 0; i < N; ++i) finite = finite && std::isfinite(ynew[i]);
             if (tol > 0.0) {
                 for (std::size_t i = 0; i < N; ++i) {
                     const double e = h * (e1 * k1[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] + e7 * k7[i]);
                     const double scale = tol * (1.0 + std::max(std::abs(y[i]), std::abs(ynew[i])));
-                    err = std::max(err, std::abs(e) / scale);
+                    const double ratio = std::abs(e) / scale;
+                    if (!(ratio <= err)) err = ratio;  // keeps a NaN, which std::max would drop
                 }
-                if (!std::isfinite(err)) err = 1e10;
+                finite = finite && std::isfinite(err);
+            }
+            // A non-finite state or error estimate does not improve with smaller sub-steps
+            // (a NaN stays NaN): stop now instead of rejecting until max_substeps.
+            if (!finite) {
+                stats.finite = false;
+                break;
             }
             const bool forced = h <= rk45_.min_step || stats.substeps + stats.rejected >= rk45_.max_substeps;
             if (err <= 1.0 || forced || tol == 0.0) {
@@ -216,8 +225,11 @@ StepStats Stepper::step(SecondOrderSystem& system, double t, std::span<double> q
         break;
     }
     }
-    std::copy(y, y + n, q.begin());
-    std::copy(y + n, y + N, v.begin());
+    for (std::size_t i = 0; i < N && stats.finite; ++i) stats.finite = std::isfinite(y[i]);
+    if (stats.finite) {  // otherwise q and v stay as they were
+        std::copy(y, y + n, q.begin());
+        std::copy(y + n, y + N, v.begin());
+    }
     stats.evaluations = f.evaluations;
     if (integrator_ != Integrator::rk45) stats.substeps = 1;
     return stats;

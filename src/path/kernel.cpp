@@ -2,6 +2,7 @@
 #include "kernel.hpp"
 
 #include "path_node.hpp"
+#include "svg_parser.hpp"
 
 namespace grape::detail {
 
@@ -98,6 +99,11 @@ double source_parameter(const Path& path, double u) noexcept {
     const PathNode& node = NodeAccess::node(path);
     if (node.kind() != PathKind::reparametrized) return u;
     return static_cast<const ReparametrizedNode&>(node).source_u(u);
+}
+
+const std::vector<SvgSegment>* svg_commands(const Path& path) noexcept {
+    const auto* node = dynamic_cast<const SvgNode*>(&NodeAccess::node(path));
+    return node ? &node->commands : nullptr;
 }
 
 }  // namespace grape::detail

@@ -4,6 +4,8 @@
 // reached through the build-only target grape::path_internal (not installed).
 #pragma once
 
+#include "svg_segment.hpp"
+
 #include <grape/path.hpp>
 
 #include <cmath>
@@ -78,5 +80,9 @@ std::span<const double> smooth_breaks(const Path& path) noexcept;
 /// The source parameter a reparametrized path evaluates at u in [0, 1] (its own solve);
 /// u itself for other kinds.
 double source_parameter(const Path& path, double u) noexcept;
+
+/// The commands of a path made from SVG data (moves, segments, closes, zero-length dots), so
+/// that it can be drawn as SVG draws it; nullptr for any other path.
+const std::vector<SvgSegment>* svg_commands(const Path& path) noexcept;
 
 }  // namespace grape::detail

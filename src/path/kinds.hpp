@@ -170,7 +170,7 @@ protected:
 };
 
 /// Several paths in sequence, each over its span of u.
-class ComplexNode final : public PathNode {
+class ComplexNode : public PathNode {  // SvgNode (svg_parser.hpp) adds the commands
 public:
     ComplexNode(std::vector<Path> parts, std::vector<double> cues);
     Vec2 point(double u) const noexcept override;

@@ -233,7 +233,16 @@ ReparametrizedNode::ReparametrizedNode(Path source)
 }
 
 void ReparametrizedNode::build() {
-    const double total = source_node_->length();
+    // The table is built in arc-length units scaled by a power of two (exact) that puts the
+    // length in [1, 2), so a path of length 1e-320 has a table as fine as one of length 1.
+    const double unscaled = source_node_->length();
+    exponent_ = unscaled > 0.0 ? -std::ilogb(unscaled) : 0;
+    scaled_length_ = std::ldexp(unscaled, exponent_);
+    // A denormal path's derivatives carry absolute rounding of a few denormal ulps, which the
+    // scaling makes relative: no table can be more accurate than that, and asking for more
+    // would split spans up to the budget (minutes for a cubic of length 3e-320).
+    noise_ = 16.0 * std::ldexp(std::numeric_limits<double>::denorm_min(), exponent_);
+    const double total = scaled_length_;
     const auto& br = source_node_->breaks();
     if (total > 0.0) {
         double s = 0.0;
@@ -258,7 +267,7 @@ void ReparametrizedNode::build() {
     // Buckets over s give the first span to look at without a binary search.
     const std::size_t count = 4 * spans_.size();
     buckets_.resize(count);
-    bucket_scale_ = total > 0.0 ? static_cast<double>(count) / total : 0.0;
+    bucket_scale_ = total > 0.0 ? static_cast<double>(count) / scaled_length_ : 0.0;
     std::size_t i = 0;
     for (std::size_t b = 0; b < count; ++b) {
         const double s = total > 0.0 ? static_cast<double>(b) / bucket_scale_ : 0.0;
@@ -269,10 +278,13 @@ void ReparametrizedNode::build() {
 
 double ReparametrizedNode::build_span_checked(double va, double vb, double sa, int depth, double total) {
     const PathNode& src = *source_node_;
-    auto speed = [&src](double v) noexcept { return grape::length(src.d1(v)); };
+    const int e = exponent_;
+    // Derivatives scaled before any product, so that denormal ones keep their digits.
+    auto scaled = [e](Vec2 d) noexcept { return Vec2{std::ldexp(d.x, e), std::ldexp(d.y, e)}; };
+    auto speed = [&src, &scaled](double v) noexcept { return grape::length(scaled(src.d1(v))); };
     const double h = vb - va;
     // s at the quarter points, by adaptive quadrature (the truth the model is checked against).
-    const double quad_tol = 1e-15 * total;
+    const double quad_tol = std::max(1e-15 * total, noise_);
     // One rule per quarter; when their sum agrees with one rule over the span the quarters
     // are far more accurate still (spans hold no kinks: those are breaks). Otherwise each
     // quarter gets adaptive quadrature.
@@ -289,8 +301,8 @@ double ReparametrizedNode::build_span_checked(double va, double vb, double sa, i
     // Hermite data of s(t), t in [0, 1]: s′ = h·|x′|, s″ = h²·(x′·x″)/|x′|; where the path
     // stops (|x′| = 0) s″ takes its one-sided limit ±|x″|.
     const double vr = inside_right(va, vb);
-    const Vec2 g0 = src.d1(va), h0 = src.d2(va);
-    const Vec2 g1 = src.d1(vr), h1 = src.d2(vr);
+    const Vec2 g0 = scaled(src.d1(va)), h0 = scaled(src.d2(va));
+    const Vec2 g1 = scaled(src.d1(vr)), h1 = scaled(src.d2(vr));
     const double sp0 = grape::length(g0), sp1 = grape::length(g1);
     const double m0 = h * sp0;
     const double m1 = h * sp1;
@@ -312,7 +324,7 @@ double ReparametrizedNode::build_span_checked(double va, double vb, double sa, i
     double error = 0.0;
     for (int k = 1; k <= 3; ++k) error = std::max(error, std::abs(model(k / 4.0) - q[k]));
     // 1e-10·L leaves a factor 10 to the promised 1e-9·L for the error between check points.
-    const bool good = error <= 1e-10 * total;
+    const bool good = error <= std::max(1e-10 * total, noise_);
     // The span budget bounds time and memory for paths whose arc length the model cannot
     // follow to 1e-10·L (coordinates so large that rounding noise exceeds it): past it the
     // remaining spans are kept as they are, with Newton lookups.
@@ -321,8 +333,8 @@ double ReparametrizedNode::build_span_checked(double va, double vb, double sa, i
         depth >= 48 || spans_.size() >= max_spans || !(0.5 * (va + vb) > va && 0.5 * (va + vb) < vb);
     // A span whose inverse model misses although the path moves at both ends is split too:
     // lookups then cost one polynomial instead of Newton steps.
-    if (last || (good && (fit_inverse(sp, total) || depth >= 24))) {
-        if (last) fit_inverse(sp, total);
+    if (last || (good && (fit_inverse(sp, total, noise_) || depth >= 24))) {
+        if (last) fit_inverse(sp, total, noise_);
         spans_.push_back(sp);
         return sa + S;
     }
@@ -331,7 +343,7 @@ double ReparametrizedNode::build_span_checked(double va, double vb, double sa, i
     return build_span_checked(vm, vb, sm, depth + 1, total);
 }
 
-bool ReparametrizedNode::fit_inverse(Span& sp, double total) noexcept {
+bool ReparametrizedNode::fit_inverse(Span& sp, double total, double noise) noexcept {
     // The inverse t(σ) of P(t) = σ·ds: t′ = ds/P′, t″ = −ds²·P″/P′³ at both ends, quintic
     // Hermite between. Where P′ nearly vanishes t(σ) has a square-root shape no polynomial
     // follows: such spans keep Newton on the forward model.
@@ -357,7 +369,7 @@ bool ReparametrizedNode::fit_inverse(Span& sp, double total) noexcept {
         const double t = g * (sp.j1 + g * (sp.j2 + g * (sp.j3 + g * (sp.j4 + g * sp.j5))));
         if (!(t >= 0.0 && t <= 1.0)) return false;
         const double p = t * (sp.k1 + t * (sp.k2 + t * (sp.k3 + t * (sp.k4 + t * sp.k5))));
-        if (!(std::abs(p - g * S) <= 2e-10 * total)) return false;
+        if (!(std::abs(p - g * S) <= std::max(2e-10 * total, noise))) return false;
     }
     sp.newton = false;
     return true;

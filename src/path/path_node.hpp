@@ -183,10 +183,12 @@ public:
     /// The source parameter v at which the arc length is u·length(), u in [0, 1].
     double source_u(double u) const noexcept {
         if (u >= 1.0) return 1.0;  // the ends are exact: animations land on the end point
-        const double s = std::clamp(u, 0.0, 1.0) * length();
+        const double s = std::clamp(u, 0.0, 1.0) * scaled_length_;
         if (!(s > 0.0)) return 0.0;  // also catches NaN
-        std::size_t b = static_cast<std::size_t>(s * bucket_scale_);
-        if (b >= buckets_.size()) b = buckets_.size() - 1;
+        // Compared as a double before the conversion, which must not see a value past size_t.
+        const double bucket = s * bucket_scale_;
+        const std::size_t b = bucket < static_cast<double>(buckets_.size()) ? static_cast<std::size_t>(bucket)
+                                                                            : buckets_.size() - 1;
         std::size_t i = buckets_[b];
         while (i + 1 < spans_.size() && spans_[i + 1].s0 <= s) ++i;
         const Span& sp = spans_[i];
@@ -234,13 +236,19 @@ private:
     double build_span_checked(double va, double vb, double sa, int depth, double total);
     // Fits the span's inverse model; false when it misses although the path moves at both
     // ends (splitting the span will help), true when done (inverse or Newton).
-    static bool fit_inverse(Span& sp, double total) noexcept;
+    static bool fit_inverse(Span& sp, double total, double noise) noexcept;
 
     Path source_;
     const PathNode* source_node_;
     std::vector<Span> spans_;
     std::vector<std::uint32_t> buckets_;  // buckets_[b]: the span holding s = b / bucket_scale_
     double bucket_scale_ = 0.0;
+    // The table's arc lengths (s0, ds, k1..k5 of every span) are in units of 2^−exponent_,
+    // which puts the length in [1, 2): for a length of 1e-320 the spans would otherwise
+    // underflow to zero length and the reciprocals overflow, and every lookup land on the end.
+    int exponent_ = 0;
+    double scaled_length_ = 0.0;
+    double noise_ = 0.0;  // the rounding floor of the scaled arc lengths (denormal paths only)
 };
 
 }  // namespace grape::detail

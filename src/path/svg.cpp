@@ -4,6 +4,8 @@
 // exact elliptical arc) of a ComplexPath with cues by length.
 #include "svg_parser.hpp"
 
+#include "path_node.hpp"
+
 #include <grape/error.hpp>
 #include <grape/path.hpp>
 
@@ -11,6 +13,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 
 namespace grape::detail {
@@ -32,14 +36,21 @@ std::string describe(std::string_view data, std::size_t at) {
     return buffer;
 }
 
+// The first error in the data: where, and the message. Caught by Builder::run, which keeps
+// the commands read before it (SVG's error rule).
+struct SyntaxError {
+    std::size_t offset;
+    std::string message;
+};
+
 [[noreturn]] void fail(std::string_view data, std::string_view expected, std::size_t at) {
-    throw Error("SVG path data: expected " + std::string(expected) + " at offset " + std::to_string(at) +
-                ", found " + describe(data, at));
+    throw SyntaxError{at, "SVG path data: expected " + std::string(expected) + " at offset " + std::to_string(at) +
+                              ", found " + describe(data, at)};
 }
 
 [[noreturn]] void fail_range(std::string_view what, std::size_t at) {
-    throw Error("SVG path data: " + std::string(what) + " at offset " + std::to_string(at) +
-                " (beyond the range of a double)");
+    throw SyntaxError{at, "SVG path data: " + std::string(what) + " at offset " + std::to_string(at) +
+                              " (beyond the range of a double)"};
 }
 
 // The digits of a number that overflowed or underflowed: which way did it go? The decimal
@@ -180,19 +191,31 @@ class Builder {
 public:
     explicit Builder(Scanner& scan) noexcept : scan_(scan) {}
 
-    std::vector<SvgSegment> run() {
-        scan_.skip_wsp();
-        if (scan_.at_end()) throw Error("SVG path data: is empty (expected a moveto, M or m)");
-        const char first = scan_.peek();
-        if (first != 'M' && first != 'm') fail(scan_.data(), "a moveto (M or m)", scan_.offset());
-        while (true) {
+    // Every argument group either completes (and appends its commands) or throws before
+    // appending anything, so what is in segments_ when an error is caught is the valid prefix.
+    SvgCommands run() {
+        SvgCommands out;
+        try {
             scan_.skip_wsp();
-            if (scan_.at_end()) break;
-            const std::size_t command_at = scan_.offset();
-            const char letter = scan_.peek();
-            command(letter, command_at);
+            // SVG 2: empty data is no error; it draws nothing.
+            if (!scan_.at_end()) {
+                const char first = scan_.peek();
+                if (first != 'M' && first != 'm') fail(scan_.data(), "a moveto (M or m)", scan_.offset());
+            }
+            while (true) {
+                scan_.skip_wsp();
+                if (scan_.at_end()) break;
+                const std::size_t command_at = scan_.offset();
+                const char letter = scan_.peek();
+                command(letter, command_at);
+            }
+        } catch (SyntaxError& e) {
+            out.ok = false;
+            out.error_offset = e.offset;
+            out.error = std::move(e.message);
         }
-        return std::move(segments_);
+        out.commands = std::move(segments_);
+        return out;
     }
 
 private:
@@ -246,6 +269,9 @@ private:
             current_ = start_ = p;
             ++subpath_;
             previous_ = Previous::other;
+            SvgSegment s = segment(SvgSegment::Kind::move);
+            s.p[0] = p;
+            segments_.push_back(s);
             return;
         }
         case 'L': line(pair(relative)); break;
@@ -319,33 +345,32 @@ private:
         return s;
     }
 
-    void line(Vec2 end) {
-        if (end != current_) {
-            SvgSegment s = segment(SvgSegment::Kind::line);
-            s.p[0] = current_;
-            s.p[1] = end;
-            segments_.push_back(s);
-        }
+    void line(Vec2 end, bool closing = false) {
+        SvgSegment s = segment(SvgSegment::Kind::line);
+        s.p[0] = current_;
+        s.p[1] = end;
+        s.zero_length = end == current_;
+        s.closing = closing;
+        // Z at the subpath's start adds no line of its own (the close draws the dot).
+        if (!(closing && s.zero_length)) segments_.push_back(s);
         current_ = end;
     }
 
     void quadratic(Vec2 c, Vec2 end) {
-        if (!(c == current_ && end == current_)) {
-            SvgSegment s = segment(SvgSegment::Kind::quadratic);
-            s.p = {current_, c, end, Vec2{}};
-            segments_.push_back(s);
-        }
+        SvgSegment s = segment(SvgSegment::Kind::quadratic);
+        s.p = {current_, c, end, Vec2{}};
+        s.zero_length = c == current_ && end == current_;
+        segments_.push_back(s);
         control_ = c;
         previous_ = Previous::quadratic;
         current_ = end;
     }
 
     void cubic(Vec2 c1, Vec2 c2, Vec2 end) {
-        if (!(c1 == current_ && c2 == current_ && end == current_)) {
-            SvgSegment s = segment(SvgSegment::Kind::cubic);
-            s.p = {current_, c1, c2, end};
-            segments_.push_back(s);
-        }
+        SvgSegment s = segment(SvgSegment::Kind::cubic);
+        s.p = {current_, c1, c2, end};
+        s.zero_length = c1 == current_ && c2 == current_ && end == current_;
+        segments_.push_back(s);
         control_ = c2;
         previous_ = Previous::cubic;
         current_ = end;
@@ -365,7 +390,10 @@ private:
 
     void close(std::size_t command_at) {
         group_at_ = command_at;
-        line(start_);  // the closing segment; the next command starts at the subpath's start
+        line(start_, true);  // the closing segment; the next command starts at the subpath's start
+        SvgSegment s = segment(SvgSegment::Kind::close);
+        s.p[0] = start_;
+        segments_.push_back(s);
         previous_ = Previous::other;
     }
 
@@ -407,10 +435,20 @@ bool svg_arc_to_centre(Vec2 from, Vec2 to, double rx, double ry, double rotation
     const double q = rx / ry;
     if (!(q > 0.0) || !std::isfinite(q)) return false;  // an ellipse flatter than a double holds
     // n² is the SVG notes' Λ: above 1 the radii are too small to reach and are scaled up (F.6.6).
-    const double n = h * std::hypot(xu / rx, yu / ry);
+    // Divided directly, x1/rx is exact for the common just-reaching arc (a half circle drawn
+    // from its diameter); h·hypot(xu/rx, yu/ry) rounds 1 to 1 − 2⁻⁵³ there, and the square
+    // root below turns that into a centre offset of 1.5e-8 radii. An overflow gives n = inf:
+    // scaled up; an underflow gives n ≈ 0, where the offset is √(1 − n²) ≈ 1 anyway.
+    const double n = std::hypot(x1 / rx, y1 / ry);
+    // Radii that reach to within a few ulps (decimal data that only rounds to just-reaching:
+    // icons draw circles as two half-arcs) reach exactly: the centre is the chord's midpoint.
+    constexpr double reach_tolerance = 8.0 * std::numeric_limits<double>::epsilon();
+    const bool just_reaching = std::abs(1.0 - n * n) <= reach_tolerance;
     double cx = 0.0;
     double cy = 0.0;
-    if (!(n < 1.0)) {
+    if (just_reaching) {
+        // cx = cy = 0 and the radii as given.
+    } else if (!(n < 1.0)) {
         rx = h * std::hypot(xu, yu * q);
         ry = h * std::hypot(xu / q, yu);
         if (!std::isfinite(rx) || !std::isfinite(ry)) return false;
@@ -445,7 +483,7 @@ bool svg_arc_to_centre(Vec2 from, Vec2 to, double rx, double ry, double rotation
     return finite(out.centre);
 }
 
-std::vector<SvgSegment> parse_svg_segments(std::string_view data) {
+SvgCommands parse_svg_segments(std::string_view data) {
     Scanner scan(data);
     return Builder(scan).run();
 }
@@ -461,6 +499,8 @@ Path to_path(const detail::SvgSegment& s) {
     case Kind::line: return LinearPath(s.p[0], s.p[1]);
     case Kind::quadratic: return QuadraticBezierPath(s.p[0], s.p[1], s.p[2]);
     case Kind::cubic: return CubicBezierPath(s.p[0], s.p[1], s.p[2], s.p[3]);
+    case Kind::move:
+    case Kind::close: break;  // not drawn: callers skip them
     case Kind::arc:
         // A circular arc is a CirclePath (its rotation only shifts the angles); anything
         // else is the exact ellipse.
@@ -472,31 +512,50 @@ Path to_path(const detail::SvgSegment& s) {
     return LinearPath(s.p[0], s.p[1]);
 }
 
-}  // namespace
+// A ComplexPath handle on an SvgNode.
+class SvgComplexPath : public ComplexPath {
+public:
+    explicit SvgComplexPath(std::shared_ptr<const detail::PathNode> node) noexcept : ComplexPath(std::move(node)) {}
+};
 
-ComplexPath parse_svg_path(std::string_view data) {
-    const std::vector<detail::SvgSegment> segments = detail::parse_svg_segments(data);
-    if (segments.empty()) {
-        throw Error("SVG path data: draws nothing (no segment of non-zero length)");
+// The path of the commands. Strict: any error throws. Otherwise SVG's error rule: the path
+// stops before the command holding the first error, which is reported.
+SvgPathParse build(detail::SvgCommands parsed, bool strict) {
+    std::optional<SvgPathError> error;
+    if (!parsed.ok) {
+        if (strict) throw Error(parsed.error);
+        error = SvgPathError{parsed.error_offset, parsed.error};
     }
+    std::vector<detail::SvgSegment>& commands = parsed.commands;
     std::vector<Path> drawn;
-    drawn.reserve(segments.size());
+    drawn.reserve(commands.size());
     double total = 0.0;
-    for (const detail::SvgSegment& s : segments) {
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+        const detail::SvgSegment& s = commands[i];
+        if (!s.drawn() || s.zero_length) continue;
+        std::string why;
+        Path part;
         try {
-            drawn.push_back(to_path(s));
+            part = to_path(s);
         } catch (const Error& e) {
             // The parser's checks keep coordinates finite; a kind may still refuse extremes
             // (a length beyond a double). Say where in the data that segment came from.
-            throw Error("SVG path data: the segment at offset " + std::to_string(s.offset) +
-                        " is not a valid path (" + e.what() + ")");
+            why = "SVG path data: the segment at offset " + std::to_string(s.offset) + " is not a valid path (" +
+                  e.what() + ")";
         }
-        total += drawn.back().length();
         // Cues are length ratios: an infinite length would make them NaN.
-        if (!std::isfinite(total)) {
-            throw Error("SVG path data: the path's length overflows a double (segment at offset " +
-                        std::to_string(s.offset) + ")");
+        if (why.empty() && !std::isfinite(total + part.length())) {
+            why = "SVG path data: the path's length overflows a double (segment at offset " +
+                  std::to_string(s.offset) + ")";
         }
+        if (!why.empty()) {
+            if (strict) throw Error(why);
+            error = SvgPathError{s.offset, why};
+            commands.resize(i);
+            break;
+        }
+        total += part.length();
+        drawn.push_back(std::move(part));
     }
     // A segment shorter than the rounding error of the whole length (2⁻⁵²·L) would get a cue
     // span no u can land in, and 1/span can overflow; leaving it out moves nothing by more
@@ -506,10 +565,35 @@ ComplexPath parse_svg_path(std::string_view data) {
     for (Path& part : drawn) {
         if (part.length() > std::numeric_limits<double>::epsilon() * total) parts.push_back(std::move(part));
     }
-    if (parts.empty()) {  // every segment's length underflowed to zero
-        throw Error("SVG path data: draws nothing (no segment of non-zero length)");
+    if (parts.empty()) {
+        // Nothing of positive length (empty data, only movetos, zero-length segments, or
+        // lengths that underflow): the path stands at its first point, the origin for none.
+        Vec2 at{};
+        for (const detail::SvgSegment& s : commands) {
+            if (s.kind == detail::SvgSegment::Kind::move) {
+                at = s.p[0];
+                break;
+            }
+        }
+        parts.push_back(LinearPath(at, at));
+        total = 0.0;
     }
-    return ComplexPath::by_length(std::move(parts));
+    // Cues by length, as ComplexPath::by_length sets them.
+    std::vector<double> cues(parts.size());
+    double s = 0.0;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        cues[i] = total > 0.0 ? std::min(s / total, 1.0) : static_cast<double>(i) / static_cast<double>(parts.size());
+        s += parts[i].length();
+    }
+    return SvgPathParse{
+        SvgComplexPath(detail::make_node<detail::SvgNode>(std::move(parts), std::move(cues), std::move(commands))),
+        std::move(error)};
 }
+
+}  // namespace
+
+ComplexPath parse_svg_path(std::string_view data) { return build(detail::parse_svg_segments(data), true).path; }
+
+SvgPathParse parse_svg_path_prefix(std::string_view data) { return build(detail::parse_svg_segments(data), false); }
 
 }  // namespace grape

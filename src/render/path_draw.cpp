@@ -5,9 +5,13 @@
 // and piecewise-cubic splines segment by segment from four points per segment (a cubic is
 // fixed by four of its points). Everything else is flattened by Path::flatten.
 #include "cairo_util.hpp"
+#include "path/kernel.hpp"  // svg_commands: how SVG data draws (subpaths, Z, dots)
+
+#include <grape/error.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace grape::detail {
 
@@ -29,6 +33,7 @@ void stroke(cairo_t* cr, const StrokeStyle& style) noexcept {
     cairo_set_line_join(cr, style.join == LineJoin::miter   ? CAIRO_LINE_JOIN_MITER
                             : style.join == LineJoin::round ? CAIRO_LINE_JOIN_ROUND
                                                             : CAIRO_LINE_JOIN_BEVEL);
+    cairo_set_miter_limit(cr, std::isfinite(style.miter_limit) && style.miter_limit >= 1.0 ? style.miter_limit : 4.0);
     bool dashes_ok = !style.dashes.empty();
     double total = 0.0;
     for (double d : style.dashes) {
@@ -119,6 +124,43 @@ void add_arc(cairo_t* cr, const Path& path, double tolerance) {
     cairo_set_matrix(cr, &saved);
 }
 
+// SVG data command by command, as SVG draws it: each moveto starts a subpath, Z closes it
+// (cairo then joins the last segment to the first instead of capping both ends), and a
+// zero-length segment stays in, so cairo draws it as a dot under round caps.
+void add_svg(cairo_t* cr, const std::vector<SvgSegment>& commands, double tolerance) {
+    using Kind = SvgSegment::Kind;
+    for (const SvgSegment& c : commands) {
+        switch (c.kind) {
+            case Kind::move: cairo_move_to(cr, c.p[0].x, c.p[0].y); break;
+            case Kind::line:
+                if (!c.closing) line_to(cr, c.p[1]);  // the close below draws the closing line
+                break;
+            case Kind::quadratic:  // degree elevation, as for QuadraticBezierPath
+                if (!cairo_has_current_point(cr)) cairo_move_to(cr, c.p[0].x, c.p[0].y);
+                curve_to(cr, c.p[0] + (2.0 / 3.0) * (c.p[1] - c.p[0]), c.p[2] + (2.0 / 3.0) * (c.p[1] - c.p[2]), c.p[2]);
+                break;
+            case Kind::cubic:
+                if (!cairo_has_current_point(cr)) cairo_move_to(cr, c.p[0].x, c.p[0].y);
+                curve_to(cr, c.p[1], c.p[2], c.p[3]);
+                break;
+            case Kind::arc: {
+                // The same path the parser made of it, drawn exactly by add_arc (which falls
+                // back to flattening for arcs too thin for cairo's matrices).
+                std::optional<Path> arc;
+                try {
+                    if (c.rx == c.ry) arc = CirclePath(c.centre, c.rx, c.start_angle + c.rotation, c.end_angle + c.rotation);
+                    else arc = EllipticalArcPath(c.centre, c.rx, c.ry, c.rotation, c.start_angle, c.end_angle);
+                } catch (const Error&) {
+                }
+                if (arc) add_arc(cr, *arc, tolerance);
+                else line_to(cr, c.p[1]);
+                break;
+            }
+            case Kind::close: cairo_close_path(cr); break;
+        }
+    }
+}
+
 // The segment count (points − 1) of a spline; 0 for other kinds.
 std::size_t spline_segments(const PathSpec& spec) {
     return std::visit([](const auto& s) -> std::size_t {
@@ -128,6 +170,10 @@ std::size_t spline_segments(const PathSpec& spec) {
 }
 
 void add_path_range(cairo_t* cr, const Path& path, double tolerance) {
+    if (const std::vector<SvgSegment>* commands = svg_commands(path)) {
+        add_svg(cr, *commands, tolerance);
+        return;
+    }
     switch (path.kind()) {
         case PathKind::linear: {
             begin_at(cr, path.point(0.0), tolerance);

@@ -146,6 +146,9 @@ std::vector<Vec2> points_field(const json& obj, const std::string& pointer, std:
 
 struct PathReader {
     const std::vector<NamedPath>* named = nullptr;  // references allowed when set
+    // When set, SVG data is read by SVG's error rule (the path before the command holding
+    // the first error) and the error is noted here; otherwise it is an error of the scene.
+    std::vector<std::string>* warnings = nullptr;
 
     Path read(const json& j, const std::string& pointer, int depth) const {
         if (depth > max_depth) fail(pointer, "paths nested more than " + std::to_string(max_depth) + " deep");
@@ -242,7 +245,13 @@ struct PathReader {
         }
         if (kind == "svg") {
             object(j, pointer, {"kind", "data", "reparametrize"});
-            return done(parse_svg_path(string_value(required(j, pointer, "data"), child(pointer, "data"))));
+            const std::string data = string_value(required(j, pointer, "data"), child(pointer, "data"));
+            if (!warnings) return done(parse_svg_path(data));
+            SvgPathParse parsed = parse_svg_path_prefix(data);
+            if (parsed.error)
+                warnings->push_back("scene: " + child(pointer, "data") + ": " + parsed.error->message +
+                                    "; the path stops before it, as SVG draws it");
+            return done(std::move(parsed.path));
         }
         if (kind == "complex") {
             object(j, pointer, {"kind", "parts", "cues", "reparametrize"});
@@ -574,7 +583,7 @@ Scene read_scene(const json& root) {
     std::set<std::string> names;
     if (const auto v = root.find("paths"); v != root.end()) {
         if (!v->is_array()) fail("/paths", "expected an array, got " + type_of(*v));
-        PathReader reader{&scene.paths};  // a path may use those listed before it
+        PathReader reader{&scene.paths, &scene.warnings};  // a path may use those listed before it
         for (std::size_t i = 0; i < v->size(); ++i) {
             const std::string p = child("/paths", i);
             const json& o = (*v)[i];
@@ -605,7 +614,7 @@ Scene read_scene(const json& root) {
     }
     if (const auto v = root.find("animations"); v != root.end()) {
         if (!v->is_array()) fail("/animations", "expected an array, got " + type_of(*v));
-        PathReader reader{&scene.paths};
+        PathReader reader{&scene.paths, &scene.warnings};
         for (std::size_t i = 0; i < v->size(); ++i) {
             const std::string p = child("/animations", i);
             const json& o = object((*v)[i], p, {"name", "path", "curve", "duration", "delay", "repeat", "yoyo", "reversed"});
