@@ -81,9 +81,9 @@ ParabolaRun::ParabolaRun(const ParabolaSetup& setup) : setup_(setup) {
     }
 }
 
-void ParabolaRun::step(double dt) {
-    if (bead_) bead_->step(dt);
-    else system_->step(dt);
+bool ParabolaRun::step(double dt) {
+    if (bead_) return bead_->step(dt).finite;
+    return system_->step(dt).status != SolveStatus::non_finite;
 }
 
 ParabolaState ParabolaRun::state() const {
@@ -116,12 +116,14 @@ ParabolaSummary run_parabola(const ParabolaSetup& setup, double dt, double secon
     const auto steps = static_cast<long long>(std::llround(seconds / dt));
     ParabolaState s = summary.initial;
     for (long long i = 0; i < steps; ++i) {
-        run.step(dt);
+        const bool finite = run.step(dt);
         s = run.state();
+        s.finite = finite;
         summary.max_residual = std::max(summary.max_residual, std::abs(s.residual));
         summary.max_distance = std::max(summary.max_distance, s.distance);
         summary.max_energy_error = std::max(summary.max_energy_error, std::abs(s.energy - e0) / std::abs(e0));
         if (each) each(s);
+        if (!finite) break;  // the state stands where the step refused to leave the finite range
     }
     summary.final = s;
     return summary;

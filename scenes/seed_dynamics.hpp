@@ -61,6 +61,9 @@ struct ParabolaState {
     double residual = 0.0;  ///< C = x² + 100y (px²)
     double distance = 0.0;  ///< |C|/|∇C| (px, first order)
     double energy = 0.0;    ///< ½m|v|² − m·g·y − force_x·x
+    /// False when the last step would have left the finite range and was not taken (the
+    /// state is the one before it).
+    bool finite = true;
 };
 
 /// One parabola simulation, any method.
@@ -68,7 +71,8 @@ class ParabolaRun {
 public:
     /// Throws grape::Error for bad values (non-finite, mass ≤ 0, ...).
     explicit ParabolaRun(const ParabolaSetup& setup);
-    void step(double dt);
+    /// One step; false when it would leave the finite range (then nothing changes).
+    bool step(double dt);
     ParabolaState state() const;
     const ParabolaSetup& setup() const noexcept { return setup_; }
 

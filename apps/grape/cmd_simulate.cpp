@@ -85,7 +85,7 @@ void run_simulate(const SimulateOptions& o) {
     // A state that leaves the finite range is refused at the step it happens: NaN would
     // otherwise print as null with a successful exit.
     auto check_finite = [&](const scenes::ParabolaState& s, double step) {
-        if (!is_finite(s.x) || !is_finite(s.v) || !std::isfinite(s.energy))
+        if (!s.finite || !is_finite(s.x) || !is_finite(s.v) || !std::isfinite(s.energy))
             throw Error("simulate: the state left the finite range at step " + detail::number_text(step) + " (t = " +
                         detail::number_text(s.t) + " s, x = (" + detail::number_text(s.x.x) + ", " +
                         detail::number_text(s.x.y) + "), energy " + detail::number_text(s.energy) +
