@@ -6,6 +6,7 @@
 
 #include "atomic_file.hpp"
 
+#include "file_text.hpp"
 #include "json_pointer.hpp"
 
 #include <nlohmann/json.hpp>
@@ -740,19 +741,9 @@ const NamedCurve* Scene::find_curve(std::string_view name) const noexcept {
 Scene load_scene(std::string_view text) { return read_scene(parse_text(text, "scene: ")); }
 
 Scene load_scene_file(const std::filesystem::path& file) {
-    std::error_code folder_ec;
-    if (std::filesystem::is_directory(file, folder_ec)) throw Error("cannot read " + file.string() + ": it is a folder, not a scene file");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        std::error_code ec;
-        const bool exists = std::filesystem::exists(file, ec);
-        throw Error("cannot read " + file.string() + ": " + (exists ? "permission denied or not a file" : "no such file"));
-    }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw Error("cannot read " + file.string() + ": read error");
+    const std::string text = detail::read_file_text(file, "a scene file");
     try {
-        return load_scene(buffer.str());
+        return load_scene(text);
     } catch (const Error& e) {
         throw Error(file.string() + ": " + e.what());
     }

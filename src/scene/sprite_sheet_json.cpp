@@ -5,6 +5,7 @@
 
 #include <grape/error.hpp>
 
+#include "file_text.hpp"
 #include "json_pointer.hpp"
 
 #include <nlohmann/json.hpp>
@@ -294,17 +295,9 @@ SpriteSheet load_sprite_sheet(std::string_view text) {
 }
 
 SpriteSheet load_sprite_sheet_file(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        std::error_code ec;
-        const bool exists = std::filesystem::exists(file, ec);
-        throw Error("cannot read " + file.string() + ": " + (exists ? "permission denied or not a file" : "no such file"));
-    }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw Error("cannot read " + file.string() + ": read error");
+    const std::string text = detail::read_file_text(file, "a sprite sheet's JSON");
     try {
-        return load_sprite_sheet(buffer.str());
+        return load_sprite_sheet(text);
     } catch (const Error& e) {
         throw Error(file.string() + ": " + e.what());
     }
