@@ -8,6 +8,8 @@
 #include <grape/path.hpp>
 #include <grape/path_query.hpp>
 
+#include "seed_paths.hpp"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -23,26 +25,8 @@ using grape::ClosestPoint;
 using grape::Path;
 using grape::Vec2;
 
-// 100 drawn segments, cycling C, Q, A, L over random coordinates in a 1000 × 1000 box.
-std::string hundred_segments() {
-    std::mt19937_64 rng(100);
-    std::uniform_real_distribution<double> c(0.0, 1000.0);
-    std::string d = "M500 500";
-    char buf[160];
-    for (int i = 0; i < 100; ++i) {
-        switch (i % 4) {
-            case 0: std::snprintf(buf, sizeof buf, " C%.1f %.1f %.1f %.1f %.1f %.1f", c(rng), c(rng), c(rng), c(rng), c(rng), c(rng)); break;
-            case 1: std::snprintf(buf, sizeof buf, " Q%.1f %.1f %.1f %.1f", c(rng), c(rng), c(rng), c(rng)); break;
-            case 2: std::snprintf(buf, sizeof buf, " A%.1f %.1f %.1f 0 1 %.1f %.1f", 50 + 0.3 * c(rng), 50 + 0.2 * c(rng), 0.36 * c(rng), c(rng), c(rng)); break;
-            default: std::snprintf(buf, sizeof buf, " L%.1f %.1f", c(rng), c(rng));
-        }
-        d += buf;
-    }
-    return d;
-}
-
 const Path& svg() {
-    static const Path path = grape::parse_svg_path(hundred_segments());
+    static const Path path = grape::parse_svg_path(grape::scenes::hundred_segments_svg());
     return path;
 }
 

@@ -1,6 +1,8 @@
 // grape — the seed's paths (see seed_paths.hpp).
 #include "seed_paths.hpp"
 
+#include <cstdio>
+#include <random>
 #include <span>
 
 namespace grape::scenes {
@@ -74,6 +76,27 @@ std::vector<NamedPath> path_gallery() {
                                             CubicBezierPath({360, 540}, {380, 600}, {240, 600}, {260, 580})})},
         {"reparametrized", CubicBezierPath({40, 130}, {60, 200}, {200, 130}, {210, 190}).reparametrized()},
     };
+}
+
+std::string hundred_segments_svg() {
+    std::mt19937_64 rng(100);
+    std::uniform_real_distribution<double> c(0.0, 1000.0);
+    std::string d = "M500 500";
+    char buf[160];
+    for (int i = 0; i < 100; ++i) {
+        // Drawn in sequence first: the order in which a call's arguments are evaluated is
+        // unspecified, and the path must be the same whatever the compiler.
+        double v[6];
+        for (double& x : v) x = c(rng);
+        switch (i % 4) {
+            case 0: std::snprintf(buf, sizeof buf, " C%.1f %.1f %.1f %.1f %.1f %.1f", v[0], v[1], v[2], v[3], v[4], v[5]); break;
+            case 1: std::snprintf(buf, sizeof buf, " Q%.1f %.1f %.1f %.1f", v[0], v[1], v[2], v[3]); break;
+            case 2: std::snprintf(buf, sizeof buf, " A%.1f %.1f %.1f 0 1 %.1f %.1f", 50 + 0.3 * v[0], 50 + 0.2 * v[1], 0.36 * v[2], v[3], v[4]); break;
+            default: std::snprintf(buf, sizeof buf, " L%.1f %.1f", v[0], v[1]);
+        }
+        d += buf;
+    }
+    return d;
 }
 
 }  // namespace grape::scenes

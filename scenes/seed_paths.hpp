@@ -48,4 +48,8 @@ std::vector<NamedPath> seed_paths();
 /// One path of every kind (and every Catmull–Rom type), laid out on a 600 × 600 canvas.
 std::vector<NamedPath> path_gallery();
 
+/// SVG path data of 100 drawn segments cycling C, Q, A, L over pseudo-random coordinates in a
+/// 1000 × 1000 box (a fixed seed): the path-query tests' and benchmarks' long path.
+std::string hundred_segments_svg();
+
 }  // namespace grape::scenes

@@ -49,24 +49,6 @@ using grape::scenes::NamedPath;
 const char* const svg_loops = "M100 300 C 400 0 -100 0 200 300 L 300 300 A 50 50 0 1 1 300 200 "
                               "Q 350 100 400 200 M 500 500 C 600 400 500 400 600 500 Z";
 
-// 100 drawn segments cycling C, Q, A, L over random coordinates (the benchmark's path).
-std::string hundred_segments() {
-    std::mt19937_64 rng(100);
-    std::uniform_real_distribution<double> c(0.0, 1000.0);
-    std::string d = "M500 500";
-    char buf[160];
-    for (int i = 0; i < 100; ++i) {
-        switch (i % 4) {
-            case 0: std::snprintf(buf, sizeof buf, " C%.1f %.1f %.1f %.1f %.1f %.1f", c(rng), c(rng), c(rng), c(rng), c(rng), c(rng)); break;
-            case 1: std::snprintf(buf, sizeof buf, " Q%.1f %.1f %.1f %.1f", c(rng), c(rng), c(rng), c(rng)); break;
-            case 2: std::snprintf(buf, sizeof buf, " A%.1f %.1f %.1f 0 1 %.1f %.1f", 50 + 0.3 * c(rng), 50 + 0.2 * c(rng), 0.36 * c(rng), c(rng), c(rng)); break;
-            default: std::snprintf(buf, sizeof buf, " L%.1f %.1f", c(rng), c(rng));
-        }
-        d += buf;
-    }
-    return d;
-}
-
 std::vector<NamedPath> query_paths() {
     auto paths = grape::scenes::path_gallery();
     for (auto& p : grape::scenes::seed_paths()) paths.push_back({"seed_" + p.name, p.path});
@@ -81,7 +63,7 @@ std::vector<NamedPath> query_paths() {
     paths.push_back({"sine_many_waves", grape::SineWavePath({0, 0}, {300, 100}, 12, 15)});
     paths.push_back({"hermite_cusp", grape::HermiteSplinePath({0, 0, 100, 0, 200, 50}, {300, 300, 300, -300, 100, 0})});
     paths.push_back({"svg_loops", grape::parse_svg_path(svg_loops)});
-    paths.push_back({"svg_hundred_segments", grape::parse_svg_path(hundred_segments())});
+    paths.push_back({"svg_hundred_segments", grape::parse_svg_path(grape::scenes::hundred_segments_svg())});
     paths.push_back({"svg_reparametrized", grape::parse_svg_path(svg_loops).reparametrized()});
     paths.push_back({"spiral_reparametrized", grape::scenes::seed_spiral().reparametrized()});
     return paths;
@@ -547,8 +529,12 @@ TEST(Slice, OffsetPointsLieAtTheDistanceAlongTheNormal) {
             const double u = k / 16.0;
             const grape::PathFrame f = grape::frame(path, u);
             const Vec2 beside = grape::offset_point(path, u, 7.5);
-            EXPECT_NEAR(grape::distance(beside, f.point), 7.5, 1e-14 * 8);
-            EXPECT_NEAR(grape::dot(beside - f.point, f.tangent), 0.0, 1e-13 * 8);
+            // beside = point + 7.5·normal is rounded to the ulp of the coordinates (up to 1000
+            // here, ulp 1.1e-13): a few ulps of |point| + 7.5 bound both the distance and the
+            // tangential part.
+            const double tol = 4.0 * std::numeric_limits<double>::epsilon() * (std::abs(f.point.x) + std::abs(f.point.y) + 7.5);
+            EXPECT_NEAR(grape::distance(beside, f.point), 7.5, tol);
+            EXPECT_NEAR(grape::dot(beside - f.point, f.tangent), 0.0, tol);
         }
     }
     // Beside a circle turning with increasing angle, the positive side is the inside.
