@@ -6,6 +6,10 @@
 // since growing memory detaches the old ones (their length becomes 0).
 
 export interface Vec2 { x: number; y: number; }
+/** The nearest point of a path: its parameter, the point, the distance (world units). */
+export interface ClosestPoint { u: number; point: Vec2; distance: number; }
+/** A path's frame at u: point, unit tangent, unit normal, curvature (1 / world units). */
+export interface PathFrame { point: Vec2; tangent: Vec2; normal: Vec2; curvature: number; }
 export interface Bounds { min: Vec2; max: Vec2; }
 
 interface Deletable { delete(): void; }
@@ -41,6 +45,13 @@ export interface Path extends Deletable {
   sample(us: ArrayLike<number>): Float64Array;
   /** The same shape at constant speed (arc length within 1e-9 of exact). */
   reparametrized(): Path;
+  /** The globally nearest point to (x, y), within 1e-12 of the path's size; ties go to the
+   *  smallest u. With u0, u1: the nearest within that range of u. */
+  closestPoint(x: number, y: number, u0?: number, u1?: number): ClosestPoint;
+  /** The nearest point to a moving (x, y), starting from the last answer's u. */
+  closestPointFrom(x: number, y: number, lastU: number): ClosestPoint;
+  /** Unit tangent, normal and signed curvature at u. */
+  frame(u: number): PathFrame;
   kind(): PathKind;
   /** The same shape object. */
   same(other: Path): boolean;
@@ -289,7 +300,8 @@ export interface PairBitsStatic { new(objectCount: number): PairBits; }
 export interface KeyState extends Deletable {
   press(key: number): void; release(key: number): void; releaseAll(): void;
   isDown(key: number): boolean; pressedThisFrame(key: number): boolean; releasedThisFrame(key: number): boolean;
-  endFrame(): void;
+  /** Ends the frame; with dt (seconds) also gathers the key repeats due (KeyRepeatDef). */
+  endFrame(dt?: number): void;
   mask(keys: ArrayLike<number>): BitVector;
   allDown(mask: BitVector): boolean; anyDown(mask: BitVector): boolean;
   down(): BitVector; keyCount(): number;

@@ -91,6 +91,10 @@ void release(KeyState& k, unsigned key) { k.release(key); }
 bool is_down(const KeyState& k, unsigned key) { return k.is_down(key); }
 bool pressed(const KeyState& k, unsigned key) { return k.pressed_this_frame(key); }
 bool released(const KeyState& k, unsigned key) { return k.released_this_frame(key); }
+// Two overloads in C++ (end_frame() and end_frame(dt), which also gathers key repeats): two
+// arities in JavaScript.
+void end_frame(KeyState& k) { k.end_frame(); }
+void end_frame_after(KeyState& k, double dt) { k.end_frame(dt); }
 BitVector mask(const KeyState& k, val keys) {
     BitVector m(k.key_count());
     for (double key : numbers(keys)) {
@@ -162,7 +166,8 @@ EMSCRIPTEN_BINDINGS(grape_bits) {
         .function("isDown", &is_down)
         .function("pressedThisFrame", &pressed)
         .function("releasedThisFrame", &released)
-        .function("endFrame", method<&KeyState::end_frame>)
+        .function("endFrame", &end_frame)
+        .function("endFrame", guarded<&end_frame_after>)
         .function("mask", guarded<&mask>)
         .function("allDown", guarded<&all_down>)
         .function("anyDown", guarded<&any_down>)

@@ -1,8 +1,10 @@
-// Paths for JavaScript: every kind, SVG path data, point/d1/d2/length/reparametrized.
+// Paths for JavaScript: every kind, SVG path data, point/d1/d2/length/reparametrized, the
+// closest point and the frame (tangent, normal, curvature).
 // Points are plain {x, y} objects; point lists are flat x, y arrays (Float64Array or Array).
 #include "web_util.hpp"
 
 #include <grape/path.hpp>
+#include <grape/path_query.hpp>
 
 #include <emscripten/bind.h>
 
@@ -96,12 +98,22 @@ Path part(const ComplexPath& p, unsigned i) {
 }
 val cues(const ComplexPath& p) { return float64_array(p.cues().data(), p.cues().size()); }
 
+ClosestPoint closest(const Path& p, double x, double y) { return closest_point(p, {x, y}); }
+ClosestPoint closest_in(const Path& p, double x, double y, double u0, double u1) { return closest_point(p, {x, y}, u0, u1); }
+ClosestPoint closest_from(const Path& p, double x, double y, double last_u) { return closest_point_from(p, {x, y}, last_u); }
+PathFrame frame_at(const Path& p, double u) { return frame(p, u); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(grape_path) {
     using namespace emscripten;
     value_object<Vec2>("Vec2").field("x", &Vec2::x).field("y", &Vec2::y);
     value_object<Bounds>("Bounds").field("min", &Bounds::min).field("max", &Bounds::max);
+    value_object<ClosestPoint>("ClosestPoint")
+        .field("u", &ClosestPoint::u).field("point", &ClosestPoint::point).field("distance", &ClosestPoint::distance);
+    value_object<PathFrame>("PathFrame")
+        .field("point", &PathFrame::point).field("tangent", &PathFrame::tangent)
+        .field("normal", &PathFrame::normal).field("curvature", &PathFrame::curvature);
 
     class_<Path>("Path")
         .constructor<>()
@@ -116,6 +128,10 @@ EMSCRIPTEN_BINDINGS(grape_path) {
         .function("flatten", guarded<&flatten>)
         .function("sample", guarded<&sample>)
         .function("reparametrized", guarded<&reparametrized>)
+        .function("closestPoint", guarded<&closest>)
+        .function("closestPoint", guarded<&closest_in>)
+        .function("closestPointFrom", guarded<&closest_from>)
+        .function("frame", guarded<&frame_at>)
         .function("kind", &kind)
         .function("same", &same)
         .class_function("linear", guarded<&linear>)

@@ -48,6 +48,35 @@ test('native and wasm agree', async (t) => {
     }
   });
 
+  await t.test('closest points (the 1e-12 contract) and frames (libm rounding)', () => {
+    // The nearest point is a minimum, flat in u: libm's last-bit differences move u and the
+    // point by more than they move the distance, which both builds promise within 1e-12 of
+    // the path's size. Tangent, normal and curvature come from d1, d2 (arcs through sin/cos):
+    // LIBM_ULPS of their scales, twice for curvature's quotient.
+    const queries = [[3, 4], [250, -40], [-10, 120], [60, 60], [33, -7]];
+    for (const data of SVG) {
+      const path = g.parseSvgPath(data);
+      const b = path.bounds();
+      const size = Math.max(b.max.x - b.min.x, b.max.y - b.min.y);
+      for (const [x, y] of queries) {
+        const c = path.closestPoint(x, y);
+        const n = grape('path', 'closest', data, x, y);
+        assert.ok(Math.abs(c.distance - n.distance) <= 1e-12 * size, `${data} (${x}, ${y}): ${c.distance} vs ${n.distance}`);
+        assert.ok(Math.abs(Math.hypot(c.point.x - x, c.point.y - y) - c.distance) <= 1e-12 * size, `${data} (${x}, ${y})`);
+      }
+      for (const u of [0.3, 0.5, 0.9]) {
+        const f = path.frame(u);
+        const n = grape('path', 'curvature', data, u);
+        close(f.tangent.x, n.tx, LIBM_ULPS, 1, `${data} tx(${u})`);
+        close(f.tangent.y, n.ty, LIBM_ULPS, 1, `${data} ty(${u})`);
+        close(f.normal.x, n.nx, LIBM_ULPS, 1, `${data} nx(${u})`);
+        close(f.normal.y, n.ny, LIBM_ULPS, 1, `${data} ny(${u})`);
+        close(f.curvature, n.curvature, 2 * LIBM_ULPS, Math.max(Math.abs(n.curvature), 1 / size), `${data} κ(${u})`);
+      }
+      path.delete();
+    }
+  });
+
   await t.test('points and derivatives, by u and by arc length', () => {
     for (const data of SVG) {
       const parsed = g.parseSvgPath(data);
