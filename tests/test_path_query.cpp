@@ -24,17 +24,7 @@
 #include <string>
 #include <vector>
 
-// Counts heap allocations so the tests can prove the queries allocate nothing. (GCC cannot
-// see that the replaced new and delete pair up through malloc/free.)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-static std::atomic<long> g_allocations{0};
-void* operator new(std::size_t size) {
-    ++g_allocations;
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "count_allocations.hpp"
 
 namespace {
 
