@@ -7,9 +7,11 @@
 
 #include "path/kernel.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -178,6 +180,34 @@ private:
     std::size_t dead_ = 0;  // records flagged dead and not yet compacted
     int depth_ = 0;         // handler calls in progress
     bool ticking_ = false;
+};
+
+/// The high bit of Slot::dense marks a free slot (its low bits chain to the next free one).
+inline constexpr std::uint32_t free_bit = 0x80000000u;
+
+/// A play counts as finished within play_snap of its end (in plays).
+inline constexpr double play_end = 1.0 - play_snap;
+
+/// A whole number of plays as the engine's 32-bit play counter advances by it: modulo 2³²,
+/// which keeps the parity yoyo needs (every double from 2⁵³ on, and +inf, counts as even).
+inline std::uint32_t wrap_plays(double whole) noexcept {
+    if (!(whole < 1.8446744073709552e19)) return 0;  // ≥ 2⁶⁴ (multiples of 2³²) and +inf
+    return static_cast<std::uint32_t>(std::fmod(whole, 4294967296.0));
+}
+
+/// Throws grape::Error naming `where` for a bad duration or def.
+void validate(std::string_view where, double duration, const AnimationDef& def);
+
+// Counts nested handler calls; removals wait until the outermost one has returned, so a
+// handler can kill anything (itself included) without pulling storage from under a caller.
+struct EngineImpl::Dispatch {
+    EngineImpl& engine;
+    explicit Dispatch(EngineImpl& e) noexcept : engine(e) { ++engine.depth_; }
+    ~Dispatch() {
+        if (--engine.depth_ == 0 && !engine.ticking_) engine.finish_dispatch();
+    }
+    Dispatch(const Dispatch&) = delete;
+    Dispatch& operator=(const Dispatch&) = delete;
 };
 
 }  // namespace grape::detail

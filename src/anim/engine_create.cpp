@@ -1,0 +1,122 @@
+// Creating animations: validation, the records, the extras.
+#include "engine_impl.hpp"
+
+#include <grape/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <string_view>
+
+namespace grape::detail {
+
+void validate(std::string_view where, double duration, const AnimationDef& def) {
+    const std::string w(where);
+    if (!(std::isfinite(duration) && duration > 0.0))
+        throw Error(w + ": duration must be positive and finite (got " + number_text(duration) + ")");
+    if (!std::isfinite(1.0 / duration))
+        throw Error(w + ": duration is too small: 1 / duration overflows (got " + number_text(duration) + ")");
+    if (!(std::isfinite(def.delay) && def.delay >= 0.0))
+        throw Error(w + ": delay must be >= 0 and finite (got " + number_text(def.delay) + ")");
+    if (def.repeat < -1)
+        throw Error(w + ": repeat must be >= 0, or -1 for forever (got " + std::to_string(def.repeat) + ")");
+    if (!(std::isfinite(def.time_scale) && def.time_scale >= 0.0))
+        throw Error(w + ": time_scale must be >= 0 and finite (got " + number_text(def.time_scale) + ")");
+    // The record keeps plays per second and the delay in plays; both, and the end of the last
+    // play in seconds, must be numbers.
+    if (!std::isfinite(def.time_scale / duration))
+        throw Error(w + ": time_scale / duration overflows (time_scale " + number_text(def.time_scale) +
+                    ", duration " + number_text(duration) + ")");
+    if (!std::isfinite(def.delay / duration))
+        throw Error(w + ": delay / duration overflows (delay " + number_text(def.delay) + ", duration " +
+                    number_text(duration) + ")");
+    if (def.repeat >= 0 && !std::isfinite(def.delay + duration * (static_cast<double>(def.repeat) + 1.0)))
+        throw Error(w + ": delay + duration · (repeat + 1) overflows (delay " + number_text(def.delay) +
+                    ", duration " + number_text(duration) + ", repeat " + std::to_string(def.repeat) + ")");
+}
+
+Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay,
+                          std::optional<Extra> extra) {
+    std::uint32_t slot;
+    if (free_slot_ != UINT32_MAX) {
+        slot = free_slot_;
+        free_slot_ = slots_[slot].dense & ~free_bit;
+        if (free_slot_ == (UINT32_MAX & ~free_bit)) free_slot_ = UINT32_MAX;
+    } else {
+        if (slots_.size() >= free_bit) throw Error("Engine: too many animations (2^31)");
+        slot = static_cast<std::uint32_t>(slots_.size());
+        slots_.push_back({0, 0});
+    }
+    const auto dense = static_cast<std::uint32_t>(hot_.size());
+    hot.phase = delay > 0.0 ? -delay / duration : 0.0;
+    if (hot.flags & flag_reversed) hot.flags |= flag_backward;
+    hot_.push_back(hot);
+    cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot, 0, curve});
+    slots_[slot].dense = dense;
+    if (extra) extras_.insert_or_assign(slot, std::move(*extra));
+    ++live_;
+    const Animation handle(owner_, slot, slots_[slot].generation);
+    {
+        Dispatch d(*this);
+        write_state(dense);  // the start state, unless a delay holds it back
+    }
+    return handle;
+}
+
+Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
+                             std::ptrdiff_t rotation_offset, const Path& path, double duration,
+                             const AnimationDef& def, std::function<void(Vec2, double)> on_update) {
+    validate(target ? "create_2d_animation" : "create_animation", duration, def);
+    const auto y_from_x = static_cast<std::ptrdiff_t>(y_offset) - static_cast<std::ptrdiff_t>(x_offset);
+    if (y_from_x < -32768 || y_from_x > 32767)
+        throw Error("create_2d_animation: target.x and target.y must lie within 32 KiB of each other (got " +
+                    std::to_string(y_from_x) + " bytes apart)");
+    Hot h{};
+    h.rate = def.time_scale / duration;
+    h.target = target ? static_cast<char*>(target) + x_offset : nullptr;
+    h.y_offset = static_cast<std::int16_t>(y_from_x);
+    h.kind = def.curve.kind();
+    h.flags = static_cast<std::uint8_t>((is_float ? flag_float : 0) | (def.paused ? flag_paused : 0) |
+                                        (def.yoyo ? flag_yoyo : 0) | (def.reversed ? flag_reversed : 0));
+    std::optional<Extra> extra;
+    if (def.heading || on_update) {
+        extra.emplace();
+        extra->track_heading = def.heading;
+        extra->write_rotation = target && rotation_offset >= 0;
+        extra->rotation_offset = rotation_offset - static_cast<std::ptrdiff_t>(x_offset);
+        if (on_update) extra->on_update_2d = std::make_shared<const std::function<void(Vec2, double)>>(std::move(on_update));
+        h.flags |= flag_custom;
+    }
+    h.path = acquire_path(path);
+    const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
+    return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+}
+
+Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, PathND path, double duration,
+                                const AnimationDef& def, std::function<void(std::span<const double>)> on_update) {
+    const char* where = target ? "create_property_animation" : "create_animation";
+    validate(where, duration, def);
+    if (target && members.size() != path.dimension())
+        throw Error(std::string(where) + ": members and values must match (" + std::to_string(members.size()) +
+                    " members, " + std::to_string(path.dimension()) + " values)");
+    Hot h{};
+    h.rate = def.time_scale / duration;
+    h.target = static_cast<char*>(target);
+    h.kind = def.curve.kind();
+    h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
+                                        (def.reversed ? flag_reversed : 0));
+    Extra extra;
+    extra.values.assign(path.dimension(), 0.0);
+    path.point(def.reversed ? 1.0 : 0.0, extra.values);  // the start values, readable while waiting
+    extra.nd.emplace(std::move(path));
+    extra.members = std::move(members);
+    if (on_update)
+        extra.on_update_nd = std::make_shared<const std::function<void(std::span<const double>)>>(std::move(on_update));
+    h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
+    const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
+    return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+}
+
+}  // namespace grape::detail

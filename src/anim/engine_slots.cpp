@@ -1,0 +1,137 @@
+// Handles and storage: lookup, seek, kill, compaction after a dispatch, tick listeners.
+#include "engine_impl.hpp"
+
+#include <grape/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace grape::detail {
+
+const Hot* EngineImpl::find(std::uint32_t slot, std::uint32_t generation) const noexcept {
+    if (slot >= slots_.size()) return nullptr;
+    const Slot& s = slots_[slot];
+    if (s.generation != generation || (s.dense & free_bit)) return nullptr;
+    return &hot_[s.dense];
+}
+
+const Extra* EngineImpl::extra(std::uint32_t slot) const noexcept {
+    const auto it = extras_.find(slot);
+    return it == extras_.end() ? nullptr : &it->second;
+}
+
+Extra& EngineImpl::extra_for(std::uint32_t slot) { return extras_[slot]; }
+
+void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
+    if (!std::isfinite(seconds)) return;
+    Hot& h = hot_[dense];
+    Cold& c = cold_[dense];
+    const PlayState s = play_at_position(seconds / c.duration, static_cast<double>(c.plays),
+                                         (h.flags & flag_reversed) != 0, (h.flags & flag_yoyo) != 0);
+    c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
+    h.phase = s.phase;
+    h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+    try {
+        Dispatch d(*this);
+        write_state(dense);
+    } catch (...) {  // a throwing on_update handler: the state is set; the error is dropped
+    }
+}
+
+void EngineImpl::set_time_scale(std::uint32_t dense, double scale) noexcept {
+    if (!(std::isfinite(scale) && scale >= 0.0)) return;
+    const double rate = scale / cold_[dense].duration;
+    if (std::isfinite(rate)) hot_[dense].rate = rate;  // an overflowing rate is ignored too
+}
+
+void EngineImpl::mark_dead(std::uint32_t dense) noexcept {
+    Hot& h = hot_[dense];
+    if (h.flags & flag_dead) return;
+    h.flags |= flag_dead;
+    ++slots_[cold_[dense].slot].generation;  // handles go inert now; storage goes later
+    --live_;
+    ++dead_;
+}
+
+void EngineImpl::kill(std::uint32_t dense) noexcept {
+    mark_dead(dense);
+    if (!ticking_ && depth_ == 0) finish_dispatch();
+}
+
+void EngineImpl::kill_all() noexcept {
+    for (std::uint32_t i = 0; i < hot_.size(); ++i) mark_dead(i);
+    if (!ticking_ && depth_ == 0) finish_dispatch();
+}
+
+void EngineImpl::remove_now(std::uint32_t dense) noexcept {
+    const std::uint32_t slot = cold_[dense].slot;
+    release_path(hot_[dense].path);
+    release_curve(cold_[dense].curve);
+    extras_.erase(slot);
+    slots_[slot].dense = free_bit | (free_slot_ & ~free_bit);
+    free_slot_ = slot;
+    const auto last = static_cast<std::uint32_t>(hot_.size() - 1);
+    if (dense != last) {
+        hot_[dense] = hot_[last];
+        cold_[dense] = cold_[last];
+        slots_[cold_[dense].slot].dense = dense;
+    }
+    hot_.pop_back();
+    cold_.pop_back();
+}
+
+void EngineImpl::compact() noexcept {
+    for (std::uint32_t i = 0; i < hot_.size() && dead_ > 0;) {
+        if (hot_[i].flags & flag_dead) {
+            remove_now(i);  // the last record moves into i; look at i again
+            --dead_;
+        } else {
+            ++i;
+        }
+    }
+    dead_ = 0;
+}
+
+void EngineImpl::finish_dispatch() noexcept {
+    if (dead_ > 0) compact();
+    if (listeners_removed_) {
+        std::erase_if(listeners_, [](const Listener& l) { return l.removed; });
+        std::erase_if(new_listeners_, [](const Listener& l) { return l.removed; });
+        listeners_removed_ = false;
+    }
+    if (!new_listeners_.empty()) {
+        try {
+            for (Listener& l : new_listeners_) listeners_.push_back(std::move(l));
+        } catch (...) {  // out of memory: listeners not yet joined are dropped
+        }
+        new_listeners_.clear();
+    }
+}
+
+std::size_t EngineImpl::on_tick(std::function<void(double)> listener) {
+    const std::size_t id = next_listener_++;
+    if (ticking_ || depth_ > 0) new_listeners_.push_back({id, std::move(listener)});
+    else listeners_.push_back({id, std::move(listener)});
+    return id;
+}
+
+void EngineImpl::remove_tick_listener(std::size_t id) noexcept {
+    for (auto* list : {&listeners_, &new_listeners_}) {
+        for (Listener& l : *list) {
+            if (l.id == id && !l.removed) {
+                l.removed = true;  // not called again; erased once no listener is running
+                listeners_removed_ = true;
+                if (!ticking_ && depth_ == 0) finish_dispatch();
+                return;
+            }
+        }
+    }
+}
+
+std::size_t EngineImpl::storage_bytes() const noexcept {
+    return hot_.capacity() * sizeof(Hot) + cold_.capacity() * sizeof(Cold) + slots_.capacity() * sizeof(Slot);
+}
+
+}  // namespace grape::detail

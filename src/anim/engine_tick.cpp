@@ -1,0 +1,211 @@
+// The tick: the hot loop, the slow path for loops and completion, events; state queries.
+#include "engine_impl.hpp"
+
+#include <grape/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "engine_eval.hpp"
+
+namespace grape::detail {
+
+double EngineImpl::progress_of(std::uint32_t dense) const noexcept {
+    const Hot& h = hot_[dense];
+    const double phase = std::clamp(h.phase, 0.0, 1.0);
+    return ease(h.kind, cold_[dense].curve, (h.flags & flag_backward) ? 1.0 - phase : phase);
+}
+
+Vec2 EngineImpl::value_of(std::uint32_t dense) const noexcept { return point(hot_[dense].path, progress_of(dense)); }
+
+double EngineImpl::heading_of(std::uint32_t dense) const noexcept {
+    const Hot& h = hot_[dense];
+    if (const Extra* e = extra(cold_[dense].slot); e && e->track_heading) return e->heading;
+    const double angle = paths_[h.path].path.heading(progress_of(dense));
+    return (h.flags & flag_backward) ? std::remainder(angle + pi, 2.0 * pi) : angle;
+}
+
+// The state at the record's time, written to wherever it goes. Handlers may run.
+void EngineImpl::write_state(std::uint32_t dense) {
+    const Hot& h = hot_[dense];
+    if (h.phase < 0.0) return;  // waiting: nothing is written until the first play starts
+    const double u = progress_of(dense);
+    if (!(h.flags & flag_custom)) {
+        if (h.target) write_2d(h, point(h.path, u));
+        return;
+    }
+    Extra& e = extras_.find(cold_[dense].slot)->second;  // node-based: stable while handlers run
+    if (e.nd) {
+        e.nd->point(u, e.values);
+        char* base = h.target;
+        if (base) {
+            for (std::size_t k = 0; k < e.members.size(); ++k) {
+                if (e.members[k].is_float) *reinterpret_cast<float*>(base + e.members[k].offset) = static_cast<float>(e.values[k]);
+                else *reinterpret_cast<double*>(base + e.members[k].offset) = e.values[k];
+            }
+        }
+        if (e.on_update_nd) {
+            const auto handler = e.on_update_nd;
+            Dispatch d(*this);
+            (*handler)(e.values);
+        }
+        return;
+    }
+    const Path& path = paths_[h.path].path;
+    const Vec2 p = point(h.path, u);
+    const double angle = path.heading(u);
+    e.heading = (h.flags & flag_backward) ? std::remainder(angle + pi, 2.0 * pi) : angle;
+    if (h.target) {
+        write_2d(h, p);
+        if (e.write_rotation) {
+            char* at = h.target + e.rotation_offset;
+            if (h.flags & flag_float) *reinterpret_cast<float*>(at) = static_cast<float>(e.heading);
+            else *reinterpret_cast<double*>(at) = e.heading;
+        }
+    }
+    if (e.on_update_2d) {
+        const auto handler = e.on_update_2d;
+        Dispatch d(*this);
+        (*handler)(p, e.heading);
+    }
+}
+
+// --- the tick --------------------------------------------------------------------------------
+
+void EngineImpl::tick(double dt) {
+    if (!(std::isfinite(dt) && dt >= 0.0))
+        throw Error("Engine::tick: dt must be finite and >= 0 (got " + number_text(dt) + ")");
+    if (ticking_ || depth_ > 0) throw Error("Engine::tick: called from inside one of the engine's own handlers");
+    struct Ticking {
+        EngineImpl& e;
+        explicit Ticking(EngineImpl& engine) noexcept : e(engine) { e.ticking_ = true; }
+        ~Ticking() {
+            e.ticking_ = false;
+            e.finish_dispatch();
+        }
+    } ticking(*this);
+
+    // Records created by handlers during this tick land past n and start on the next tick.
+    const std::size_t n = hot_.size();
+    std::size_t i = 0;
+    while (i < n) {
+        // The common case runs in a tight loop over local pointers. Anything else (paused,
+        // dead, custom writes, waiting, a play ending, nothing to write to) leaves the loop
+        // for the general path, after which the pointers are reloaded: handlers may have
+        // grown the storage.
+        Hot* const hot = hot_.data();
+        Cold* const cold = cold_.data();
+        const PathFast* const fast = path_fast_.data();
+        for (; i < n; ++i) {
+            Hot& h = hot[i];
+            double phase = h.phase + dt * h.rate;
+            if ((h.flags & (flag_paused | flag_dead | flag_custom)) || !(phase >= 0.0) || !h.target) break;
+            if (phase >= play_end) {
+                // A new play that nobody listens for, reached within this tick: handled here.
+                Cold& c = cold[i];
+                if ((h.flags & flag_listens) || phase >= 2.0 - play_snap || (c.plays != 0 && c.play + 1 >= c.plays)) break;
+                ++c.play;
+                phase = std::max(phase - 1.0, 0.0);
+                if (h.flags & flag_yoyo) h.flags ^= flag_backward;
+            }
+            h.phase = phase;
+            const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;
+            const double u = has_parameters(h.kind) ? curves_[cold[i].curve].curve(x) : detail::ease_formula(h.kind, x);
+            const PathFast& f = fast[h.path];
+            Vec2 p;
+            if (f.fast == KernelKind::linear && u >= 0.0 && u <= 1.0) p = f.c[0] + f.c[1] * u;
+            else if (f.fast == KernelKind::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+            else p = point(h.path, u);
+            write_2d(h, p);
+        }
+        if (i == n) break;
+        Hot& h = hot_[i];
+        if (!(h.flags & (flag_paused | flag_dead))) {
+            const double phase = h.phase + dt * h.rate;
+            if (phase < 0.0) h.phase = phase;  // still waiting: nothing to write
+            else advance_slow(static_cast<std::uint32_t>(i), phase);
+        }
+        ++i;
+    }
+
+    if (!listeners_.empty()) {
+        Dispatch d(*this);
+        const std::size_t count = listeners_.size();
+        for (std::size_t k = 0; k < count; ++k) {
+            if (!listeners_[k].removed) listeners_[k].f(dt);  // the vector never grows here
+        }
+    }
+}
+
+// Loops, completion, waiting custom records and custom writes. The plays crossed come from
+// the timing model, counted from the current play (whose direction stands for `reversed`).
+void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
+    Hot& h = hot_[dense];
+    Cold& c = cold_[dense];
+    double loops = 0.0;
+    bool completes = false;
+    const std::uint32_t first_play = c.play;
+    if (phase >= play_end) {
+        const double plays_left = c.plays == 0 ? 0.0 : static_cast<double>(c.plays - c.play);
+        const PlayState s = play_at_position(phase, plays_left, (h.flags & flag_backward) != 0, (h.flags & flag_yoyo) != 0);
+        loops = s.play;
+        completes = s.finished;
+        c.play = completes ? c.plays - 1 : c.play + wrap_plays(s.play);
+        phase = s.phase;
+        h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+    }
+    h.phase = phase;
+    write_state(dense);
+    if (loops > 0.0 || completes) fire_events(dense, first_play, loops, completes);
+}
+
+void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes) {
+    const std::uint32_t slot = cold_[dense].slot;
+    const std::uint32_t generation = slots_[slot].generation;
+    // The state every handler should find; a handler that seeks, kills or restarts this
+    // animation changes it, and then the remaining events of this update are dropped.
+    const std::uint32_t play = cold_[dense].play;
+    const double phase = hot_[dense].phase;
+    auto unchanged = [&] {
+        const Hot& h = hot_[dense];
+        return slots_[slot].generation == generation && cold_[dense].play == play && h.phase == phase &&
+               !(h.flags & flag_dead);
+    };
+    auto play_number = [first_play](double k) {  // play first_play + k as on_loop reports it
+        return static_cast<int>(std::min(static_cast<double>(first_play) + k, static_cast<double>(INT32_MAX)));
+    };
+    if (hot_[dense].flags & flag_listens) {
+        Extra& e = extras_.find(slot)->second;
+        if (loops > 0.0 && e.on_loop) {
+            const auto handler = e.on_loop;
+            Dispatch d(*this);
+            if (loops <= max_loop_events) {
+                for (int k = 1; k <= static_cast<int>(loops); ++k) {
+                    (*handler)(play_number(k), 0);
+                    if (!unchanged()) return;
+                }
+            } else {  // bounded work: one event for the last play, counting the skipped ones
+                const double skipped = loops - 1.0;
+                (*handler)(play_number(loops), skipped < 1.8446744073709552e19 ? static_cast<std::uint64_t>(skipped)
+                                                                               : UINT64_MAX);
+                if (!unchanged()) return;
+            }
+        }
+        if (completes && e.on_complete) {
+            const auto handler = e.on_complete;
+            Dispatch d(*this);
+            try {
+                (*handler)();
+            } catch (...) {
+                if (unchanged()) mark_dead(dense);  // completed all the same: no second completion
+                throw;
+            }
+            if (!unchanged()) return;  // restarted (or killed) by its own handler
+        }
+    }
+    if (completes) mark_dead(dense);
+}
+
+}  // namespace grape::detail
