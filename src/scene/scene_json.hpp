@@ -1,0 +1,82 @@
+// Scene files' JSON, read and written: the helpers that know each value's JSON pointer (so
+// every error names where it is and why), paths, simulations. Internal to the scene module.
+#pragma once
+
+#include <grape/error.hpp>
+#include <grape/path.hpp>
+#include <grape/scene.hpp>
+
+#include "json_pointer.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <initializer_list>
+#include <set>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace grape::scene_io {
+
+using json = nlohmann::json;
+using ordered = nlohmann::ordered_json;
+
+// Nested complex paths deeper than this are refused: no real scene needs it, and it bounds
+// the recursion on hostile input.
+inline constexpr int max_depth = 32;
+// More simulation steps than this is a typo (or an attack), not a scene.
+inline constexpr double max_steps = 1e7;
+
+/// Throws grape::Error "scene: POINTER: WHY".
+[[noreturn]] void fail(const std::string& pointer, const std::string& why);
+
+using detail::child;
+using detail::number_text;
+using detail::type_of;
+
+// An object whose keys must all be among `allowed` (a typo such as "duraton" is an error,
+// not a silently ignored field).
+const json& object(const json& j, const std::string& pointer, std::initializer_list<std::string_view> allowed);
+const json& required(const json& obj, const std::string& pointer, std::string_view key);
+double number(const json& j, const std::string& pointer);
+double number_field(const json& obj, const std::string& pointer, std::string_view key);
+double number_field(const json& obj, const std::string& pointer, std::string_view key, double fallback);
+double positive_field(const json& obj, const std::string& pointer, std::string_view key);
+double non_negative_field(const json& obj, const std::string& pointer, std::string_view key, double fallback);
+bool bool_field(const json& obj, const std::string& pointer, std::string_view key, bool fallback);
+std::string string_value(const json& j, const std::string& pointer);
+std::string string_field(const json& obj, const std::string& pointer, std::string_view key, std::string fallback);
+long long integer(const json& j, const std::string& pointer);
+Vec2 vec2(const json& j, const std::string& pointer);
+Vec2 vec2_field(const json& obj, const std::string& pointer, std::string_view key);
+Vec2 vec2_field(const json& obj, const std::string& pointer, std::string_view key, Vec2 fallback);
+const json& array_field(const json& obj, const std::string& pointer, std::string_view key);
+std::vector<Vec2> points_field(const json& obj, const std::string& pointer, std::string_view key, std::size_t at_least);
+std::string name_field(const json& obj, const std::string& pointer, std::set<std::string>* unique);
+std::string one_of(const json& obj, const std::string& pointer, std::string_view key, std::string fallback,
+                   const std::vector<std::string_view>& allowed);
+std::size_t particle_index(const json& obj, const std::string& pointer, std::string_view key, std::size_t count);
+/// The JSON of `text`; syntax errors name the byte, prefixed by `where`.
+json parse_text(std::string_view text, const std::string& where);
+
+/// Reads a path object (or, with `named`, a path name) at `pointer`.
+struct PathReader {
+    const std::vector<NamedPath>* named = nullptr;  // references allowed when set
+    // When set, SVG data is read by SVG's error rule (the path before the command holding
+    // the first error) and the error is noted here; otherwise it is an error of the scene.
+    std::vector<std::string>* warnings = nullptr;
+
+    Path read(const json& j, const std::string& pointer, int depth) const;
+    Path read_kind(const json& j, const std::string& pointer, const std::string& kind, int depth) const;
+};
+
+ordered point_json(Vec2 p);
+ordered points_json(std::span<const Vec2> points);
+/// A path as the JSON object PathReader reads back to the same path.
+ordered path_json(const Path& path);
+
+SceneSimulation read_simulation(const json& j, const std::string& pointer);
+ordered simulation_json(const SceneSimulation& s);
+
+}  // namespace grape::scene_io
