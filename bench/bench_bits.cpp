@@ -146,7 +146,7 @@ struct BitsetOps {
     }
 };
 
-// Plain word loops over a std::vector<uint64_t>: the "plain countr_zero loop" and a
+// Plain word loops over a std::vector<uint64_t>: a plain countr_zero loop and a
 // std::popcount loop compiled for the popcnt instruction (what -mpopcnt gives).
 struct Words {
     std::vector<std::uint64_t> w = std::vector<std::uint64_t>((bits + 63) / 64);

@@ -263,8 +263,8 @@ TEST(Seed, GravityOnlySeedCorrectedAndSolverAgreeAtRandomStates) {
         const Vec2 solver = solver_force(s, m, weight).force;
         worst = std::max({worst, relative(seed, corrected), relative(seed, solver)});
     }
-    // Each force is a handful of operations on O(1e5) terms: a few ulp relative; 1e-12 is the
-    // issue's bound.
+    // Each force is a handful of operations on O(1e5) terms: a few ulp relative, so 1e-12
+    // leaves three orders of margin.
     EXPECT_LT(worst, 1e-12);
 }
 
@@ -447,7 +447,7 @@ TEST(Parabola, PeriodMatchesTheEllipticIntegralClosedForm) {
             const double expected = parabola_period(x0, setup.g);
             ASSERT_GE(vx.times.size(), 3u);
             // RK4's phase error at dt = 1/240 is ~1e-9 s per period; the interpolation's
-            // error O(dt⁴·|vx⁗|) ~1e-9: 1e-6 s is the bound.
+            // error O(dt⁴·|vx⁗|) ~1e-9: 1e-6 s leaves a 1000× margin.
             EXPECT_NEAR(vx.period(), expected, 1e-6) << to_string(method) << " x0 " << x0;
         }
     }

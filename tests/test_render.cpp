@@ -276,7 +276,7 @@ TEST(Canvas, StrokedCircleLiesWithinAPixel) {
 }
 
 // Anti-aliased coverage sums to the area; cairo's 8-bit coverage rounding (±1/510 per edge
-// pixel over ~2πr edge pixels) is far below the 1 % the issue asks for.
+// pixel over ~2πr edge pixels) stays far below 1 %, the bound checked here.
 TEST(Canvas, FilledShapesHaveTheirArea) {
     {
         Canvas canvas(200, 200);

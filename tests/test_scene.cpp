@@ -379,7 +379,7 @@ TEST(SceneAnimation, ProgressFollowsDelayRepeatYoyoAndReverse) {
 // ------------------------------------------------------------------------------ errors
 
 TEST(SceneErrors, NameThePointerAndTheReason) {
-    // The issue's own example: cues out of order in the fourth animation's path.
+    // A typical slip: cues out of order in the fourth animation's path.
     expect_error(R"({"animations": [
         {"path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},
         {"path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},

@@ -25,7 +25,7 @@ using grape::pi;
 using grape::Vec2;
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
-// The path module's length contract (issue 2): closed forms to 1e-12 relative.
+// The path module's length contract: closed forms to 1e-12 relative.
 constexpr double length_tolerance = 1e-12;
 
 void expect_length(std::string_view data, double expected) {
