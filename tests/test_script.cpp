@@ -101,7 +101,10 @@ struct Resumption {
 };
 
 Script waits(const std::vector<double>& seconds, std::vector<Resumption>& out, const int& tick) {
-    for (double s : seconds) out.push_back({tick, co_await grape::wait(s)});
+    for (double s : seconds) {
+        const double overshoot = co_await grape::wait(s);  // before reading tick: it has moved on
+        out.push_back({tick, overshoot});
+    }
 }
 
 }  // namespace
