@@ -770,3 +770,86 @@ TEST(Script, ElapsedStartsAScriptOnTime) {
     const std::vector<std::pair<std::string, int>> expected = {{"child begins", 2}, {"child waited a", 2}, {"child ends", 4}};
     EXPECT_EQ(log.events, expected);
 }
+
+namespace {
+
+Script awaits_and_logs(Script& child, Log& log) {
+    co_await child;
+    log(child.cancelled() ? "child cancelled" : "child done");
+    co_await grape::wait(0.25);
+    log("after");
+}
+
+Script awaits_twice(Script& child, Log& log) {
+    try {
+        co_await child;  // already awaited by another script
+    } catch (const grape::Error& e) {
+        log(e.what());
+    }
+}
+
+}  // namespace
+
+// A nested script cancelled from outside the chain resumes its parent at the next tick, on
+// the clock (0.5 + 0.25 = 0.75: tick 3 at dt = 1/4).
+TEST(Script, CancellingANestedScriptResumesItsParent) {
+    Engine engine;
+    Log log;
+    Script child = child_waits(log, 10.0, 10.0);
+    Script parent = awaits_and_logs(child, log);
+    parent.start(engine);
+    run(engine, log, 1, 0.25);
+    EXPECT_TRUE(child.alive());  // running, nested
+    Script other = awaits_twice(child, log);
+    other.start(engine);
+    child.cancel();
+    EXPECT_TRUE(child.cancelled());
+    EXPECT_TRUE(parent.alive());
+    run(engine, log, 3, 0.25);
+    const std::vector<std::pair<std::string, int>> expected = {
+        {"child begins", 0},
+        {"Script: co_await on a script another script is already awaiting", 1},
+        {"child cancelled", 2},
+        {"after", 3}};
+    EXPECT_EQ(log.events, expected);
+    EXPECT_TRUE(parent.done());
+}
+
+namespace {
+
+Script cancels_its_parent(Script*& parent, Log& log) {
+    co_await grape::wait(0.25);
+    parent->cancel();
+    log("asked");
+    co_await grape::wait(0.0);  // the parent, and this script with it, stop here
+    log("never");
+}
+
+Script middle(Script*& self, Log& log) {
+    co_await cancels_its_parent(self, log);
+    log("never");
+}
+
+Script outer_logs(Script& middle_script, Log& log) {
+    co_await middle_script;
+    log(middle_script.cancelled() ? "middle cancelled" : "middle done");
+}
+
+}  // namespace
+
+// Cancelled by the chain's own code, a nested script stops at the next co_await and the
+// script awaiting it resumes within the same tick.
+TEST(Script, ANestedScriptCancelledFromWithinResumesItsParentAtOnce) {
+    Engine engine;
+    Log log;
+    Script* middle_ptr = nullptr;
+    Script m = middle(middle_ptr, log);
+    middle_ptr = &m;
+    Script outer = outer_logs(m, log);
+    outer.start(engine);
+    run(engine, log, 2, 0.25);
+    const std::vector<std::pair<std::string, int>> expected = {{"asked", 1}, {"middle cancelled", 1}};
+    EXPECT_EQ(log.events, expected);
+    EXPECT_TRUE(outer.done());
+    EXPECT_TRUE(m.cancelled());
+}

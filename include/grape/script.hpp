@@ -34,7 +34,8 @@
 // killing what it awaits if `OnCancel::kill_awaited` (handles with `kill()` are killed, started
 // scripts cancelled). A script that cancels itself, or a script containing it, from its own
 // code stops at its next co_await, which then does not resume. Cancelling a nested script
-// resumes the script awaiting it at its next tick, as a killed animation would.
+// resumes the script awaiting it at the next tick, as a killed animation would (within the
+// same tick when the chain's own code cancelled it).
 //
 // Errors: an exception leaving a nested script is rethrown at the co_await awaiting it; one
 // leaving a started script ends it (failed(), error()) and goes to `ScriptDef::on_error`
