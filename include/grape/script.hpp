@@ -47,6 +47,11 @@
 // destroyed with the Script objects; a script's locals must then not use the engine in their
 // destructors. `Engine::kill_all` kills the animations scripts await, which resume as usual.
 //
+// As with any coroutine, what the script takes by reference must outlive it, and a lambda
+// with captures must not itself be the coroutine (its captures die with the lambda). Awaited
+// handles are copied into the frame; their kill() must not throw. A script started inside a
+// tick (by another script or a handler) sees its first dt at the next tick.
+//
 // Running costs no allocation per tick: start() allocates the listener once, the frame is
 // allocated when the coroutine is called. Threads: a script belongs to its engine's thread.
 #pragma once
