@@ -266,6 +266,7 @@ private:
     explicit Script(std::coroutine_handle<detail::ScriptPromise> h) noexcept : handle_(h) { h.promise().owner_ = this; }
     detail::ScriptState state() const noexcept { return handle_ ? handle_.promise().state_ : state_; }
     void release() noexcept;
+    OnCancel default_on_cancel() const noexcept;
 
     std::coroutine_handle<detail::ScriptPromise> handle_{};
     detail::ScriptState state_ = detail::ScriptState::idle;  // once the frame is gone

@@ -66,6 +66,13 @@ void cancel_now(ScriptPromise* p, OnCancel mode) noexcept {
         r->leaf_ = {};
         r->state_ = ScriptState::cancelled;  // nested Scripts destroyed with p's frame just free theirs
     }
+    // A frame below p whose Script went away while it ran belongs to nobody: freed here,
+    // innermost first. The others go with the Scripts (or the frames) holding them.
+    for (ScriptPromise* r = innermost(p); r != p;) {
+        ScriptPromise* up = r->parent_;
+        if (!r->owner_) r->handle().destroy();
+        r = up;
+    }
     p->handle().destroy();  // the promise's destructor tells the awaiting script, the owner, the engine
 }
 
@@ -181,6 +188,7 @@ void cancel_script(ScriptPromise* p, OnCancel mode) noexcept {
 }
 
 ScriptPromise::~ScriptPromise() {
+    if (child_ && child_->parent_ == this) child_->parent_ = nullptr;  // held elsewhere: outlives this
     if (parent_ && parent_->child_ == this) {
         parent_->child_ = nullptr;
         parent_->waiting_ = Waiting::child_gone;
@@ -308,8 +316,7 @@ Script::~Script() { release(); }
 
 void Script::release() noexcept {
     if (!handle_) return;
-    detail::ScriptPromise& p = handle_.promise();
-    detail::cancel_script(&p, p.root_->def_.on_cancel);
+    detail::cancel_script(&handle_.promise(), default_on_cancel());
     if (handle_) {  // deferred: the driver frees the frame once the chain is off the stack
         handle_.promise().owner_ = nullptr;
         handle_ = {};
@@ -337,7 +344,13 @@ void Script::start(Engine& engine, ScriptDef def) {
 std::exception_ptr Script::error() const noexcept { return handle_ ? handle_.promise().error_ : error_; }
 
 void Script::cancel() noexcept {
-    if (handle_) cancel(handle_.promise().root_->def_.on_cancel);
+    if (handle_) cancel(default_on_cancel());
+}
+
+// The started script's choice; only a running frame's root is sure to exist.
+OnCancel Script::default_on_cancel() const noexcept {
+    const detail::ScriptPromise& p = handle_.promise();
+    return p.state_ == detail::ScriptState::running ? p.root_->def_.on_cancel : OnCancel::kill_awaited;
 }
 
 void Script::cancel(OnCancel what) noexcept {
