@@ -161,8 +161,9 @@ struct ListenerToken {
 
 struct Listener {
     std::shared_ptr<ListenerToken> token;
+    ScriptLink* link;  // token's: one load less on every tick
     void operator()(double dt) const {
-        if (ScriptPromise* root = token->link->owner) {
+        if (ScriptPromise* root = link->owner) {
             root->clock_.add(dt);
             drive(root);
         }
@@ -330,7 +331,7 @@ void Script::start(Engine& engine, ScriptDef def) {
     if (!(std::isfinite(def.elapsed) && def.elapsed >= 0.0))
         throw Error("Script::start: def.elapsed must be finite and >= 0 (got " + detail::number_text(def.elapsed) + ")");
     auto link = std::make_shared<detail::ScriptLink>();
-    const std::size_t id = engine.on_tick(detail::Listener{std::make_shared<detail::ListenerToken>(link)});
+    const std::size_t id = engine.on_tick(detail::Listener{std::make_shared<detail::ListenerToken>(link), link.get()});
     link->owner = &p;  // only now: a failed on_tick must not read as the engine going away
     p.engine_ = &engine;
     p.listener_ = id;
