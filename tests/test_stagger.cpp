@@ -199,3 +199,28 @@ TEST(Stagger, OneCallCreatesTheAnimations) {
     }
     EXPECT_EQ(engine.size(), 5u);
 }
+
+// Over random defs: every offset lies in [0, |V|] and, with distinct distances and a curve
+// from 0 to 1, the first start is 0 and the last |V| (to rounding: 1e-15 relative).
+TEST(Stagger, OffsetsSpanExactlyTheSpread) {
+    std::mt19937_64 rng(8);
+    for (int k = 0; k < 500; ++k) {
+        const std::size_t n = 2 + rng() % 40;
+        const double amount = std::uniform_real_distribution<double>(-3.0, 3.0)(rng);
+        const StaggerFrom from = static_cast<StaggerFrom>(rng() % 6);
+        const std::size_t columns = rng() % 2 ? 0 : 1 + rng() % n;
+        const StaggerAxis axis = static_cast<StaggerAxis>(rng() % 3);
+        const grape::Curve curve = rng() % 2 ? grape::Curve::linear() : grape::Curve::sine_in_out();
+        const StaggerDef def{.amount = amount, .from = from, .index = rng() % n, .seed = rng(), .grid = {.columns = columns},
+                             .axis = axis, .curve = curve};
+        const std::vector<double> got = stagger_offsets(n, def);
+        const double spread = std::abs(amount);
+        const auto [lo, hi] = std::minmax_element(got.begin(), got.end());
+        EXPECT_GE(*lo, 0.0) << k;
+        EXPECT_LE(*hi, spread * (1 + 1e-15)) << k;
+        if (*hi - *lo > 0.0) {  // not all distances equal (e.g. axis y on one row)
+            EXPECT_EQ(*lo, 0.0) << k;
+            EXPECT_NEAR(*hi, spread, 1e-15 * spread) << k;
+        }
+    }
+}
