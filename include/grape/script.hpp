@@ -54,8 +54,8 @@
 //
 // Running costs no allocation per tick: start() allocates the listener once, the frame is
 // allocated when the coroutine is called. Threads: a script belongs to its engine's thread.
-// Needs the standard <coroutine> header (g++ ≥ 11, clang with libstdc++ or libc++ ≥ 14; not
-// emscripten 3.1.6, whose build of grape leaves scripts out).
+// Needs the standard <coroutine> header (g++ ≥ 11, clang 14 with libstdc++; not the libc++ of
+// emscripten 3.1.6, so grape built for the web leaves scripts out).
 #pragma once
 
 #include <grape/anim.hpp>
