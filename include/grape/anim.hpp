@@ -22,6 +22,13 @@
 // from a table the path module builds once per shared path, within 2e-10·length of
 // Path::point.
 //
+// Targets: `create_2d_animation(object, ...)`, `create_property_animation` and
+// `animate(object, ...)` write to the object's address (raw: it must outlive the animation and
+// stay in place); the linked forms of target.hpp (std::shared_ptr, grape::Animated,
+// grape::linked, grape::element, grape::accessor) are looked up at each update and stop
+// cleanly when the object is gone. Typed values (colours, angles, your own types) go through
+// `animate` and value.hpp's one interpolation point.
+//
 // Limits: at most 65,535 distinct curves with parameters (back, elastic, cubic-bezier, steps,
 // monotone; equal curves share one) alive in one engine at once, and 2³¹ animations;
 // creation throws grape::Error beyond them.
@@ -234,7 +241,8 @@ public:
 
     /// Moves `target.x` and `target.y` (both double or both float) along a 2-D path for
     /// `duration` seconds (> 0 and finite) per play. With `def.heading` and a `rotation`
-    /// member of the same type, the heading is written there too. Every creation throws
+    /// member (double or float; any other type does not compile), the heading is written
+    /// there too. A T deriving from grape::Animated is linked (see target.hpp). Every creation throws
     /// grape::Error for a bad duration or def, and for timings a double cannot hold: plays
     /// per second (time_scale / duration), delay / duration or the end time overflowing.
     template <class T>
