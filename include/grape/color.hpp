@@ -8,6 +8,8 @@
 //   engine.animate(sprite, &Sprite::tint, grape::to(blue), 1.0, {}, grape::ColorLerp{grape::ColorSpace::oklab});
 #pragma once
 
+#include <grape/value.hpp>
+
 #include <string>
 #include <string_view>
 
@@ -48,6 +50,20 @@ Oklab to_oklab(const Color& c) noexcept;
 /// outside [0, 1]).
 Color from_oklab(const Oklab& lab, double alpha = 1.0) noexcept;
 
+/// Two colours converted once into `space`, mixed at any t: ColorMix(a, b, space)(t) is
+/// mix(a, b, t, space), bit for bit.
+class ColorMix {
+public:
+    ColorMix() noexcept = default;
+    ColorMix(const Color& a, const Color& b, ColorSpace space) noexcept;
+    Color operator()(double t) const noexcept;
+
+private:
+    Color a_, b_;
+    double pa_[3] = {}, pb_[3] = {};  // the ends' components in the space
+    ColorSpace space_ = ColorSpace::linear_srgb;
+};
+
 /// (1 − t)·a + t·b mixed in `space` with premultiplied alpha, as CSS Color 4 interpolates (a
 /// transparent end lends no colour); exactly a at t = 0 and b at t = 1.
 Color mix(const Color& a, const Color& b, double t, ColorSpace space = ColorSpace::linear_srgb) noexcept;
@@ -59,6 +75,16 @@ inline Color lerp(const Color& a, const Color& b, double t) noexcept { return mi
 struct ColorLerp {
     ColorSpace space = ColorSpace::oklab;
     Color operator()(const Color& a, const Color& b, double t) const noexcept { return mix(a, b, t, space); }
+    ColorMix prepare(const Color& a, const Color& b) const noexcept { return ColorMix(a, b, space); }
+};
+
+/// Colours animate in linear light, their ends converted once.
+template <>
+struct Interpolate<Color> {
+    static Color lerp(const Color& a, const Color& b, double t) noexcept { return mix(a, b, t); }
+    static ColorMix prepare(const Color& a, const Color& b) noexcept {
+        return ColorMix(a, b, ColorSpace::linear_srgb);
+    }
 };
 
 /// A colour from CSS text: `#rgb`, `#rgba`, `#rrggbb`, `#rrggbbaa` (hex digits of either case)

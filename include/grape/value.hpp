@@ -18,6 +18,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -36,7 +37,9 @@ V call_lerp(const V& a, const V& b, double t) {
 }  // namespace detail
 
 /// The customization point: `lerp(a, b, t)` for V (specialize for types you cannot add a
-/// lerp beside).
+/// lerp beside). A specialization may also give `static P prepare(const V& a, const V& b)`,
+/// P callable as `V(double t)` with P(t) == lerp(a, b, t): animations then prepare their ends
+/// once (colours convert them to linear light once, not at every update).
 template <class V>
 struct Interpolate {
     static V lerp(const V& a, const V& b, double t)
@@ -57,6 +60,11 @@ struct Lerp {
     template <Interpolatable V>
     V operator()(const V& a, const V& b, double t) const {
         return Interpolate<V>::lerp(a, b, t);
+    }
+    template <Interpolatable V>
+        requires requires(const V& a) { Interpolate<V>::prepare(a, a); }
+    auto prepare(const V& a, const V& b) const {
+        return Interpolate<V>::prepare(a, b);
     }
 };
 
@@ -127,15 +135,38 @@ concept addable = requires(const V& a, const V& b) {
 };
 
 /// Member `member` of a T (derived from C), from → to through `interp`.
+/// An interpolator that can prepare its ends once: interp.prepare(a, b)(t).
+template <class Interp, class V>
+concept preparable = requires(const Interp& i, const V& a, double t) {
+    { i.prepare(a, a)(t) } -> std::convertible_to<V>;
+};
+struct Unprepared {};
+template <class Interp, class V, bool = preparable<Interp, V>>
+struct prepared_type {
+    using type = Unprepared;
+};
+template <class Interp, class V>
+struct prepared_type<Interp, V, true> {
+    using type = std::optional<decltype(std::declval<const Interp&>().prepare(std::declval<const V&>(),
+                                                                                 std::declval<const V&>()))>;
+};
+
 template <class T, class C, class V, class Interp>
 struct MemberTrack final : ValueTrack {
+    using Prepared = typename prepared_type<Interp, V>::type;
     V C::*member;
     V from;
     V to;
     ValueMode mode;
     Interp interp;
+    Prepared prepared{};
     MemberTrack(V C::*m, Tween<V> tween, Interp i)
-        : member(m), from(std::move(tween.from)), to(std::move(tween.to)), mode(tween.mode), interp(std::move(i)) {}
+        : member(m), from(std::move(tween.from)), to(std::move(tween.to)), mode(tween.mode), interp(std::move(i)) {
+        if (mode == ValueMode::from_to) prepare();
+    }
+    void prepare() {
+        if constexpr (preparable<Interp, V>) prepared.emplace(interp.prepare(from, to));
+    }
     static C& object(void* o) noexcept { return *static_cast<C*>(static_cast<T*>(o)); }
     void start(void* o) override {
         if (mode == ValueMode::from_to) return;
@@ -143,8 +174,12 @@ struct MemberTrack final : ValueTrack {
         if constexpr (addable<V>) {
             if (mode == ValueMode::relative) to = static_cast<V>(from + to);
         }
+        prepare();
     }
-    void write(void* o, double u) override { object(o).*member = static_cast<V>(interp(from, to, u)); }
+    void write(void* o, double u) override {
+        if constexpr (preparable<Interp, V>) object(o).*member = static_cast<V>((*prepared)(u));
+        else object(o).*member = static_cast<V>(interp(from, to, u));
+    }
 };
 }  // namespace detail
 

@@ -79,23 +79,36 @@ Color from_oklab(const Oklab& lab, double alpha) noexcept {
     return {linear_to_srgb(rgb[0]), linear_to_srgb(rgb[1]), linear_to_srgb(rgb[2]), alpha};
 }
 
-Color mix(const Color& a, const Color& b, double t, ColorSpace space) noexcept {
-    if (t == 0.0) return a;
-    if (t == 1.0) return b;
-    const double alpha = a.a * (1.0 - t) + b.a * t;
+ColorMix::ColorMix(const Color& a, const Color& b, ColorSpace space) noexcept : a_(a), b_(b), space_(space) {
+    if (space == ColorSpace::oklab) {
+        const Oklab la = to_oklab(a), lb = to_oklab(b);
+        pa_[0] = la.L, pa_[1] = la.a, pa_[2] = la.b;
+        pb_[0] = lb.L, pb_[1] = lb.a, pb_[2] = lb.b;
+    } else {
+        pa_[0] = srgb_to_linear(a.r), pa_[1] = srgb_to_linear(a.g), pa_[2] = srgb_to_linear(a.b);
+        pb_[0] = srgb_to_linear(b.r), pb_[1] = srgb_to_linear(b.g), pb_[2] = srgb_to_linear(b.b);
+    }
+}
+
+Color ColorMix::operator()(double t) const noexcept {
+    if (t == 0.0) return a_;
+    if (t == 1.0) return b_;
+    const double alpha = a_.a * (1.0 - t) + b_.a * t;
     // Premultiplied: each end's components weigh by its alpha. Where the mixed alpha is 0
     // there is no colour to recover; the components are then mixed without weights.
     const bool weigh = alpha > 0.0;
-    const double wa = weigh ? a.a * (1.0 - t) / alpha : 1.0 - t;
-    const double wb = weigh ? b.a * t / alpha : t;
-    if (space == ColorSpace::oklab) {
-        const Oklab la = to_oklab(a), lb = to_oklab(b);
-        return from_oklab({la.L * wa + lb.L * wb, la.a * wa + lb.a * wb, la.b * wa + lb.b * wb}, alpha);
-    }
-    auto channel = [&](double ca, double cb) {
-        return linear_to_srgb(srgb_to_linear(ca) * wa + srgb_to_linear(cb) * wb);
-    };
-    return {channel(a.r, b.r), channel(a.g, b.g), channel(a.b, b.b), alpha};
+    const double wa = weigh ? a_.a * (1.0 - t) / alpha : 1.0 - t;
+    const double wb = weigh ? b_.a * t / alpha : t;
+    double m[3];
+    for (int k = 0; k < 3; ++k) m[k] = pa_[k] * wa + pb_[k] * wb;
+    if (space_ == ColorSpace::oklab) return from_oklab({m[0], m[1], m[2]}, alpha);
+    return {linear_to_srgb(m[0]), linear_to_srgb(m[1]), linear_to_srgb(m[2]), alpha};
+}
+
+Color mix(const Color& a, const Color& b, double t, ColorSpace space) noexcept {
+    if (t == 0.0) return a;
+    if (t == 1.0) return b;
+    return ColorMix(a, b, space)(t);
 }
 
 // --- CSS text ----------------------------------------------------------------------------------
