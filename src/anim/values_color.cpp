@@ -136,7 +136,12 @@ Color parse_hex(std::string_view text, std::string_view digits) {
         int value = 0;
         for (std::size_t j = 0; j < per; ++j) {
             const int d = hex_digit(digits[k * per + j]);
-            if (d < 0) bad(text, "'" + std::string(1, digits[k * per + j]) + "' is not a hex digit");
+            if (d < 0) {
+                std::string why(1, '\'');  // appended, not operator+: g++ 12 -O3 warns falsely there
+                why += digits[k * per + j];
+                why += "' is not a hex digit";
+                bad(text, why);
+            }
             value = value * 16 + d;
         }
         if (per == 1) value *= 17;  // #f00 is #ff0000
