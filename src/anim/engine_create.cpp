@@ -100,7 +100,7 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
     h.path = acquire_path(path);
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
-    remember_scale(a.slot_, def.time_scale);
+    if (find(a.slot_, a.generation_)) remember_scale(a.slot_, def.time_scale);  // unless a handler killed it
     return a;
 }
 
@@ -128,7 +128,7 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
-    remember_scale(a.slot_, def.time_scale);
+    if (find(a.slot_, a.generation_)) remember_scale(a.slot_, def.time_scale);  // unless a handler killed it
     return a;
 }
 

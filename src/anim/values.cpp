@@ -26,7 +26,7 @@ Animation EngineImpl::create_value(void* object, std::unique_ptr<TargetRef> ref,
     h.path = acquire_path(Path());  // shared placeholder: the value comes from the track
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
-    remember_scale(a.slot_, def.time_scale);
+    if (find(a.slot_, a.generation_)) remember_scale(a.slot_, def.time_scale);  // unless a handler killed it
     return a;
 }
 
