@@ -6,6 +6,7 @@
 // shape i % 1024. Reports ns per animation update and bytes per animation, then a summary
 // with the ratios.
 #include <grape/anim.hpp>
+#include <grape/color.hpp>
 
 #include "seed_animations.hpp"
 
@@ -204,6 +205,86 @@ void BM_floor(benchmark::State& state) {
     benchmark::DoNotOptimize(targets.data());
 }
 
+// Typed values: N animations of one member of a plain struct, same durations, curve and
+// yoyo, through Engine::animate: a colour (linear light), a colour in OKLab, a user type with
+// its own lerp (three doubles), and a double.
+namespace user {
+struct Hsv {
+    double h = 0, s = 0, v = 0;
+};
+Hsv lerp(const Hsv& a, const Hsv& b, double t) noexcept {
+    return {a.h + (b.h - a.h) * t, a.s + (b.s - a.s) * t, a.v + (b.v - a.v) * t};
+}
+}  // namespace user
+
+struct TypedTarget {
+    grape::Color tint{};
+    user::Hsv hsv{};
+    double value = 0;
+};
+
+enum class TypedKind { color, color_oklab, user, scalar };
+
+void typed_bench(benchmark::State& state, TypedKind kind, const char* name) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<TypedTarget> targets(n);
+    const long long before = live_bytes.load();
+    auto engine = std::make_unique<grape::Engine>();
+    const grape::AnimationDef def{.curve = grape::Curve::quad_in_out(), .repeat = -1, .yoyo = true};
+    for (std::size_t i = 0; i < n; ++i) {
+        const double d = grape::scenes::bench_duration(i);
+        const double k = static_cast<double>(i % 1024) / 1024.0;
+        switch (kind) {
+            case TypedKind::color:
+                engine->animate(targets[i], &TypedTarget::tint, grape::from_to(grape::Color{k, 0.2, 0.9, 1}, grape::Color{0.1, k, 0.3, 0.5}), d, def);
+                break;
+            case TypedKind::color_oklab:
+                engine->animate(targets[i], &TypedTarget::tint, grape::from_to(grape::Color{k, 0.2, 0.9, 1}, grape::Color{0.1, k, 0.3, 0.5}), d, def,
+                                grape::ColorLerp{grape::ColorSpace::oklab});
+                break;
+            case TypedKind::user:
+                engine->animate(targets[i], &TypedTarget::hsv, grape::from_to(user::Hsv{k, 1, 1}, user::Hsv{360 * k, 0.5, 0}), d, def);
+                break;
+            case TypedKind::scalar:
+                engine->animate(targets[i], &TypedTarget::value, grape::from_to(k, 1000 * k), d, def);
+                break;
+        }
+    }
+    const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
+    engine->tick(frame);
+    run(state, name, bytes, [&] {
+        engine->tick(frame);
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
+void BM_grape_color(benchmark::State& s) { typed_bench(s, TypedKind::color, "grape_color"); }
+void BM_grape_color_oklab(benchmark::State& s) { typed_bench(s, TypedKind::color_oklab, "grape_color_oklab"); }
+void BM_grape_user_type(benchmark::State& s) { typed_bench(s, TypedKind::user, "grape_user_type"); }
+void BM_grape_typed_double(benchmark::State& s) { typed_bench(s, TypedKind::scalar, "grape_typed_double"); }
+
+// The property animation of one double (create_property_animation), for the typed double.
+void BM_grape_property_double(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<TypedTarget> targets(n);
+    const long long before = live_bytes.load();
+    auto engine = std::make_unique<grape::Engine>();
+    const grape::AnimationDef def{.curve = grape::Curve::quad_in_out(), .repeat = -1, .yoyo = true};
+    for (std::size_t i = 0; i < n; ++i) {
+        const double k = static_cast<double>(i % 1024) / 1024.0;
+        engine->create_property_animation(targets[i], {&TypedTarget::value}, {k}, {1000 * k},
+                                          grape::scenes::bench_duration(i), def);
+    }
+    const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
+    engine->tick(frame);
+    run(state, "grape_property_double", bytes, [&] {
+        engine->tick(frame);
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
     b->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(0.5);
 }
@@ -214,6 +295,11 @@ BENCHMARK(BM_grape_cubic)->Apply(sizes);
 BENCHMARK(BM_grape_reparam_cubic)->Apply(sizes);
 BENCHMARK(BM_tweeny_linear)->Apply(sizes);
 BENCHMARK(BM_tweeny_quad)->Apply(sizes);
+BENCHMARK(BM_grape_color)->Apply(sizes);
+BENCHMARK(BM_grape_color_oklab)->Apply(sizes);
+BENCHMARK(BM_grape_user_type)->Apply(sizes);
+BENCHMARK(BM_grape_typed_double)->Apply(sizes);
+BENCHMARK(BM_grape_property_double)->Apply(sizes);
 
 }  // namespace
 
@@ -232,7 +318,8 @@ int main(int argc, char** argv) {
         const auto tw = results.find(key("tweeny_quad", n));
         const auto fl = results.find(key("floor", n));
         for (const char* name : {"floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "tweeny_linear",
-                                 "tweeny_quad"}) {
+                                 "tweeny_quad", "grape_color", "grape_color_oklab", "grape_user_type",
+                                 "grape_typed_double", "grape_property_double"}) {
             const auto it = results.find(key(name, n));
             if (it == results.end()) continue;
             const double r = it->second.median();

@@ -22,6 +22,13 @@
 // from a table the path module builds once per shared path, within 2e-10·length of
 // Path::point.
 //
+// Targets: `create_2d_animation(object, ...)`, `create_property_animation` and
+// `animate(object, ...)` write to the object's address (raw: it must outlive the animation and
+// stay in place); the linked forms of target.hpp (std::shared_ptr, grape::Animated,
+// grape::linked, grape::element, grape::accessor) are looked up at each update and stop
+// cleanly when the object is gone. Typed values (colours, angles, your own types) go through
+// `animate` and value.hpp's one interpolation point.
+//
 // Limits: at most 65,535 distinct curves with parameters (back, elastic, cubic-bezier, steps,
 // monotone; equal curves share one) alive in one engine at once, and 2³¹ animations;
 // creation throws grape::Error beyond them.
@@ -34,8 +41,11 @@
 #pragma once
 
 #include <grape/curve.hpp>
+#include <grape/error.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
+#include <grape/target.hpp>
+#include <grape/value.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -62,6 +72,14 @@ struct AnimationDef {
     bool paused = false;      ///< create paused (resume() starts it)
     bool heading = false;     ///< also track the path's heading (radians); 2-D animations
                               ///< bound to a target with a `rotation` member write it there
+    double heading_offset = 0.0;      ///< radians added to the heading (a sprite drawn facing
+                                      ///< up instead of along +x: π/2)
+    bool heading_continuous = false;  ///< unwrapped: each heading within π of the previous
+                                      ///< update's, so a spinning object never jumps by 2π
+                                      ///< (else wrapped into (−π, π])
+    bool overwrite = false;   ///< when its first play begins, kill the target's other started
+                              ///< animations that write any of the same bytes (GSAP's
+                              ///< overwrite "auto"); found through the target index
 };
 
 // --- the timing model: pure functions of time ------------------------------------------------
@@ -139,7 +157,8 @@ public:
     bool waiting() const noexcept;
     bool paused() const noexcept;
 
-    /// The current 2-D position (the path's start while waiting; {0, 0} if not alive or N-D).
+    /// The current 2-D position; while waiting, where the first play starts (the path's start,
+    /// or its end for a reversed animation); {0, 0} if not alive, N-D or typed.
     Vec2 value() const noexcept;
     /// The current values of an N-D animation (empty if not alive or 2-D).
     std::span<const double> values() const noexcept;
@@ -155,10 +174,12 @@ public:
     int repetition() const noexcept;
     /// Seconds per play (0 if not alive).
     double duration() const noexcept;
-    /// Animation seconds per engine second (0 if not alive).
+    /// Animation seconds per engine second, exactly as set (0 if not alive).
     double time_scale() const noexcept;
 
-    /// Stops advancing (keeps its state and its target's values).
+    /// Stops advancing (keeps its state and its target's values). Called from its own on_loop
+    /// handler, it also stops the tick that fired the event: the animation holds at the start
+    /// of that play and fires no further loop events in that tick.
     void pause() const noexcept;
     /// Advances again from where it paused.
     void resume() const noexcept;
@@ -220,10 +241,12 @@ public:
 
     /// Moves `target.x` and `target.y` (both double or both float) along a 2-D path for
     /// `duration` seconds (> 0 and finite) per play. With `def.heading` and a `rotation`
-    /// member of the same type, the heading is written there too. Every creation throws
+    /// member (double or float; any other type does not compile), the heading is written
+    /// there too. A T deriving from grape::Animated is linked (see target.hpp). Every creation throws
     /// grape::Error for a bad duration or def, and for timings a double cannot hold: plays
     /// per second (time_scale / duration), delay / duration or the end time overflowing.
     template <class T>
+        requires(!detail::wrapped_target<std::remove_cv_t<T>>)
     Animation create_2d_animation(T& target, const Path& path, double duration, const AnimationDef& def = {});
 
     /// Moves any double/float members of `target` from `from` to `to` (one value per member).
@@ -244,6 +267,34 @@ public:
     Animation create_animation(PathND path, double duration, const AnimationDef& def = {},
                                std::function<void(std::span<const double>)> on_update = {});
 
+    /// The same on a linked target (std::shared_ptr, grape::linked, grape::element,
+    /// grape::accessor; see target.hpp): stops cleanly once the target is gone.
+    template <class Target>
+        requires detail::wrapped_target<std::remove_cvref_t<Target>>
+    Animation create_2d_animation(Target&& target, const Path& path, double duration, const AnimationDef& def = {});
+
+    /// Drives `member` of the target (any type `Interpolate` knows: double, float, Vec2, Color,
+    /// your own through a lerp; see value.hpp) as `tween` says: grape::from_to(a, b), grape::to(b)
+    /// (from the member's value when the first play begins) or grape::by(d) (by d from that
+    /// value). The value at curve progress u is interp(from, to, u): AngleLerp{} for angles,
+    /// ColorLerp{} for colours in OKLab. The target is an object (raw: it must stay alive and
+    /// in place while the animation runs) or a linked form (target.hpp). Nothing is written
+    /// while waiting; the member's start is read once, when the first play begins (seek and
+    /// reverse replay the captured values). Throws grape::Error for a gone target too.
+    template <class Target, class M, class Interp = Lerp>
+    Animation animate(Target&& target, M member, Tween<detail::member_value_t<M>> tween, double duration,
+                      const AnimationDef& def = {}, Interp interp = {});
+
+    /// Kills every animation that writes into `object`'s bytes (a std::shared_ptr: the
+    /// object it points to), no events; returns how many. Finds 2-D, property, typed and linked
+    /// animations (linked ones where their target is now). The first call builds the target
+    /// index (one pass); from then on creation and removal keep it (O(log n) each).
+    template <class T>
+    std::size_t kill_animations_of(const T& object);
+    /// The live animations that write into `object`'s bytes, in no particular order.
+    template <class T>
+    std::vector<Animation> animations_of(const T& object);
+
     /// Calls `listener(dt)` at the end of every tick; returns an id for remove_tick_listener.
     std::size_t on_tick(std::function<void(double)> listener);
     /// Stops a tick listener (safe inside a tick: it is not called again).
@@ -263,7 +314,14 @@ private:
     friend class Animation;
     Animation create_bound_2d(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
                               std::ptrdiff_t rotation_offset, const Path& path, double duration,
-                              const AnimationDef& def);
+                              const AnimationDef& def, bool rotation_float = false,
+                              std::unique_ptr<detail::TargetRef> ref = nullptr);
+    Animation create_bound_value(void* object, std::unique_ptr<detail::TargetRef> ref,
+                                 std::unique_ptr<detail::ValueTrack> track, double duration, const AnimationDef& def);
+    std::size_t kill_in(const void* object, std::size_t bytes);
+    std::vector<Animation> find_in(const void* object, std::size_t bytes);
+    template <class T>
+    static std::pair<const void*, std::size_t> bytes_of(const T& object) noexcept;
     Animation create_bound_nd(void* target, std::vector<detail::MemberRef> members, PathND path, double duration,
                               const AnimationDef& def);
     std::unique_ptr<detail::EngineImpl> impl_;
@@ -272,19 +330,96 @@ private:
 // --- templates ------------------------------------------------------------------------------
 
 template <class T>
+    requires(!detail::wrapped_target<std::remove_cv_t<T>>)
 Animation Engine::create_2d_animation(T& target, const Path& path, double duration, const AnimationDef& def) {
     using X = std::remove_cvref_t<decltype(target.x)>;
     using Y = std::remove_cvref_t<decltype(target.y)>;
     static_assert(std::is_same_v<X, Y> && (std::is_same_v<X, double> || std::is_same_v<X, float>),
                   "create_2d_animation: target.x and target.y must both be double or both float");
     std::ptrdiff_t rotation = -1;
+    bool rotation_float = false;
     if constexpr (requires { target.rotation; }) {
-        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(target.rotation)>, X>) {
-            if (def.heading) rotation = static_cast<std::ptrdiff_t>(detail::offset_in(target, target.rotation));
-        }
+        using R = std::remove_cvref_t<decltype(target.rotation)>;
+        static_assert(std::is_same_v<R, double> || std::is_same_v<R, float>,
+                      "create_2d_animation: target.rotation receives the heading (.heading = true) and must be "
+                      "double or float; animate another type through create_animation's callback");
+        if (def.heading) rotation = static_cast<std::ptrdiff_t>(detail::offset_in(target, target.rotation));
+        rotation_float = std::is_same_v<R, float>;
     }
     return create_bound_2d(&target, detail::offset_in(target, target.x), detail::offset_in(target, target.y),
-                           std::is_same_v<X, float>, rotation, path, duration, def);
+                           std::is_same_v<X, float>, rotation, path, duration, def, rotation_float,
+                           detail::TargetForm<T>::ref(target));
+}
+
+template <class Target>
+    requires detail::wrapped_target<std::remove_cvref_t<Target>>
+Animation Engine::create_2d_animation(Target&& target, const Path& path, double duration, const AnimationDef& def) {
+    using Form = detail::TargetForm<std::remove_cvref_t<Target>>;
+    using T = typename Form::object_type;
+    T* now = Form::now(target);
+    if (!now) throw Error("create_2d_animation: the linked target is gone");
+    using X = std::remove_cvref_t<decltype(now->x)>;
+    using Y = std::remove_cvref_t<decltype(now->y)>;
+    static_assert(std::is_same_v<X, Y> && (std::is_same_v<X, double> || std::is_same_v<X, float>),
+                  "create_2d_animation: target.x and target.y must both be double or both float");
+    std::ptrdiff_t rotation = -1;
+    bool rotation_float = false;
+    if constexpr (requires { now->rotation; }) {
+        using R = std::remove_cvref_t<decltype(now->rotation)>;
+        static_assert(std::is_same_v<R, double> || std::is_same_v<R, float>,
+                      "create_2d_animation: target.rotation receives the heading (.heading = true) and must be "
+                      "double or float; animate another type through create_animation's callback");
+        if (def.heading) rotation = static_cast<std::ptrdiff_t>(detail::offset_in(*now, now->rotation));
+        rotation_float = std::is_same_v<R, float>;
+    }
+    return create_bound_2d(now, detail::offset_in(*now, now->x), detail::offset_in(*now, now->y), std::is_same_v<X, float>,
+                           rotation, path, duration, def, rotation_float, Form::ref(target));
+}
+
+template <class Target, class M, class Interp>
+Animation Engine::animate(Target&& target, M member, Tween<detail::member_value_t<M>> tween, double duration,
+                          const AnimationDef& def, Interp interp) {
+    using Form = detail::TargetForm<std::remove_cvref_t<Target>>;
+    using T = typename Form::object_type;
+    using V = detail::member_value_t<M>;
+    using C = typename detail::member_traits<M>::class_type;
+    static_assert(std::is_base_of_v<C, T>, "animate: the member must belong to the target's type");
+    static_assert(std::is_invocable_r_v<V, const Interp&, const V&, const V&, double>,
+                  "animate: no interpolation for this type: give it a lerp(a, b, t) found beside it, specialize "
+                  "grape::Interpolate, or pass an interpolator taking (V, V, double)");
+    if constexpr (!detail::addable<V>) {
+        if (tween.mode == ValueMode::relative) throw Error("animate: grape::by needs a type with +");
+    }
+    T* now = Form::now(target);
+    if (!now) throw Error("animate: the linked target is gone");
+    auto track = std::make_unique<detail::MemberTrack<T, C, V, Interp>>(member, std::move(tween), std::move(interp));
+    C& base = *now;
+    track->offset = static_cast<std::size_t>(reinterpret_cast<const char*>(&(base.*member)) -
+                                             reinterpret_cast<const char*>(now));
+    track->size = sizeof(V);
+    return create_bound_value(now, Form::ref(target), std::move(track), duration, def);
+}
+
+template <class T>
+std::pair<const void*, std::size_t> Engine::bytes_of(const T& object) noexcept {
+    if constexpr (requires { typename T::element_type; object.get(); *object; }) {
+        if (!object) return {nullptr, 0};
+        return {std::addressof(*object), sizeof(*object)};
+    } else {
+        return {std::addressof(object), sizeof(T)};
+    }
+}
+
+template <class T>
+std::size_t Engine::kill_animations_of(const T& object) {
+    const auto [at, bytes] = bytes_of(object);
+    return at ? kill_in(at, bytes) : 0;
+}
+
+template <class T>
+std::vector<Animation> Engine::animations_of(const T& object) {
+    const auto [at, bytes] = bytes_of(object);
+    return at ? find_in(at, bytes) : std::vector<Animation>();
 }
 
 template <class T>

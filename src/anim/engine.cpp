@@ -17,8 +17,26 @@ void Engine::tick(double dt) { impl_->tick(dt); }
 
 Animation Engine::create_bound_2d(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
                                   std::ptrdiff_t rotation_offset, const Path& path, double duration,
-                                  const AnimationDef& def) {
-    return impl_->create(target, x_offset, y_offset, is_float, rotation_offset, path, duration, def, {});
+                                  const AnimationDef& def, bool rotation_float,
+                                  std::unique_ptr<detail::TargetRef> ref) {
+    return impl_->create(target, x_offset, y_offset, is_float, rotation_offset, path, duration, def, {},
+                         detail::Bind{std::move(ref), rotation_float});
+}
+
+Animation Engine::create_bound_value(void* object, std::unique_ptr<detail::TargetRef> ref,
+                                     std::unique_ptr<detail::ValueTrack> track, double duration,
+                                     const AnimationDef& def) {
+    return impl_->create_value(object, std::move(ref), std::move(track), duration, def);
+}
+
+std::size_t Engine::kill_in(const void* object, std::size_t bytes) {
+    const auto lo = reinterpret_cast<std::uintptr_t>(object);
+    return impl_->kill_in(lo, lo + bytes);
+}
+
+std::vector<Animation> Engine::find_in(const void* object, std::size_t bytes) {
+    const auto lo = reinterpret_cast<std::uintptr_t>(object);
+    return impl_->find_in(lo, lo + bytes);
 }
 
 Animation Engine::create_bound_nd(void* target, std::vector<detail::MemberRef> members, PathND path,
@@ -70,7 +88,7 @@ bool Animation::paused() const noexcept {
 
 Vec2 Animation::value() const noexcept {
     GRAPE_FIND(Vec2{});
-    if (const detail::Extra* e = impl.extra(slot_); e && e->nd) return {};
+    if (const detail::Extra* e = impl.extra(slot_); e && (e->nd || e->value)) return {};
     return impl.value_of(dense);
 }
 
@@ -107,7 +125,7 @@ double Animation::duration() const noexcept {
 
 double Animation::time_scale() const noexcept {
     GRAPE_FIND(0.0);
-    return found->rate * impl.cold(dense).duration;
+    return impl.time_scale_of(dense);
 }
 
 void Animation::pause() const noexcept {

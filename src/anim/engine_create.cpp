@@ -57,6 +57,7 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int rep
     slots_[slot].dense = dense;
     if (extra) extras_.insert_or_assign(slot, std::move(*extra));
     ++live_;
+    if (index_on_) index_insert(dense);
     const Animation handle(owner_, slot, slots_[slot].generation);
     {
         Dispatch d(*this);
@@ -67,7 +68,7 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int rep
 
 Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
                              std::ptrdiff_t rotation_offset, const Path& path, double duration,
-                             const AnimationDef& def, std::function<void(Vec2, double)> on_update) {
+                             const AnimationDef& def, std::function<void(Vec2, double)> on_update, Bind bind) {
     validate(target ? "create_2d_animation" : "create_animation", duration, def);
     const auto y_from_x = static_cast<std::ptrdiff_t>(y_offset) - static_cast<std::ptrdiff_t>(x_offset);
     if (y_from_x < -32768 || y_from_x > 32767)
@@ -81,17 +82,26 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
     h.flags = static_cast<std::uint8_t>((is_float ? flag_float : 0) | (def.paused ? flag_paused : 0) |
                                         (def.yoyo ? flag_yoyo : 0) | (def.reversed ? flag_reversed : 0));
     std::optional<Extra> extra;
-    if (def.heading || on_update) {
+    if (def.heading || on_update || bind.ref || def.overwrite) {
         extra.emplace();
         extra->track_heading = def.heading;
         extra->write_rotation = target && rotation_offset >= 0;
         extra->rotation_offset = rotation_offset - static_cast<std::ptrdiff_t>(x_offset);
         if (on_update) extra->on_update_2d = std::make_shared<const std::function<void(Vec2, double)>>(std::move(on_update));
+        extra->rotation_float = bind.rotation_float.value_or(is_float);
+        extra->ref = std::move(bind.ref);
+        extra->target_offset = static_cast<std::ptrdiff_t>(x_offset);
+        extra->overwrite = def.overwrite;
+        extra->heading_offset = def.heading_offset;
+        extra->heading_continuous = def.heading_continuous;
+        extra->still = 1e-12 * path.length();  // |d1| ~ length: round-off of d1 at a cusp is far below
         h.flags |= flag_custom;
     }
     h.path = acquire_path(path);
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
-    return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+    const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+    if (find(a.slot_, a.generation_)) remember_scale(a.slot_, def.time_scale);  // unless a handler killed it
+    return a;
 }
 
 Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, PathND path, double duration,
@@ -114,9 +124,12 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     extra.members = std::move(members);
     if (on_update)
         extra.on_update_nd = std::make_shared<const std::function<void(std::span<const double>)>>(std::move(on_update));
+    extra.overwrite = def.overwrite;
     h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
-    return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+    const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+    if (find(a.slot_, a.generation_)) remember_scale(a.slot_, def.time_scale);  // unless a handler killed it
+    return a;
 }
 
 }  // namespace grape::detail

@@ -12,7 +12,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <map>
+#include <memory>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace grape::detail {
@@ -46,6 +49,9 @@ struct Cold {
     std::uint32_t slot;    // the handle slot that refers to this record
     std::uint32_t play;    // which play is running, from 0 (wraps at 2³², parity kept)
     std::uint16_t curve;   // index into the curve table (curves with parameters)
+    // time_scale() = rate·duration moved by this many ulps (rate·duration is up to ~2 ulps
+    // off the scale set); scale_in_extra: too far, the scale is in Extra::time_scale
+    std::int8_t scale_ulps = 0;
 };
 
 /// A handle slot: 8 bytes. `dense` is the record index while alive; free slots chain
@@ -70,6 +76,28 @@ struct Extra {
     std::optional<PathND> nd;             // N-D animations
     std::vector<MemberRef> members;       // N-D targets
     std::vector<double> values;           // N-D current values
+    // typed values, linked targets, the first play's start (values.cpp, targets.cpp)
+    std::unique_ptr<ValueTrack> value;    // typed animations: writes lerp(from, to, u) at h.target
+    std::unique_ptr<TargetRef> ref;       // linked targets (null: raw)
+    std::ptrdiff_t target_offset = 0;     // linked: h.target = where the object is + this
+    std::uintptr_t indexed_at = 0;        // its key in the target index (0: not indexed)
+    bool started = false;                 // the first play has begun: captures and overwrite done
+    bool overwrite = false;
+    bool rotation_float = false;          // the rotation member is a float
+    bool heading_continuous = false;
+    bool have_heading = false;            // `heading` holds a written heading
+    double heading_offset = 0.0;
+    double still = 0.0;                   // |d1| at or below this: a cusp; the heading stays
+    double time_scale = 0.0;              // Cold::scale_ulps == scale_in_extra: the exact scale
+};
+
+/// Cold::scale_ulps when the exact scale is kept in Extra::time_scale.
+inline constexpr std::int8_t scale_in_extra = INT8_MIN;
+
+/// How a new 2-D record follows its target (create's extras).
+struct Bind {
+    std::unique_ptr<TargetRef> ref;  // linked target (null: raw)
+    std::optional<bool> rotation_float;  // the rotation member's type (default: x's)
 };
 
 struct PathEntry {
@@ -103,7 +131,7 @@ public:
     void tick(double dt);
     Animation create(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
                      std::ptrdiff_t rotation_offset, const Path& path, double duration, const AnimationDef& def,
-                     std::function<void(Vec2, double)> on_update);
+                     std::function<void(Vec2, double)> on_update, Bind bind = {});
     Animation create_nd(void* target, std::vector<MemberRef> members, PathND path, double duration,
                         const AnimationDef& def, std::function<void(std::span<const double>)> on_update);
 
@@ -180,6 +208,47 @@ private:
     std::size_t dead_ = 0;  // records flagged dead and not yet compacted
     int depth_ = 0;         // handler calls in progress
     bool ticking_ = false;
+
+    // --- typed values, safe targets, exact time scales (values.cpp, targets.cpp) ---
+public:
+    Animation create_value(void* object, std::unique_ptr<TargetRef> ref, std::unique_ptr<ValueTrack> track,
+                           double duration, const AnimationDef& def);
+    std::size_t kill_in(std::uintptr_t lo, std::uintptr_t hi);
+    std::vector<Animation> find_in(std::uintptr_t lo, std::uintptr_t hi);
+    // The scale time_scale() returns for the record in `slot` (set at creation and by
+    // set_time_scale).
+    void remember_scale(std::uint32_t slot, double scale) noexcept;
+    double time_scale_of(std::uint32_t dense) const noexcept;
+    // Custom writes begin here: follows a linked target (false: gone, killed), runs the first
+    // play's start once, writes typed values (false: done). True: the caller writes as before.
+    // A timeline that moves a child into its plays without write_state must call start_play.
+    bool begin_write(std::uint32_t dense, Extra& e, double u);
+    void start_play(std::uint32_t dense);
+    double next_heading(const Path& path, double u, bool backward, Extra& e) const noexcept;
+    // Pauses from on_loop: the record holds at the start of play `play` (plays since the first).
+    void hold_at_play(std::uint32_t dense, double play);
+    void index_insert(std::uint32_t dense);
+    void index_erase(std::uint32_t dense) noexcept;
+
+private:
+    struct Span {  // bytes [lo, hi) as addresses; hi == 0: writes nothing
+        std::uintptr_t lo = 0;
+        std::uintptr_t hi = 0;
+    };
+    template <class F>
+    void members_of(std::uint32_t dense, F&& f) const noexcept;  // f(address, bytes) per written member
+    Span span_of(std::uint32_t dense) const noexcept;
+    bool writes_in(std::uint32_t dense, std::uintptr_t lo, std::uintptr_t hi) const noexcept;
+    template <class F>
+    void for_each_in(std::uintptr_t lo, std::uintptr_t hi, F&& f);
+    void enable_index();
+    void refresh_linked();
+    void overwrite_others(std::uint32_t dense);
+
+    bool index_on_ = false;
+    std::multimap<std::uintptr_t, std::uint32_t> by_address_;  // lowest written byte -> slot
+    std::size_t widest_ = 0;                                 // widest written span indexed (bytes)
+    std::unordered_set<std::uint32_t> linked_;               // slots of linked records
 };
 
 /// The high bit of Slot::dense marks a free slot (its low bits chain to the next free one).

@@ -43,7 +43,9 @@ void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
 void EngineImpl::set_time_scale(std::uint32_t dense, double scale) noexcept {
     if (!(std::isfinite(scale) && scale >= 0.0)) return;
     const double rate = scale / cold_[dense].duration;
-    if (std::isfinite(rate)) hot_[dense].rate = rate;  // an overflowing rate is ignored too
+    if (!std::isfinite(rate)) return;  // an overflowing rate is ignored too
+    hot_[dense].rate = rate;
+    remember_scale(cold_[dense].slot, scale);
 }
 
 void EngineImpl::mark_dead(std::uint32_t dense) noexcept {
@@ -66,6 +68,7 @@ void EngineImpl::kill_all() noexcept {
 }
 
 void EngineImpl::remove_now(std::uint32_t dense) noexcept {
+    if (index_on_) index_erase(dense);
     const std::uint32_t slot = cold_[dense].slot;
     release_path(hot_[dense].path);
     release_curve(cold_[dense].curve);

@@ -37,6 +37,7 @@ void EngineImpl::write_state(std::uint32_t dense) {
         return;
     }
     Extra& e = extras_.find(cold_[dense].slot)->second;  // node-based: stable while handlers run
+    if (!begin_write(dense, e, u)) return;  // linked targets, the first play's start, typed values
     if (e.nd) {
         e.nd->point(u, e.values);
         char* base = h.target;
@@ -55,13 +56,12 @@ void EngineImpl::write_state(std::uint32_t dense) {
     }
     const Path& path = paths_[h.path].path;
     const Vec2 p = point(h.path, u);
-    const double angle = path.heading(u);
-    e.heading = (h.flags & flag_backward) ? std::remainder(angle + pi, 2.0 * pi) : angle;
+    e.heading = next_heading(path, u, (h.flags & flag_backward) != 0, e);
     if (h.target) {
         write_2d(h, p);
         if (e.write_rotation) {
             char* at = h.target + e.rotation_offset;
-            if (h.flags & flag_float) *reinterpret_cast<float*>(at) = static_cast<float>(e.heading);
+            if (e.rotation_float) *reinterpret_cast<float*>(at) = static_cast<float>(e.heading);
             else *reinterpret_cast<double*>(at) = e.heading;
         }
     }
@@ -162,6 +162,7 @@ void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
 }
 
 void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes) {
+    if (hot_[dense].flags & flag_dead) return;  // a linked target that went during the write
     const std::uint32_t slot = cold_[dense].slot;
     const std::uint32_t generation = slots_[slot].generation;
     // The state every handler should find; a handler that seeks, kills or restarts this
@@ -172,6 +173,12 @@ void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, doub
         const Hot& h = hot_[dense];
         return slots_[slot].generation == generation && cold_[dense].play == play && h.phase == phase &&
                !(h.flags & flag_dead);
+    };
+    // Paused by its own loop handler: hold at the start of that play, no further events.
+    auto paused_at = [&](double k) {
+        if (!unchanged() || !(hot_[dense].flags & flag_paused)) return false;
+        hold_at_play(dense, static_cast<double>(first_play) + k);
+        return true;
     };
     auto play_number = [first_play](double k) {  // play first_play + k as on_loop reports it
         return static_cast<int>(std::min(static_cast<double>(first_play) + k, static_cast<double>(INT32_MAX)));
@@ -184,13 +191,13 @@ void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, doub
             if (loops <= max_loop_events) {
                 for (int k = 1; k <= static_cast<int>(loops); ++k) {
                     (*handler)(play_number(k), 0);
-                    if (!unchanged()) return;
+                    if (paused_at(k) || !unchanged()) return;
                 }
             } else {  // bounded work: one event for the last play, counting the skipped ones
                 const double skipped = loops - 1.0;
                 (*handler)(play_number(loops), skipped < 1.8446744073709552e19 ? static_cast<std::uint64_t>(skipped)
                                                                                : UINT64_MAX);
-                if (!unchanged()) return;
+                if (paused_at(loops) || !unchanged()) return;
             }
         }
         if (completes && e.on_complete) {
