@@ -42,9 +42,12 @@ void fit_piece(F&& v_of_u, double u0, double du, double* out) {
     for (int m = 0; m <= n; ++m) {
         for (int i = 0; i <= n; ++i) b[i] += a[m] * tm[m][i];
     }
-    for (int i = 0; i < 4; ++i) out[i] = b[i];
+    // The order ArcLengthTable::evaluate reads: (c0, c2), (c1, c3), then the floats
+    // (c4, c6), (c5, c7), (c8, c10), (c9, c11).
+    constexpr int order[12] = {0, 2, 1, 3, 4, 6, 5, 7, 8, 10, 9, 11};
+    for (int i = 0; i < 4; ++i) out[i] = b[order[i]];
     float low[8];
-    for (int i = 0; i < 8; ++i) low[i] = static_cast<float>(b[4 + i]);
+    for (int i = 0; i < 8; ++i) low[i] = static_cast<float>(b[order[4 + i]]);
     std::memcpy(out + 4, low, sizeof low);
 }
 

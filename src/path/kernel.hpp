@@ -12,6 +12,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <new>
 #include <optional>
 #include <span>
@@ -46,7 +49,8 @@ public:
     /// K, the number of pieces.
     double steps() const noexcept { return steps_; }
     /// The pieces' storage, piece after piece (8·K words, 64-byte aligned: a piece is one
-    /// cache line): words 0–3 the coefficients of x⁰..x³, words 4–7 the floats of x⁴..x¹¹.
+    /// cache line): words 0–3 the coefficients of x⁰, x², x¹, x³, words 4–7 the floats of
+    /// x⁴, x⁶, x⁵, x⁷, x⁸, x¹⁰, x⁹, x¹¹ (the pairs evaluate reads two at a time).
     std::span<const double> values() const noexcept { return {values_.data(), values_.size()}; }
 
     /// source_u on a table's raw storage (for callers that keep a pointer in a hot record),
@@ -60,14 +64,26 @@ public:
         const auto k = static_cast<std::int64_t>(s);  // s > 0: truncation is the floor, one instruction
         const double x = 2.0 * (s - static_cast<double>(k)) - 1.0;
         const double* c = values + stride * static_cast<std::size_t>(k);
+        // Estrin's scheme on the pairs (q0, q1) = (c0, c2) + (c1, c3)·x, (q2, q3), (q4, q5):
+        // v = (q0 + q2·x⁴ + q4·x⁸) + (q1 + q3·x⁴ + q5·x⁸)·x², a third of Horner's chain, two
+        // lanes at a time where SSE2 has them.
+        const double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+#if defined(__SSE2__)
+        const __m128d vx = _mm_set1_pd(x);
+        const __m128d q01 = _mm_add_pd(_mm_load_pd(c), _mm_mul_pd(_mm_load_pd(c + 2), vx));
+        const __m128 f = _mm_castpd_ps(_mm_load_pd(c + 4)), g = _mm_castpd_ps(_mm_load_pd(c + 6));
+        const __m128d q23 = _mm_add_pd(_mm_cvtps_pd(f), _mm_mul_pd(_mm_cvtps_pd(_mm_movehl_ps(f, f)), vx));
+        const __m128d q45 = _mm_add_pd(_mm_cvtps_pd(g), _mm_mul_pd(_mm_cvtps_pd(_mm_movehl_ps(g, g)), vx));
+        const __m128d sum = _mm_add_pd(_mm_add_pd(q01, _mm_mul_pd(q23, _mm_set1_pd(x4))), _mm_mul_pd(q45, _mm_set1_pd(x8)));
+        return _mm_cvtsd_f64(sum) + _mm_cvtsd_f64(_mm_unpackhi_pd(sum, sum)) * x2;
+#else
         float f[8];
         std::memcpy(f, c + 4, sizeof f);
-        // Estrin's scheme: pairs, then x², x⁴, x⁸ (a third of Horner's dependent chain).
-        const double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
-        const double q0 = c[0] + c[1] * x, q1 = c[2] + c[3] * x;
-        const double q2 = double(f[0]) + double(f[1]) * x, q3 = double(f[2]) + double(f[3]) * x;
-        const double q4 = double(f[4]) + double(f[5]) * x, q5 = double(f[6]) + double(f[7]) * x;
-        return (q0 + q1 * x2) + (q2 + q3 * x2) * x4 + (q4 + q5 * x2) * x8;
+        const double q0 = c[0] + c[2] * x, q1 = c[1] + c[3] * x;
+        const double q2 = double(f[0]) + double(f[2]) * x, q3 = double(f[1]) + double(f[3]) * x;
+        const double q4 = double(f[4]) + double(f[6]) * x, q5 = double(f[5]) + double(f[7]) * x;
+        return (q0 + q2 * x4 + q4 * x8) + (q1 + q3 * x4 + q5 * x8) * x2;
+#endif
     }
 
 private:
