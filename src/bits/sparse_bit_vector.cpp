@@ -11,8 +11,6 @@ namespace grape {
 namespace {
 
 constexpr std::size_t block_words = SparseBitVector::block_bits / 64;
-// The count of a bitmap block that `&=` left uncounted (see Block::count).
-constexpr std::uint32_t uncounted = SparseBitVector::uncounted;
 
 }  // namespace
 
