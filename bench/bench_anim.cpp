@@ -95,7 +95,9 @@ void run(benchmark::State& state, const char* name, double bytes, Step&& step) {
     r.bytes_per_animation = bytes;
 }
 
-void grape_engine(benchmark::State& state, BenchPathKind kind, const char* name) {
+// spread > 0: one tick of `spread` seconds before timing, so that the animations sharing a
+// path sit at different phases (plays last 1–3 s: phase i = frac(spread / duration i)).
+void grape_engine(benchmark::State& state, BenchPathKind kind, const char* name, double spread = 0.0) {
     const auto n = static_cast<std::size_t>(state.range(0));
     const auto segments = grape::scenes::bench_segments(distinct_paths);
     const auto paths = grape::scenes::bench_paths(kind, segments);  // shared shapes: not counted
@@ -104,7 +106,7 @@ void grape_engine(benchmark::State& state, BenchPathKind kind, const char* name)
     auto engine = std::make_unique<grape::Engine>();
     grape::scenes::create_bench_animations(*engine, targets, paths, grape::Curve::quad_in_out());
     const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
-    engine->tick(frame);
+    engine->tick(spread > 0.0 ? spread : frame);
     run(state, name, bytes, [&] {
         engine->tick(frame);
         benchmark::ClobberMemory();
@@ -116,6 +118,13 @@ void BM_grape_linear(benchmark::State& s) { grape_engine(s, BenchPathKind::linea
 void BM_grape_cubic(benchmark::State& s) { grape_engine(s, BenchPathKind::cubic_bezier, "grape_cubic"); }
 void BM_grape_reparam_cubic(benchmark::State& s) {
     grape_engine(s, BenchPathKind::reparametrized_cubic_bezier, "grape_reparam_cubic");
+}
+// The same two kinds with the phases spread out (1000.37 s into the run).
+void BM_grape_cubic_spread(benchmark::State& s) {
+    grape_engine(s, BenchPathKind::cubic_bezier, "grape_cubic_spread", 1000.37);
+}
+void BM_grape_reparam_cubic_spread(benchmark::State& s) {
+    grape_engine(s, BenchPathKind::reparametrized_cubic_bezier, "grape_reparam_cubic_spread", 1000.37);
 }
 
 // tweeny: each tween owns its two start and two end floats; integer duration in ms
@@ -293,6 +302,8 @@ BENCHMARK(BM_floor)->Apply(sizes);
 BENCHMARK(BM_grape_linear)->Apply(sizes);
 BENCHMARK(BM_grape_cubic)->Apply(sizes);
 BENCHMARK(BM_grape_reparam_cubic)->Apply(sizes);
+BENCHMARK(BM_grape_cubic_spread)->Apply(sizes);
+BENCHMARK(BM_grape_reparam_cubic_spread)->Apply(sizes);
 BENCHMARK(BM_tweeny_linear)->Apply(sizes);
 BENCHMARK(BM_tweeny_quad)->Apply(sizes);
 BENCHMARK(BM_grape_color)->Apply(sizes);
@@ -317,15 +328,33 @@ int main(int argc, char** argv) {
     for (std::int64_t n : {1000, 100000, 1000000}) {
         const auto tw = results.find(key("tweeny_quad", n));
         const auto fl = results.find(key("floor", n));
-        for (const char* name : {"floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "tweeny_linear",
-                                 "tweeny_quad", "grape_color", "grape_color_oklab", "grape_user_type",
-                                 "grape_typed_double", "grape_property_double"}) {
+        for (const char* name : {"floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "grape_cubic_spread",
+                                 "grape_reparam_cubic_spread", "tweeny_linear", "tweeny_quad", "grape_color",
+                                 "grape_color_oklab", "grape_user_type", "grape_typed_double",
+                                 "grape_property_double"}) {
             const auto it = results.find(key(name, n));
             if (it == results.end()) continue;
             const double r = it->second.median();
             std::printf("%-22s %9lld %12.2f %12.1f %14.2f %12.2f\n", name, static_cast<long long>(n), r,
                         it->second.bytes_per_animation, tw != results.end() ? tw->second.median() / r : 0.0,
                         fl != results.end() ? fl->second.median() / r : 0.0);
+        }
+    }
+    // Arc length against the plain cubic kind, per repetition and size: median and min–max of
+    // the ratios (the two were interleaved when run with --benchmark_enable_random_interleaving).
+    std::printf("\narc-length / plain cubic (ns ratio; median [min, max] over repetitions)\n");
+    for (std::int64_t n : {1000, 100000, 1000000}) {
+        for (const char* tag : {"", "_spread"}) {
+            const auto a = results.find(key((std::string("grape_reparam_cubic") + tag).c_str(), n));
+            const auto b = results.find(key((std::string("grape_cubic") + tag).c_str(), n));
+            if (a == results.end() || b == results.end()) continue;
+            std::vector<double> r;
+            for (std::size_t i = 0; i < std::min(a->second.ns_per_update.size(), b->second.ns_per_update.size()); ++i)
+                r.push_back(a->second.ns_per_update[i] / b->second.ns_per_update[i]);
+            std::sort(r.begin(), r.end());
+            std::printf("%-8s N=%-8lld %6.2f [%.2f, %.2f]  (%.2f / %.2f ns)\n", *tag ? "spread" : "phase 0",
+                        static_cast<long long>(n), r[r.size() / 2], r.front(), r.back(), a->second.median(),
+                        b->second.median());
         }
     }
     return 0;

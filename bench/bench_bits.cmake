@@ -1,8 +1,7 @@
 # bench_bits: BitVector against boost::dynamic_bitset (libboost-dev, header-only),
-# std::vector<bool>, std::bitset and memcpy. bench_sprite: 1,000,000 SpritePlayers per frame.
+# std::vector<bool>, std::bitset and memcpy.
 find_package(Boost 1.74 REQUIRED)
 grape_bench(bits grape::bits Boost::headers)
-grape_bench(sprite grape::sprite)
 # BitMagic (not a Debian package) as an optional peer of SparseBitVector: point
 # GRAPE_BITMAGIC_DIR at a BitMagic source tree; nothing is downloaded.
 set(GRAPE_BITMAGIC_DIR "" CACHE PATH "BitMagic source tree for bench_bits (optional peer)")

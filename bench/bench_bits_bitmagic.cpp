@@ -47,6 +47,13 @@ void register_rows(const Patterns& p) {
             benchmark::ClobberMemory();
         }
     });
+    reg("dense &= + count/BitMagic bvector", [](benchmark::State& s) {
+        BV a(*g_dense_a);
+        for (auto _ : s) {
+            a &= *g_dense_b;
+            benchmark::DoNotOptimize(a.count());
+        }
+    });
 }
 
 std::size_t sparse_memory_bytes() {

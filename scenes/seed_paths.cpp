@@ -78,12 +78,14 @@ std::vector<NamedPath> path_gallery() {
     };
 }
 
-std::string hundred_segments_svg() {
-    std::mt19937_64 rng(100);
+std::string hundred_segments_svg() { return segments_svg(100, 100); }
+
+std::string segments_svg(int count, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> c(0.0, 1000.0);
     std::string d = "M500 500";
     char buf[160];
-    for (int i = 0; i < 100; ++i) {
+    for (int i = 0; i < count; ++i) {
         // Drawn in sequence first: the order in which a call's arguments are evaluated is
         // unspecified, and the path must be the same whatever the compiler.
         double v[6];

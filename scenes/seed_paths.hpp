@@ -5,6 +5,7 @@
 #include <grape/path.hpp>
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -51,5 +52,9 @@ std::vector<NamedPath> path_gallery();
 /// SVG path data of 100 drawn segments cycling C, Q, A, L over pseudo-random coordinates in a
 /// 1000 × 1000 box (a fixed seed): the path-query tests' and benchmarks' long path.
 std::string hundred_segments_svg();
+
+/// SVG path data of `count` segments drawn the same way from `seed` (hundred_segments_svg is
+/// segments_svg(100, 100)): long paths for the arc-length tests and benchmarks.
+std::string segments_svg(int count, std::uint64_t seed);
 
 }  // namespace grape::scenes

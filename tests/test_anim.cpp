@@ -211,7 +211,7 @@ TEST(Engine, SixtyFramesOfOneSixtiethFinishAOneSecondPlayExactlyOnce) {
 TEST(Engine, ArcLengthBezierMatchesThePathWithinItsTolerance) {
     // Cubic A of the reference set: length 200 exactly. The engine evaluates arc-length
     // paths from its own table of the source parameter, checked at build time to 1e-10·L;
-    // between the checked points the Hermite error stays of the same size: 2e-10·L.
+    // between the checked points the interpolant's error stays of the same size: 2e-10·L.
     const grape::CubicBezierPath rep({0, 0}, {0, 100}, {100, 100}, {100, 0}, true);
     const double tolerance = 2e-10 * 200.0;
     Engine engine;

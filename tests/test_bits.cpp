@@ -1183,7 +1183,13 @@ void expect_sparse_matches(const SparseBitVector& v, const Model& m) {
     ASSERT_EQ(walked, expected);
     EXPECT_EQ(v.count(), expected.size());
     EXPECT_EQ(v.any(), !expected.empty());
-    EXPECT_EQ(v.bitmap_blocks(), model_bitmap_blocks(m));
+    // `&=` may leave sparse results as bitmaps; shrink_to_fit() gives the canonical form.
+    EXPECT_GE(v.bitmap_blocks(), model_bitmap_blocks(m));
+    SparseBitVector fitted = v;
+    fitted.shrink_to_fit();
+    EXPECT_EQ(fitted.bitmap_blocks(), model_bitmap_blocks(m));
+    EXPECT_EQ(fitted, v);
+    EXPECT_EQ(fitted.count(), expected.size());
     EXPECT_EQ(v.to_bits(), BitVector::from_bools(m));
     for (std::size_t k = 0; k < 50 && !m.empty(); ++k) {
         const std::size_t i = (k * 7919 + 13) % m.size();
@@ -1255,7 +1261,7 @@ TEST(SparseBitVector, RandomOperationsMatchVectorOfBool) {
                     break;
             }
             expect_sparse_matches(v, m);
-            EXPECT_EQ(v, SparseBitVector::from_bits(BitVector::from_bools(m)));  // one form per set of bits
+            EXPECT_EQ(v, SparseBitVector::from_bits(BitVector::from_bools(m)));  // the same bits, whatever the forms
             if (HasFatalFailure()) return;
         }
     }
@@ -1283,6 +1289,41 @@ TEST(SparseBitVector, StoresSparseBitsCompactly) {
     EXPECT_EQ(v, w);
 }
 
+// Dense `&=` is a plain and; the block's count and form follow when needed.
+TEST(SparseBitVector, DenseAndCountsLaterAndKeepsTheBits) {
+    using grape::SparseBitVector;
+    const std::size_t n = 3 * SparseBitVector::block_bits;
+    BitVector thirds(n), halves(n), odd(n);
+    for (std::size_t i = 0; i < n; i += 3) thirds.set(i);  // ~21,845 per block: bitmaps
+    for (std::size_t i = 0; i < n; i += 2) halves.set(i);
+    for (std::size_t i = 1; i < n; i += 2) odd.set(i);
+    for (std::size_t i = 0; i < n; i += 3) odd.reset(i);  // nothing in common with thirds
+
+    SparseBitVector x = SparseBitVector::from_bits(thirds);
+    x &= SparseBitVector::from_bits(halves);  // every sixth bit: still over the array limit
+    const BitVector sixth = thirds & halves;
+    EXPECT_EQ(x.count(), sixth.count());
+    EXPECT_EQ(x.to_bits(), sixth);
+    EXPECT_EQ(x, SparseBitVector::from_bits(sixth));
+    x.set(1);    // a set and a clear on an uncounted bitmap
+    x.reset(0);
+    BitVector expected = sixth;
+    expected.set(1);
+    expected.reset(0);
+    EXPECT_EQ(x.count(), expected.count());
+    EXPECT_EQ(x.to_bits(), expected);
+
+    SparseBitVector none = SparseBitVector::from_bits(thirds);
+    none &= SparseBitVector::from_bits(odd);  // two bitmaps with no bit in common
+    EXPECT_FALSE(none.any());
+    EXPECT_EQ(none.count(), 0u);
+    EXPECT_EQ(none, SparseBitVector(n));      // the same bits as empty blocks
+    EXPECT_EQ(none.bitmap_blocks(), 3u);      // still bitmaps ...
+    none.shrink_to_fit();
+    EXPECT_EQ(none.bitmap_blocks(), 0u);      // ... until shrink_to_fit()
+    EXPECT_EQ(none.memory_bytes(), SparseBitVector(n).memory_bytes());
+    EXPECT_NE(x, none);
+}
 
 TEST(SparsePairBits, MatchesPairBitsAndScalesToManyObjects) {
     using grape::SparsePairBits;

@@ -466,6 +466,52 @@ TEST(Reparametrized, SpeedIsConstantAndDerivativesAreConsistent) {
     }
 }
 
+// The bulk evaluators' table (anim's tick): source.point(table(u)) against Path::point at
+// random u, on random cubics (tame ones, S-curves as the animation benchmark bends them,
+// loops near a cusp) and lines. 2e-10·L: the build checks 1e-10·L at 23 points per piece;
+// between them a degree-11 interpolant's error cannot double without its next derivative
+// being large enough to fail a check point too.
+TEST(ArcLengthTable, MatchesThePathWithin2e10OfItsLength) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> coordinate(0.0, 1000.0), unit(0.0, 1.0);
+    int built = 0;
+    double most_steps = 0.0;
+    for (int n = 0; n < 300; ++n) {
+        const Vec2 a{coordinate(rng), coordinate(rng)}, d{coordinate(rng), coordinate(rng)};
+        Vec2 b{coordinate(rng), coordinate(rng)}, c{coordinate(rng), coordinate(rng)};
+        if (n % 3 == 1) {  // the benchmark's S-curve: controls off the chord by 0.4 of it
+            const Vec2 side = grape::perpendicular(d - a) * 0.4;
+            b = a + (d - a) / 3.0 + side;
+            c = a + (d - a) * (2.0 / 3.0) - side;
+        }
+        const Path r = n % 10 == 9 ? grape::LinearPath(a, d).reparametrized() : Path(grape::CubicBezierPath(a, b, c, d, true));
+        const auto table = grape::detail::ArcLengthTable::build(r);
+        const Path source = grape::path_cast<grape::ReparametrizedSpec>(r)->source;
+        if (!table) continue;  // the kernel then evaluates through Path::point
+        ++built;
+        most_steps = std::max(most_steps, table->steps());
+        EXPECT_EQ(table->values().size(), grape::detail::ArcLengthTable::stride * static_cast<std::size_t>(table->steps()));
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(table->values().data()) % 64, 0u);  // a piece is one line
+        const double L = r.length();
+        double worst = 0.0;
+        for (int i = 0; i < 4000; ++i) {
+            const double u = unit(rng);
+            worst = std::max(worst, grape::distance(source.point(table->source_u(u)), r.point(u)));
+        }
+        EXPECT_LE(worst, 2e-10 * L) << n;
+        EXPECT_EQ(source.point(table->source_u(1.0)), r.point(1.0)) << n;  // the ends exactly
+        EXPECT_EQ(source.point(table->source_u(0.0)), r.point(0.0)) << n;
+        if (n % 3 == 1) {
+            EXPECT_LE(table->steps(), 8.0) << n;  // ≤ 512 bytes for the benchmark's shape
+        }
+        if (n % 10 == 9) {
+            EXPECT_EQ(table->steps(), 1.0) << n;  // a line moves evenly already
+        }
+    }
+    EXPECT_GE(built, 290);  // all but cubics that (nearly) stop somewhere
+    EXPECT_LE(most_steps, 4096.0);
+}
+
 TEST(Reparametrized, CubicAArcLengthPointsAndFlag) {
     const grape::CubicBezierPath raw({0, 0}, {0, 100}, {100, 100}, {100, 0});
     const grape::CubicBezierPath even({0, 0}, {0, 100}, {100, 100}, {100, 0}, true);
@@ -807,6 +853,25 @@ TEST(Reparametrized, ExtremeScalesBuildInBoundedTime) {
     EXPECT_EQ(b.point(0.0), (Vec2{40, 20}));
     EXPECT_EQ(b.point(1.0), (Vec2{6.1e113, 600}));
     EXPECT_TRUE(grape::is_finite(b.point(0.5)));
+}
+
+// The contract holds whatever the number of segments: a 10,000-segment SVG path (cubics,
+// quadratics, elliptical arcs, lines) once ran out of a fixed span budget at ~6,700 segments
+// and left the rest on coarse spans (3.5e-3 px of error on 7e6 px, 4.3× over 1e-9·L).
+TEST(Reparametrized, ArcLengthContractHoldsAtTenThousandSegments) {
+    const Path source = grape::parse_svg_path(grape::scenes::segments_svg(10000, 17));
+    const Path r = source.reparametrized();
+    const double L = source.length();
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst = 0.0;
+    for (int i = 0; i <= 20000; ++i) {
+        // Evenly over the whole path (every segment seen twice), then at random.
+        const double u = i < 10000 ? i / 10000.0 : unit(rng);
+        worst = std::max(worst, std::abs(source.length_at(grape::detail::source_parameter(r, u)) - u * L));
+    }
+    EXPECT_LE(worst, 1e-9 * L);
+    EXPECT_EQ(r.point(1.0), source.point(1.0));
 }
 
 TEST(Reparametrized, DenormalLengthsGiveTheRightPoint) {

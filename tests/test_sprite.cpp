@@ -428,6 +428,50 @@ TEST(SpritePlayer, CallbacksMayReplaceThemselves) {
     EXPECT_EQ(count, 2);
 }
 
+// The playable and the callbacks share one word of the player (40 bytes): the playable
+// follows it into and out of the callbacks' block, through copies, moves and set_playable.
+TEST(SpritePlayer, PlayableAndCallbacksSurviveCopiesAndMoves) {
+    EXPECT_LE(sizeof(SpritePlayer), 40u);
+    RecordingPlayable a(4), b(6);
+    SpritePlayer player(a, {.rate = 1.0});
+    int frames = 0;
+    player.on_frame([&](std::size_t) { ++frames; });
+    EXPECT_EQ(player.playable(), &a);  // now kept in the callbacks' block
+    player.advance();
+    EXPECT_EQ(a.shown, (std::vector<std::size_t>{0, 1}));
+    EXPECT_EQ(frames, 1);
+    player.set_playable(b);
+    EXPECT_EQ(player.playable(), &b);
+    player.advance();
+    EXPECT_EQ(b.shown, (std::vector<std::size_t>{1, 2}));
+    EXPECT_EQ(frames, 2);
+
+    SpritePlayer copy = player;  // its own callbacks, the same playable
+    EXPECT_EQ(copy.playable(), &b);
+    copy.advance();
+    EXPECT_EQ(frames, 3);
+    SpritePlayer moved = std::move(copy);
+    EXPECT_EQ(moved.playable(), &b);
+    moved.advance();
+    EXPECT_EQ(frames, 4);
+    EXPECT_EQ(copy.playable(), &b);  // the moved-from player keeps its playable ...
+    copy.advance();                  // ... and steps without the callbacks
+    EXPECT_EQ(frames, 4);
+
+    SpritePlayer bare(a);  // no callbacks: assigned over one that has them, and back
+    bare = player;
+    EXPECT_EQ(bare.playable(), &b);
+    bare.advance();
+    EXPECT_EQ(frames, 5);
+    bare = SpritePlayer(a);
+    EXPECT_EQ(bare.playable(), &a);
+    bare.advance();
+    EXPECT_EQ(frames, 5);
+    SpritePlayer counter(3);  // a bare frame counter with callbacks has no playable
+    counter.on_loop([&](std::size_t) { ++frames; });
+    EXPECT_EQ(counter.playable(), nullptr);
+}
+
 TEST(SpritePlayer, ConstructionErrorsNameTheArgument) {
     expect_error([] { SpritePlayer p(0); }, {"frame_count", "at least 1", "got 0"});
     expect_error([] { SpritePlayer p(4, {.start_frame = 4}); }, {"start_frame 4", "frame_count 4"});

@@ -18,6 +18,7 @@
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
+#include <new>
 #include <utility>
 #include <vector>
 
@@ -45,10 +46,11 @@ public:
 
     /// Number of bits.
     std::size_t size() const noexcept { return size_; }
-    /// Number of set bits (the sum of the blocks' counts).
+    /// Number of set bits (the sum of the blocks' counts; a bitmap block that `&=` left
+    /// uncounted is counted here, at memory speed, without being changed).
     std::size_t count() const noexcept;
     /// At least one bit set.
-    bool any() const noexcept { return count() != 0; }
+    bool any() const noexcept;
     /// Heap bytes held (capacities of the block table, the arrays and the bitmaps).
     std::size_t memory_bytes() const noexcept;
     /// Blocks stored as bitmaps (the others are arrays or empty).
@@ -64,11 +66,14 @@ public:
     bool test_and_set(std::size_t i);
     /// Every bit to 0 (frees the blocks' storage).
     void clear_all() noexcept;
-    /// Gives back the arrays' spare capacity (growth by set() leaves up to half unused), as
-    /// BitMagic's optimize() does for its blocks.
+    /// Gives back the arrays' spare capacity (growth by set() leaves up to half unused) and
+    /// turns bitmap blocks that `&=` left sparse back into arrays, as BitMagic's optimize()
+    /// does for its blocks.
     void shrink_to_fit();
 
-    /// Bitwise and; throws grape::Error when sizes differ.
+    /// Bitwise and; throws grape::Error when sizes differ. Two bitmap blocks are anded in
+    /// place at memory speed and left as a bitmap whose count is taken when next needed
+    /// (count(), a clear by set(), shrink_to_fit()), even if few bits remain.
     SparseBitVector& operator&=(const SparseBitVector& other);
     /// Bitwise or; throws grape::Error when sizes differ.
     SparseBitVector& operator|=(const SparseBitVector& other);
@@ -89,18 +94,40 @@ public:
         }
     }
 
-    /// Same size and same bits.
+    /// Same size and same bits (whatever form their blocks have).
     friend bool operator==(const SparseBitVector& a, const SparseBitVector& b) noexcept;
 
 private:
+public:
+    /// Block::count of a bitmap block that `&=` left uncounted (internal).
+    static constexpr std::uint32_t uncounted = 0xFFFFFFFFu;
+
+private:
+    // Bitmaps on 64-byte boundaries, so that no 32-byte load of the word kernels straddles
+    // two cache lines (malloc's 16-byte alignment split every other one).
+    template <class T>
+    struct LineAllocator {
+        using value_type = T;
+        LineAllocator() = default;
+        template <class U>
+        LineAllocator(const LineAllocator<U>&) noexcept {}
+        T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t{64})); }
+        void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, std::align_val_t{64}); }
+        template <class U>
+        bool operator==(const LineAllocator<U>&) const noexcept { return true; }
+    };
+    using Bitmap = std::vector<Word, LineAllocator<Word>>;
+
     struct Block {
-        std::uint32_t count = 0;
+        std::uint32_t count = 0;  // set bits, or `uncounted` (bitmap blocks after `&=` only)
         std::vector<std::uint16_t> array;  // sorted offsets, when 0 < count <= array_limit
-        std::vector<Word> bitmap;          // block_bits / 64 words, when count > array_limit
+        Bitmap bitmap;                     // block_bits / 64 words, when count > array_limit
         friend bool operator==(const Block&, const Block&) = default;
     };
     static void to_bitmap(Block& block);
-    static void fit(Block& block);  // makes the form match the count
+    static void fit(Block& block);  // counts the block and makes the form match the count
+    static std::size_t count_of(const Block& block) noexcept;
+    static bool same_bits(const Block& x, const Block& y) noexcept;
     void check_same_size(const SparseBitVector& other, const char* operation) const;
 
     std::vector<Block> blocks_;

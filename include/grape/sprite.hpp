@@ -139,7 +139,7 @@ public:
     /// Throws grape::Error when it has no frames.
     void set_playable(Playable& playable);
     /// The playable, or nullptr for a bare frame counter.
-    Playable* playable() const noexcept { return playable_; }
+    Playable* playable() const noexcept;
 
     /// Sets the frame callback (empty to remove).
     void on_frame(FrameCallback callback);
@@ -151,7 +151,12 @@ public:
 private:
     struct Callbacks;
     void advance_general() noexcept;
-    void refresh() noexcept { plain_ = mode_ == PlayMode::loop && playing_ && !callbacks_; }
+    void refresh() noexcept { plain_ = mode_ == PlayMode::loop && playing_ && !has_callbacks(); }
+    bool has_callbacks() const noexcept { return (link_ & 1u) != 0; }
+    Callbacks* callbacks_block() const noexcept { return reinterpret_cast<Callbacks*>(link_ & ~std::uintptr_t{1}); }
+    Playable* playable_ptr() const noexcept;   // the playable, wherever link_ keeps it
+    void set_shown(Playable* playable) noexcept;
+    void release_callbacks() noexcept;
     void init(std::size_t frame_count, const SpritePlayerDef& def);
     void move_by(std::int64_t delta, std::size_t extra_cycles, std::int64_t direction) noexcept;
     void set_rate_parts(double rate) noexcept;
@@ -161,9 +166,9 @@ private:
     std::size_t frame_at(std::int64_t position) const noexcept;
     Callbacks& callbacks();
 
-    // Hot state first and small (48 bytes), so a million players stream through the cache:
-    // 32-bit frame numbers (frame counts are capped at 2^30) and the rate kept as its exact
-    // integer and fractional parts.
+    // Hot state first and small (40 bytes), so a million players stream through the cache:
+    // 32-bit frame numbers (frame counts are capped at 2^30), the rate kept as its exact
+    // integer and fractional parts, and one word for the playable and the callbacks.
     std::int32_t position_ = 0;     // frame (loop, once) or place on the 0 … 2n−3 ping-pong cycle
     std::int32_t frame_count_ = 1;
     std::int32_t whole_ = 0;        // trunc(rate)
@@ -173,8 +178,10 @@ private:
     bool plain_ = true;             // looping, playing, no callbacks: the inline step applies
     double fraction_ = 0.0;         // rate − trunc(rate), exact
     double remainder_ = 0.0;        // in (−1, 1)
-    Playable* playable_ = nullptr;
-    std::unique_ptr<Callbacks> callbacks_;  // cold: null until a callback is set
+    // The Playable (or 0) while no callback is set; then the Callbacks block, which holds the
+    // playable, with bit 0 set (both are at least 8-byte aligned). The inline step runs only
+    // without callbacks (plain_), so it reads the playable straight from here.
+    std::uintptr_t link_ = 0;
 };
 
 // The common case inline: looping, playing, no callbacks. The carry and the wrap are selects,
@@ -193,7 +200,8 @@ inline void SpritePlayer::advance() noexcept {
     next += (next >> 31) & frame_count_;
     next -= frame_count_ & -static_cast<std::int32_t>(next >= frame_count_);
     // One branch, never taken without a playable, so a bare counter predicts it.
-    if ((playable_ != nullptr) & (next != position_)) playable_->show_frame(static_cast<std::size_t>(next));
+    Playable* const playable = reinterpret_cast<Playable*>(link_);  // plain_: no callbacks, no tag
+    if ((playable != nullptr) & (next != position_)) playable->show_frame(static_cast<std::size_t>(next));
     position_ = next;
 }
 

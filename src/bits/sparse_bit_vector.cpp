@@ -45,8 +45,19 @@ BitVector SparseBitVector::to_bits() const {
 
 std::size_t SparseBitVector::count() const noexcept {
     std::size_t c = 0;
-    for (const Block& block : blocks_) c += block.count;
+    for (const Block& block : blocks_) c += count_of(block);
     return c;
+}
+
+std::size_t SparseBitVector::count_of(const Block& block) noexcept {
+    if (block.count != uncounted) return block.count;
+    return detail::word_kernels().count(block.bitmap.data(), block_words);
+}
+
+bool SparseBitVector::any() const noexcept {
+    for (const Block& block : blocks_)
+        if (count_of(block) != 0) return true;
+    return false;
 }
 
 std::size_t SparseBitVector::memory_bytes() const noexcept {
@@ -70,16 +81,17 @@ bool SparseBitVector::get(std::size_t i) const noexcept {
 }
 
 void SparseBitVector::to_bitmap(Block& block) {
-    std::vector<Word> bitmap(block_words, 0);
+    Bitmap bitmap(block_words, 0);
     for (const std::uint16_t p : block.array) bitmap[p / 64] |= Word{1} << (p % 64);
     block.bitmap = std::move(bitmap);
-    block.array = {};  // frees the array
+    block.array = std::vector<std::uint16_t>();  // frees the array (`= {}` would keep its capacity)
 }
 
 void SparseBitVector::fit(Block& block) {
+    block.count = static_cast<std::uint32_t>(count_of(block));
     if (block.bitmap.empty()) {
         if (block.count > array_limit) to_bitmap(block);
-        if (block.count == 0) block.array = {};
+        if (block.count == 0) block.array = std::vector<std::uint16_t>();
         return;
     }
     if (block.count > array_limit) return;
@@ -89,7 +101,7 @@ void SparseBitVector::fit(Block& block) {
         for (Word w = block.bitmap[k]; w != 0; w &= w - 1)
             array.push_back(static_cast<std::uint16_t>(k * 64 + static_cast<std::size_t>(std::countr_zero(w))));
     block.array = std::move(array);
-    block.bitmap = {};
+    block.bitmap = Bitmap();
 }
 
 void SparseBitVector::set(std::size_t i, bool value) {
@@ -101,6 +113,7 @@ void SparseBitVector::set(std::size_t i, bool value) {
         const Word mask = Word{1} << (p % 64);
         if (((w & mask) != 0) == value) return;
         w ^= mask;
+        if (block.count == uncounted) return;  // counted when next needed
         if (value) {
             ++block.count;
         } else {
@@ -139,7 +152,10 @@ void SparseBitVector::clear_all() noexcept {
 }
 
 void SparseBitVector::shrink_to_fit() {
-    for (Block& block : blocks_) block.array.shrink_to_fit();
+    for (Block& block : blocks_) {
+        fit(block);  // blocks `&=` left as uncounted bitmaps get their count and form back
+        block.array.shrink_to_fit();
+    }
     blocks_.shrink_to_fit();
 }
 
@@ -164,13 +180,18 @@ SparseBitVector& SparseBitVector::operator&=(const SparseBitVector& other) {
         if (this == &other) continue;
         const bool xb = !x.bitmap.empty(), yb = !y.bitmap.empty();
         if (xb && yb) {
-            x.count = static_cast<std::uint32_t>(kernels.and_count(x.bitmap.data(), y.bitmap.data(), block_words));
+            // A plain and at memory speed; counting in the same pass (a nibble-table popcount
+            // per 32 bytes) made the loop compute-bound at 0.75× memcpy. The count, and the
+            // array form if the result is sparse, wait until they are needed.
+            kernels.and_with(x.bitmap.data(), y.bitmap.data(), block_words);
+            x.count = uncounted;
+            continue;
         } else if (xb) {  // the result is the array's offsets that the bitmap has
             std::vector<std::uint16_t> array;
             array.reserve(y.array.size());
             for (const std::uint16_t p : y.array)
                 if ((x.bitmap[p / 64] >> (p % 64)) & 1u) array.push_back(p);
-            x.bitmap = {};
+            x.bitmap = Bitmap();
             x.array = std::move(array);
             x.count = static_cast<std::uint32_t>(x.array.size());
         } else if (yb) {
@@ -205,10 +226,10 @@ SparseBitVector& SparseBitVector::operator|=(const SparseBitVector& other) {
         }
         if (!y.bitmap.empty()) {
             if (x.bitmap.empty()) {
-                std::vector<Word> bitmap = y.bitmap;
+                Bitmap bitmap = y.bitmap;
                 for (const std::uint16_t p : x.array) bitmap[p / 64] |= Word{1} << (p % 64);
                 x.bitmap = std::move(bitmap);
-                x.array = {};
+                x.array = std::vector<std::uint16_t>();
             } else {
                 kernels.or_with(x.bitmap.data(), y.bitmap.data(), block_words);
             }
@@ -228,8 +249,24 @@ SparseBitVector& SparseBitVector::operator|=(const SparseBitVector& other) {
     return *this;
 }
 
+bool SparseBitVector::same_bits(const Block& x, const Block& y) noexcept {
+    const bool xb = !x.bitmap.empty(), yb = !y.bitmap.empty();
+    if (xb && yb) return x.bitmap == y.bitmap;
+    if (!xb && !yb) return x.array == y.array;
+    // One bitmap (left uncounted by `&=`), one array: the same bits when the bitmap holds
+    // every offset of the array and no other bit.
+    const Block& bitmap = xb ? x : y;
+    const Block& array = xb ? y : x;
+    if (count_of(bitmap) != array.array.size()) return false;
+    return std::all_of(array.array.begin(), array.array.end(),
+                       [&bitmap](std::uint16_t p) { return ((bitmap.bitmap[p / 64] >> (p % 64)) & 1u) != 0; });
+}
+
 bool operator==(const SparseBitVector& a, const SparseBitVector& b) noexcept {
-    return a.size_ == b.size_ && a.blocks_ == b.blocks_;
+    if (a.size_ != b.size_) return false;
+    for (std::size_t k = 0; k < a.blocks_.size(); ++k)
+        if (!SparseBitVector::same_bits(a.blocks_[k], b.blocks_[k])) return false;
+    return true;
 }
 
 }  // namespace grape

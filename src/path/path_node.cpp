@@ -244,6 +244,11 @@ void ReparametrizedNode::build() {
     noise_ = 16.0 * std::ldexp(std::numeric_limits<double>::denorm_min(), exponent_);
     const double total = scaled_length_;
     const auto& br = source_node_->breaks();
+    // The span budget grows with the smooth pieces, so that a long path gets the spans its
+    // error needs (about six per piece) whatever its length, while a path whose arc length
+    // the model cannot follow (rounding noise above 1e-10·L) still builds in bounded time and
+    // memory, linear in its pieces: 2^16 spans plus 256 per piece.
+    max_spans_ = (std::size_t{1} << 16) + 256 * (br.size() > 1 ? br.size() - 1 : 0);
     if (total > 0.0) {
         double s = 0.0;
         for (std::size_t piece = 0; piece + 1 < br.size(); ++piece) {
@@ -325,12 +330,11 @@ double ReparametrizedNode::build_span_checked(double va, double vb, double sa, i
     for (int k = 1; k <= 3; ++k) error = std::max(error, std::abs(model(k / 4.0) - q[k]));
     // 1e-10·L leaves a factor 10 to the promised 1e-9·L for the error between check points.
     const bool good = error <= std::max(1e-10 * total, noise_);
-    // The span budget bounds time and memory for paths whose arc length the model cannot
-    // follow to 1e-10·L (coordinates so large that rounding noise exceeds it): past it the
-    // remaining spans are kept as they are, with Newton lookups.
-    constexpr std::size_t max_spans = std::size_t{1} << 16;
+    // The span budget (build()) bounds time and memory for paths whose arc length the model
+    // cannot follow to 1e-10·L (coordinates so large that rounding noise exceeds it): past it
+    // the remaining spans are kept as they are, with Newton lookups.
     const bool last =
-        depth >= 48 || spans_.size() >= max_spans || !(0.5 * (va + vb) > va && 0.5 * (va + vb) < vb);
+        depth >= 48 || spans_.size() >= max_spans_ || !(0.5 * (va + vb) > va && 0.5 * (va + vb) < vb);
     // A span whose inverse model misses although the path moves at both ends is split too:
     // lookups then cost one polynomial instead of Newton steps.
     if (last || (good && (fit_inverse(sp, total, noise_) || depth >= 24))) {
@@ -362,14 +366,16 @@ bool ReparametrizedNode::fit_inverse(Span& sp, double total, double noise) noexc
     sp.j3 = 10.0 - 6.0 * m0 - 4.0 * m1 - 1.5 * a0 + 0.5 * a1;
     sp.j4 = -15.0 + 8.0 * m0 + 7.0 * m1 + 1.5 * a0 - a1;
     sp.j5 = 6.0 - 3.0 * m0 - 3.0 * m1 - 0.5 * a0 + 0.5 * a1;
-    // Checked against the forward model at 15 interior points: 2e-10·L plus the forward
-    // model's 1e-10·L stays well inside 1e-9·L.
+    // Checked against the forward model at 15 interior points to 2e-11·L: with the forward
+    // model's 1e-10·L well inside 1e-9·L, and tight enough that the inverse's own wiggles
+    // (the larger part of the lookup error at 2e-10) leave room for the bulk evaluators'
+    // smooth table (kernel.hpp) to land within 2e-10·L of Path::point.
     for (int k = 1; k < 16; ++k) {
         const double g = k / 16.0;
         const double t = g * (sp.j1 + g * (sp.j2 + g * (sp.j3 + g * (sp.j4 + g * sp.j5))));
         if (!(t >= 0.0 && t <= 1.0)) return false;
         const double p = t * (sp.k1 + t * (sp.k2 + t * (sp.k3 + t * (sp.k4 + t * sp.k5))));
-        if (!(std::abs(p - g * S) <= std::max(2e-10 * total, noise))) return false;
+        if (!(std::abs(p - g * S) <= std::max(2e-11 * total, noise))) return false;
     }
     sp.newton = false;
     return true;

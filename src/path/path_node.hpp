@@ -243,6 +243,7 @@ private:
     std::vector<Span> spans_;
     std::vector<std::uint32_t> buckets_;  // buckets_[b]: the span holding s = b / bucket_scale_
     double bucket_scale_ = 0.0;
+    std::size_t max_spans_ = 0;  // the span budget, set by build() from the number of pieces
     // The table's arc lengths (s0, ds, k1..k5 of every span) are in units of 2^−exponent_,
     // which puts the length in [1, 2): for a length of 1e-320 the spans would otherwise
     // underflow to zero length and the reciprocals overflow, and every lookup land on the end.

@@ -43,16 +43,40 @@ struct Slot {
 }  // namespace
 
 struct SpritePlayer::Callbacks {
+    Playable* playable = nullptr;
     Slot<FrameCallback> frame;
     Slot<CompleteCallback> complete;
     Slot<LoopCallback> loop;
 };
 
-SpritePlayer::SpritePlayer(Playable& playable, const SpritePlayerDef& def) : playable_(&playable) {
+Playable* SpritePlayer::playable_ptr() const noexcept {
+    return has_callbacks() ? callbacks_block()->playable : reinterpret_cast<Playable*>(link_);
+}
+
+Playable* SpritePlayer::playable() const noexcept { return playable_ptr(); }
+
+void SpritePlayer::set_shown(Playable* playable) noexcept {
+    if (has_callbacks()) {
+        callbacks_block()->playable = playable;
+    } else {
+        link_ = reinterpret_cast<std::uintptr_t>(playable);
+    }
+}
+
+// Deletes the callbacks, keeping the playable in link_.
+void SpritePlayer::release_callbacks() noexcept {
+    if (!has_callbacks()) return;
+    Callbacks* cb = callbacks_block();
+    link_ = reinterpret_cast<std::uintptr_t>(cb->playable);
+    delete cb;
+}
+
+SpritePlayer::SpritePlayer(Playable& playable, const SpritePlayerDef& def) {
     const std::size_t n = playable.frame_count();
     if (n == 0) throw Error("SpritePlayer: playable has no frames (frame_count() is 0)");
+    link_ = reinterpret_cast<std::uintptr_t>(&playable);
     init(n, def);
-    playable_->show_frame(frame());
+    playable.show_frame(frame());
 }
 
 SpritePlayer::SpritePlayer(std::size_t frame_count, const SpritePlayerDef& def) {
@@ -63,11 +87,42 @@ SpritePlayer::SpritePlayer(std::size_t frame_count, const SpritePlayerDef& def) 
 SpritePlayer::SpritePlayer(const SpritePlayer& other)
     : position_(other.position_), frame_count_(other.frame_count_), whole_(other.whole_), mode_(other.mode_),
       playing_(other.playing_), finished_(other.finished_), plain_(other.plain_), fraction_(other.fraction_),
-      remainder_(other.remainder_), playable_(other.playable_),
-      callbacks_(other.callbacks_ ? std::make_unique<Callbacks>(*other.callbacks_) : nullptr) {}
+      remainder_(other.remainder_), link_(other.link_) {
+    if (other.has_callbacks()) link_ = reinterpret_cast<std::uintptr_t>(new Callbacks(*other.callbacks_block())) | 1u;
+}
 
-SpritePlayer::SpritePlayer(SpritePlayer&&) noexcept = default;
-SpritePlayer& SpritePlayer::operator=(SpritePlayer&&) noexcept = default;
+// The moved-from player keeps its playable and loses its callbacks (as a moved-from
+// unique_ptr would).
+SpritePlayer::SpritePlayer(SpritePlayer&& other) noexcept
+    : position_(other.position_), frame_count_(other.frame_count_), whole_(other.whole_), mode_(other.mode_),
+      playing_(other.playing_), finished_(other.finished_), plain_(other.plain_), fraction_(other.fraction_),
+      remainder_(other.remainder_), link_(other.link_) {
+    if (other.has_callbacks()) {
+        other.link_ = reinterpret_cast<std::uintptr_t>(callbacks_block()->playable);
+        other.refresh();
+    }
+}
+
+SpritePlayer& SpritePlayer::operator=(SpritePlayer&& other) noexcept {
+    if (this != &other) {
+        release_callbacks();
+        position_ = other.position_;
+        frame_count_ = other.frame_count_;
+        whole_ = other.whole_;
+        mode_ = other.mode_;
+        playing_ = other.playing_;
+        finished_ = other.finished_;
+        plain_ = other.plain_;
+        fraction_ = other.fraction_;
+        remainder_ = other.remainder_;
+        link_ = other.link_;
+        if (other.has_callbacks()) {
+            other.link_ = reinterpret_cast<std::uintptr_t>(callbacks_block()->playable);
+            other.refresh();
+        }
+    }
+    return *this;
+}
 
 SpritePlayer& SpritePlayer::operator=(const SpritePlayer& other) {
     if (this != &other) {
@@ -77,7 +132,7 @@ SpritePlayer& SpritePlayer::operator=(const SpritePlayer& other) {
     return *this;
 }
 
-SpritePlayer::~SpritePlayer() = default;
+SpritePlayer::~SpritePlayer() { release_callbacks(); }
 
 void SpritePlayer::init(std::size_t frame_count, const SpritePlayerDef& def) {
     if (frame_count > max_frame_count) {
@@ -139,7 +194,7 @@ void SpritePlayer::set_frame(std::size_t k) {
     position_ = static_cast<std::int32_t>(k);
     remainder_ = 0.0;
     finished_ = false;
-    if (playable_ && shown != k) playable_->show_frame(k);
+    if (Playable* p = playable_ptr(); p && shown != k) p->show_frame(k);
 }
 
 void SpritePlayer::play() noexcept {
@@ -148,7 +203,7 @@ void SpritePlayer::play() noexcept {
         remainder_ = 0.0;
         const std::size_t shown = frame();
         position_ = rate() < 0.0 ? frame_count_ - 1 : 0;
-        if (playable_ && shown != frame()) playable_->show_frame(frame());
+        if (Playable* p = playable_ptr(); p && shown != frame()) p->show_frame(frame());
     }
     playing_ = true;
     refresh();
@@ -161,17 +216,21 @@ void SpritePlayer::set_playable(Playable& playable) {
         throw Error("SpritePlayer::set_playable: frame_count " + std::to_string(n) + " is too large (max 2^30)");
     }
     const std::size_t shown = frame() < n ? frame() : n - 1;
-    playable_ = &playable;
+    set_shown(&playable);
     frame_count_ = static_cast<std::int32_t>(n);
     position_ = static_cast<std::int32_t>(shown);
     set_rate(rate());  // re-apply the cap for the new frame count
-    playable_->show_frame(shown);
+    playable.show_frame(shown);
 }
 
 SpritePlayer::Callbacks& SpritePlayer::callbacks() {
-    if (!callbacks_) callbacks_ = std::make_unique<Callbacks>();
+    if (!has_callbacks()) {
+        auto* cb = new Callbacks;
+        cb->playable = reinterpret_cast<Playable*>(link_);
+        link_ = reinterpret_cast<std::uintptr_t>(cb) | 1u;
+    }
     plain_ = false;  // the general step reports to them
-    return *callbacks_;
+    return *callbacks_block();
 }
 
 void SpritePlayer::on_frame(FrameCallback callback) { callbacks().frame.assign(std::move(callback)); }
@@ -254,8 +313,8 @@ void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles, std::in
             finished_ = true;
             remainder_ = 0.0;
         }
-        if (playable_ && frame_at(next) != frame_at(from)) playable_->show_frame(frame_at(next));
-        if (callbacks_) report(next, steps, direction, 0, done);
+        if (Playable* p = playable_ptr(); p && frame_at(next) != frame_at(from)) p->show_frame(frame_at(next));
+        if (has_callbacks()) report(next, steps, direction, 0, done);
         return;
     }
     const std::int64_t p = period();
@@ -264,8 +323,8 @@ void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles, std::in
     next += (p & -static_cast<std::int64_t>(under)) - (p & -static_cast<std::int64_t>(over));
     const std::size_t cycles = extra_cycles + static_cast<std::size_t>(under || over);
     position_ = static_cast<std::int32_t>(next);
-    if (playable_ && frame_at(next) != frame_at(from)) playable_->show_frame(frame_at(next));
-    if (callbacks_) {
+    if (Playable* p = playable_ptr(); p && frame_at(next) != frame_at(from)) p->show_frame(frame_at(next));
+    if (has_callbacks()) {
         const std::int64_t moved = delta >= 0 ? delta : -delta;
         report(next, extra_cycles > 0 || moved > p ? p : moved, direction, cycles, false);
     }
@@ -273,7 +332,7 @@ void SpritePlayer::move_by(std::int64_t delta, std::size_t extra_cycles, std::in
 
 void SpritePlayer::report(std::int64_t target, std::int64_t steps, std::int64_t direction, std::size_t cycles,
                           bool completed) noexcept {
-    Callbacks& cb = *callbacks_;
+    Callbacks& cb = *callbacks_block();
     if (cb.frame.fn && steps > 0) {
         // The positions entered, in order of travel: target − direction·(steps − 1) … target.
         const std::int64_t p = mode_ == PlayMode::once ? frame_count_ : period();
