@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine_eval.hpp"
+#include "timeline_impl.hpp"
 
 namespace grape::detail {
 
@@ -129,6 +130,8 @@ void EngineImpl::tick(double dt) {
         }
         ++i;
     }
+
+    if (timelines_) timelines_->tick(dt);
 
     if (!listeners_.empty()) {
         Dispatch d(*this);
