@@ -31,8 +31,16 @@ void* operator new(std::size_t size) {
     if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
     throw std::bad_alloc();
 }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {  // std::stable_sort's buffer
+    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+    return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size) { return operator new(size); }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using grape::Animation;
 using grape::AnimationDef;
@@ -625,9 +633,9 @@ TEST(TimelineHandlers, RandomMutationsFromHandlers) {
                 default: engine.create_animation(unit_line, 0.2).on_complete(mutate); break;
             }
         };
+        std::vector<int> log;  // the trees' callbacks write here as long as the engine runs
         for (int k = 0; k < 6; ++k) {
             const Tree tree = random_tree(seed * 10 + static_cast<std::uint64_t>(k));
-            std::vector<int> log;
             Built b = build(engine, tree, log);
             b.root.on_update([&] {
                 if (rng() % 8 == 0) mutate();
@@ -695,6 +703,48 @@ TEST(TimelineScale, NoAllocationPerTick) {
     counting = false;
     EXPECT_EQ(allocations.load(), 0);
     EXPECT_GT(events, 1000);
+}
+
+// Animations on their own: reverse() runs back through earlier plays (exact: the state is
+// the timing model's at the position reached), reaching the start fires on_reverse_complete
+// once and holds; on_start fires when the first play begins; on_update after every change.
+TEST(AnimationRunTime, ReversePlayAndEvents) {
+    Engine engine;
+    Point p;
+    const AnimationDef def{.delay = 0.25, .repeat = 2, .repeat_delay = 0.125, .yoyo = true};
+    Animation a = engine.create_2d_animation(p, unit_line, 1.0, def);
+    std::vector<std::string> events;
+    int updates = 0;
+    a.on_start([&] { events.push_back("start"); });
+    a.on_loop([&](int play) { events.push_back("loop" + std::to_string(play)); });
+    a.on_reverse_complete([&] { events.push_back("back"); });
+    a.on_update([&] { ++updates; });
+    engine.tick(0.125);  // waiting
+    EXPECT_EQ(p.x, -999.0);
+    engine.tick(0.25);  // 0.375: the first play began 0.125 ago
+    EXPECT_EQ(p.x, 0.125);
+    engine.tick(1.5);  // 1.875: play 1 (backward) since 1.375, 0.5 in
+    EXPECT_EQ(p.x, 0.5);
+    EXPECT_EQ(a.repetition(), 1);
+    a.reverse();
+    EXPECT_TRUE(a.reversed());
+    engine.tick(0.25);  // back to 1.625: 0.25 into play 1
+    EXPECT_EQ(p.x, 0.75);
+    engine.tick(0.3125);  // 1.3125: in the repeat delay after play 0, holding its end
+    EXPECT_EQ(p.x, 1.0);
+    EXPECT_EQ(a.repetition(), 0);
+    engine.tick(0.5);  // 0.8125: 0.5625 into play 0
+    EXPECT_EQ(p.x, 0.5625);
+    engine.tick(10.0);  // back at the start, holding
+    EXPECT_EQ(p.x, 0.0);
+    engine.tick(1.0);
+    EXPECT_TRUE(a.alive());
+    a.play();
+    engine.tick(0.5);
+    EXPECT_EQ(p.x, 0.5);
+    EXPECT_EQ(events, (std::vector<std::string>{"start", "loop1", "back"}));
+    EXPECT_GE(updates, 6);
+    EXPECT_EQ(a.time_scale(), 1.0);  // the direction is not a negative scale
 }
 
 }  // namespace

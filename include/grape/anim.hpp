@@ -202,11 +202,21 @@ public:
     /// saturates at UINT64_MAX).
     void on_loop(std::function<void(int play, std::uint64_t skipped)> handler) const;
 
+    /// Plays backwards from where it is (at the engine's time scale), back through earlier
+    /// plays to the first one's start, where on_reverse_complete fires and it holds (alive).
+    /// Inside its delay it waits. No loop events going back.
+    void reverse() const noexcept;
+    /// Plays forwards again from where it is (and resumes it).
+    void play() const noexcept;
+    /// Running backwards now (after reverse()).
+    bool reversed() const noexcept;
+    /// Calls `handler` after every change of state (each tick that moves it, each seek).
+    void on_update(std::function<void()> handler) const;
     /// Calls `handler` when the first play begins (after the delay; in a timeline, each time
     /// the timeline's time carries it forward across that point).
     void on_start(std::function<void()> handler) const;
-    /// Calls `handler` when the animation is driven back to its start (in a timeline running
-    /// backwards).
+    /// Calls `handler` when the animation comes back to its start running backwards (after
+    /// reverse(), or in a timeline running backwards).
     void on_reverse_complete(std::function<void()> handler) const;
 
     friend bool operator==(const Animation&, const Animation&) noexcept = default;

@@ -109,7 +109,7 @@ double Animation::duration() const noexcept {
 
 double Animation::time_scale() const noexcept {
     GRAPE_FIND(0.0);
-    return found->rate * impl.cold(dense).duration;
+    return std::fabs(found->rate) * impl.cold(dense).duration;
 }
 
 void Animation::pause() const noexcept {
@@ -144,6 +144,32 @@ void Animation::on_complete(std::function<void()> handler) const {
     GRAPE_FIND();
     impl.extra_for(slot_).on_complete = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
     impl.hot(dense).flags |= detail::flag_listens;
+}
+
+void Animation::reverse() const noexcept {
+    GRAPE_FIND();
+    if (impl.driven(slot_)) return;
+    detail::Hot& h = impl.hot(dense);
+    h.rate = -std::fabs(h.rate);
+}
+
+void Animation::play() const noexcept {
+    GRAPE_FIND();
+    if (impl.driven(slot_)) return;
+    detail::Hot& h = impl.hot(dense);
+    h.rate = std::fabs(h.rate);
+    h.flags &= static_cast<std::uint8_t>(~detail::flag_paused);
+}
+
+bool Animation::reversed() const noexcept {
+    GRAPE_FIND(false);
+    return found->rate < 0.0;
+}
+
+void Animation::on_update(std::function<void()> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_update = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_custom;
 }
 
 void Animation::on_start(std::function<void()> handler) const {

@@ -71,6 +71,7 @@ struct Extra {
     std::shared_ptr<const std::function<void(std::span<const double>)>> on_update_nd;
     std::shared_ptr<const std::function<void()>> on_start;             // the first play begins
     std::shared_ptr<const std::function<void()>> on_reverse_complete;  // back at the start
+    std::shared_ptr<const std::function<void()>> on_update;            // after every change (flag_custom)
     bool write_rotation = false;          // 2-D targets: the heading goes to x + rotation_offset
     std::ptrdiff_t rotation_offset = 0;
     bool track_heading = false;
@@ -167,6 +168,8 @@ private:
     void write_2d(const Hot& h, Vec2 p) const noexcept;
     void write_state(std::uint32_t dense);
     void advance_slow(std::uint32_t dense, double phase);
+    void advance_back(std::uint32_t dense, double phase);
+    bool fire_simple(std::uint32_t dense, std::shared_ptr<const std::function<void()>> Extra::*member);
     void fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes);
     void mark_dead(std::uint32_t dense) noexcept;
     void remove_now(std::uint32_t dense) noexcept;

@@ -44,7 +44,7 @@ void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
 void EngineImpl::set_time_scale(std::uint32_t dense, double scale) noexcept {
     if (!(std::isfinite(scale) && scale >= 0.0)) return;
     const double rate = scale / cold_[dense].duration;
-    if (std::isfinite(rate)) hot_[dense].rate = rate;  // an overflowing rate is ignored too
+    if (std::isfinite(rate)) hot_[dense].rate = hot_[dense].rate < 0.0 ? -rate : rate;  // keeps the direction; an overflowing rate is ignored too
 }
 
 void EngineImpl::mark_dead(std::uint32_t dense) noexcept {

@@ -158,7 +158,7 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
     c.slot = a.slot_;
     c.generation = a.generation_;
     c.p0 = cold.play == 0 && h.phase < 0.0 ? h.phase : 0.0;  // its delay, if it has not begun
-    c.rate = h.rate;
+    c.rate = std::fabs(h.rate);  // a run-time reverse does not carry into the timeline
     c.plays = cold.plays;
     c.gap = engine_.gap_of(dense);
     c.reversed = (h.flags & flag_reversed) != 0;

@@ -118,6 +118,9 @@ void TimelineStore::sync(std::uint32_t slot) {
     EngineImpl::Dispatch d(engine_);
     for (std::uint32_t s = slot; s != UINT32_MAX; s = recs_[s]->parent) {
         if (!recs_[s]->alive) return;
+        // One being updated now picks the change up itself (its window is rebuilt as it goes).
+        for (const auto& entry : stack_)
+            if (entry.first == s) return;
         if (!advance(s, recs_[s]->tau, false)) return;
         if (!drive_active(s, recs_[s]->cursor, false)) return;
     }
@@ -233,8 +236,13 @@ bool TimelineStore::sweep(std::uint32_t slot, double to, bool forward, bool fire
         r->cursor = t;
         set_cursor_tau(*r, play, t);
         // The children running now reach t first: their own events come before this point's.
+        const std::uint64_t window = r->rebuilds;
+        const std::size_t children = r->children.size(), calls = r->callbacks.size();
         if (!drive_active(slot, t, fire)) return false;
         r = recs_[slot].get();
+        if (r->dirty) rebuild(*r);
+        // Their handlers placed something: look for the next point again.
+        if (r->rebuilds != window || r->children.size() != children || r->callbacks.size() != calls) continue;
         bool ok = true;
         if (forward) {  // at equal times: ends, callbacks, starts
             if (t_end == t) {
