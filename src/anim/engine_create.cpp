@@ -65,12 +65,20 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int rep
     hot_.push_back(hot);
     cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot, 0, curve});
     slots_[slot].dense = dense;
+    if (driven_begin_ != dense) {  // the first driven record moves to the end; this one takes its place
+        const std::uint32_t first = driven_begin_;
+        std::swap(hot_[first], hot_[dense]);
+        std::swap(cold_[first], cold_[dense]);
+        slots_[cold_[dense].slot].dense = dense;
+        slots_[cold_[first].slot].dense = first;
+    }
+    ++driven_begin_;
     if (extra) extras_.insert_or_assign(slot, std::move(*extra));
     ++live_;
     const Animation handle(owner_, slot, slots_[slot].generation);
     {
         Dispatch d(*this);
-        write_state(dense);  // the start state, unless a delay holds it back
+        write_state(slots_[slot].dense);  // the start state, unless a delay holds it back
     }
     return handle;
 }

@@ -173,6 +173,9 @@ private:
     void fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes);
     void mark_dead(std::uint32_t dense) noexcept;
     void remove_now(std::uint32_t dense) noexcept;
+    void move_record(std::uint32_t from, std::uint32_t to) noexcept;
+    /// Moves a record into the driven region (outside a dispatch only).
+    void make_driven(std::uint32_t dense) noexcept;
     void compact() noexcept;
     void finish_dispatch() noexcept;
 
@@ -206,6 +209,9 @@ private:
     int depth_ = 0;         // handler calls in progress
     bool ticking_ = false;
     std::unique_ptr<TimelineStore, TimelineStoreDelete> timelines_;  // null until the first timeline
+    // Records [0, driven_begin_) are ticked by the engine; [driven_begin_, size) are driven by
+    // timelines and never walked by the tick.
+    std::uint32_t driven_begin_ = 0;
 };
 
 /// The high bit of Slot::dense marks a free slot (its low bits chain to the next free one).

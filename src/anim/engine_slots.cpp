@@ -76,13 +76,34 @@ void EngineImpl::remove_now(std::uint32_t dense) noexcept {
     slots_[slot].dense = free_bit | (free_slot_ & ~free_bit);
     free_slot_ = slot;
     const auto last = static_cast<std::uint32_t>(hot_.size() - 1);
-    if (dense != last) {
-        hot_[dense] = hot_[last];
-        cold_[dense] = cold_[last];
-        slots_[cold_[dense].slot].dense = dense;
+    if (dense < driven_begin_) {  // the last ticked record fills the hole, the last record its place
+        const std::uint32_t edge = driven_begin_ - 1;
+        if (dense != edge) move_record(edge, dense);
+        if (edge != last) move_record(last, edge);
+        --driven_begin_;
+    } else if (dense != last) {
+        move_record(last, dense);
     }
     hot_.pop_back();
     cold_.pop_back();
+}
+
+void EngineImpl::move_record(std::uint32_t from, std::uint32_t to) noexcept {
+    hot_[to] = hot_[from];
+    cold_[to] = cold_[from];
+    slots_[cold_[to].slot].dense = to;
+}
+
+void EngineImpl::make_driven(std::uint32_t dense) noexcept {
+    if (dense >= driven_begin_) return;
+    const std::uint32_t edge = driven_begin_ - 1;
+    if (dense != edge) {
+        std::swap(hot_[dense], hot_[edge]);
+        std::swap(cold_[dense], cold_[edge]);
+        slots_[cold_[dense].slot].dense = dense;
+        slots_[cold_[edge].slot].dense = edge;
+    }
+    --driven_begin_;
 }
 
 void EngineImpl::compact() noexcept {

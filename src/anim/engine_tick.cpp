@@ -99,7 +99,7 @@ void EngineImpl::tick(double dt) {
     } ticking(*this);
 
     // Records created by handlers during this tick land past n and start on the next tick.
-    const std::size_t n = hot_.size();
+    const std::size_t n = driven_begin_;  // the records timelines drive lie beyond
     std::size_t i = 0;
     while (i < n) {
         // The common case runs in a tight loop over local pointers. Anything else (paused,

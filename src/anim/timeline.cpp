@@ -43,6 +43,7 @@ Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
         slot = static_cast<std::uint32_t>(recs_.size());
         recs_.push_back(std::make_unique<TimelineRec>());
         free_.reserve(recs_.size());  // so killing never allocates
+        dead_slots_.reserve(recs_.size());
     }
     roots_.push_back(slot);
     TimelineRec& r = *recs_[slot];
@@ -101,9 +102,13 @@ double TimelineStore::place(TimelineRec& r, const TimelinePosition& at, double d
 
 void TimelineStore::insert_child(std::uint32_t slot, TimelineChild c) {
     TimelineRec& r = *recs_[slot];
-    r.children.reserve(r.children.size() + 1);
-    r.by_end.reserve(r.children.size() + 1);
-    r.active.reserve(r.children.size() + 1);  // the window never allocates while playing
+    // Geometric growth (placing n children costs O(n) copies); the active window gets the
+    // same capacity, so it never allocates while playing.
+    const std::size_t need = r.children.size() + 1;
+    const std::size_t capacity = need > r.children.capacity() ? std::max(need, 2 * r.children.capacity()) : r.children.capacity();
+    r.children.reserve(capacity);
+    r.by_end.reserve(capacity);
+    r.active.reserve(capacity);
     const auto pos = std::upper_bound(r.children.begin(), r.children.end(), c.start,
                                       [](double s, const TimelineChild& x) { return s < x.start; });
     const auto index = static_cast<std::uint32_t>(pos - r.children.begin());
@@ -178,7 +183,8 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
     }
     // Driven from now on: the engine's own loop passes over it; it rests at its start.
     Hot& hot = engine_.hot_[dense];
-    hot.flags |= flag_paused;
+    hot.flags |= flag_paused;  // skipped by the engine's loop until it moves out of it
+    pending_driven_.push_back(a.slot_);
     cold.play = 0;
     hot.phase = 0.0;
     hot.flags = static_cast<std::uint8_t>(c.reversed ? (hot.flags | flag_backward) : (hot.flags & ~flag_backward));
@@ -207,6 +213,7 @@ void TimelineStore::add_timeline(std::uint32_t slot, std::uint32_t child, const 
     e.end = e.start + e.length;
     insert_child(slot, e);
     c.parent = slot;
+    ++stale_roots_;
     c.paused = false;
     c.direction = 1.0;
 }
@@ -263,6 +270,8 @@ void TimelineStore::kill_rec(std::uint32_t slot) noexcept {
     ++r.generation;
     ++r.epoch;
     ++dead_;
+    dead_slots_.push_back(slot);  // capacity reserved at creation
+    if (r.parent == UINT32_MAX) ++stale_roots_;
     for (const TimelineChild& c : r.children) {
         if (c.is_timeline) {
             if (recs_[c.slot]->generation == c.generation) kill_rec(c.slot);
@@ -285,19 +294,26 @@ void TimelineStore::kill_all() noexcept {
 
 void TimelineStore::finish() noexcept {
     if (depth_ > 0) return;
-    if (dead_ > 0) {
-        for (std::uint32_t s = 0; s < recs_.size(); ++s) {
-            TimelineRec& r = *recs_[s];
-            if (!r.dead) continue;
-            const std::uint32_t generation = r.generation;
-            r = TimelineRec();  // frees its vectors and handlers
-            r.generation = generation;
-            free_.push_back(s);  // capacity reserved at creation
-        }
-        dead_ = 0;
+    for (const std::uint32_t s : dead_slots_) {
+        TimelineRec& r = *recs_[s];
+        const std::uint32_t generation = r.generation;
+        r = TimelineRec();  // frees its vectors and handlers
+        r.generation = generation;
+        free_.push_back(s);  // capacity reserved at creation
     }
+    dead_slots_.clear();
+    dead_ = 0;
+    // Animations placed since: out of the engine's loop (their records move past it).
+    for (const std::uint32_t slot : pending_driven_) {
+        const Slot& s = engine_.slots_[slot];
+        if (!(s.dense & free_bit) && drives(slot)) engine_.make_driven(s.dense);
+    }
+    pending_driven_.clear();
     // Top-level entries that were killed or placed into a timeline leave the list.
-    std::erase_if(roots_, [&](std::uint32_t s) { return !recs_[s]->alive || recs_[s]->parent != UINT32_MAX; });
+    if (stale_roots_ > 0) {
+        std::erase_if(roots_, [&](std::uint32_t s) { return !recs_[s]->alive || recs_[s]->parent != UINT32_MAX; });
+        stale_roots_ = 0;
+    }
 }
 
 }  // namespace detail

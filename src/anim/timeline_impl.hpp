@@ -142,6 +142,9 @@ private:
     std::vector<std::uint32_t> roots_;  // top-level timelines, in creation order
     std::unordered_map<std::uint32_t, std::uint32_t> driven_;  // animation slot → timeline slot
     std::vector<std::pair<std::uint32_t, std::uint64_t>> stack_;  // updates in progress: slot, epoch
+    std::vector<std::uint32_t> dead_slots_;      // killed, freed after the dispatch
+    std::vector<std::uint32_t> pending_driven_;  // animation slots to move out of the engine's loop
+    std::size_t stale_roots_ = 0;                // roots_ entries killed or nested since the last clean-up
     std::size_t dead_ = 0;
     int depth_ = 0;  // updates in progress
 };

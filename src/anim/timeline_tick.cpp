@@ -300,13 +300,14 @@ bool TimelineStore::drive_active(std::uint32_t slot, double local, bool fire) {
 }
 
 bool TimelineStore::drive(std::uint32_t slot, std::size_t i, double local, bool fire) {
-    const TimelineChild c = recs_[slot]->children[i];
+    const TimelineChild& c = recs_[slot]->children[i];
     if (!c.is_timeline) return drive_animation(slot, i, local, fire);
-    const TimelineRec& k = *recs_[c.slot];
+    const std::uint32_t child = c.slot;
+    const TimelineRec& k = *recs_[child];
     if (!k.alive || k.generation != c.generation) return true;  // killed: nothing to drive
     const double into = local - c.start;
     const double tau = into <= 0.0 ? 0.0 : into >= c.length ? total(k) : into * k.time_scale;
-    if (!advance(c.slot, tau, fire)) return stack_intact();
+    if (!advance(child, tau, fire)) return stack_intact();
     return true;
 }
 
