@@ -23,7 +23,7 @@ PlayState play_at_position(double position, double plays, bool reversed, bool yo
         s.phase = phase > 0.0 ? phase : 0.0;
     }
     // Doubles from 2⁵³ on are even, and so is the limit +inf: fmod gives 0 or NaN there.
-    const bool odd = std::fmod(s.play, 2.0) == 1.0;
+    const bool odd = yoyo && std::fmod(s.play, 2.0) == 1.0;  // fmod only where the parity matters
     s.backward = reversed != (yoyo && odd);
     return s;
 }
@@ -56,7 +56,7 @@ PlayState play_at_position(double position, double plays, bool reversed, bool yo
             s.phase = local;
         }
     }
-    const bool odd = std::fmod(s.play, 2.0) == 1.0;
+    const bool odd = yoyo && std::fmod(s.play, 2.0) == 1.0;  // fmod only where the parity matters
     s.backward = reversed != (yoyo && odd);
     return s;
 }
