@@ -235,7 +235,9 @@ private:
 /// Owns and advances animations. Not copyable or movable (handles refer to it).
 ///
 /// Order within a tick: every animation that was alive when the tick began advances by dt
-/// (events fire as each one crosses a loop or completes), then tick listeners run.
+/// (events fire as each one crosses a loop or completes), then every top-level timeline
+/// (timeline.hpp; the animations placed in timelines are driven there, not here), then tick
+/// listeners run.
 /// Handlers may create, pause, resume, seek or kill animations: an animation created during
 /// a tick first advances on the next tick; a killed one gets no further events; a change
 /// to an animation the tick has not reached yet applies before its own update in that tick.
