@@ -59,6 +59,8 @@
 namespace grape {
 
 class Engine;
+class Timeline;
+struct TimelineDef;
 
 /// How an animation plays; fill with designated initializers:
 /// `{.curve = Curve::quad_in_out(), .repeat = -1, .yoyo = true}`.
@@ -66,6 +68,9 @@ struct AnimationDef {
     Curve curve{};            ///< progress over each play's normalized time (default linear)
     double delay = 0.0;       ///< seconds (animation time) before the first play; ≥ 0
     int repeat = 0;           ///< extra plays after the first: 0 plays once, −1 forever
+    double repeat_delay = 0.0;  ///< seconds (animation time) between plays, holding the end of
+                                ///< the play just finished; ≥ 0 (on_loop fires when the next
+                                ///< play starts, after it)
     bool reversed = false;    ///< play from the path's end to its start
     bool yoyo = false;        ///< every second play runs backwards (reverse on loop)
     double time_scale = 1.0;  ///< animation seconds per engine second; ≥ 0
@@ -100,6 +105,8 @@ struct PlayState {
                              ///< waiting (−phase·duration seconds of delay left)
     bool backward = false;   ///< the current play runs from the path's end to its start
     bool finished = false;   ///< at the end of the last play (never for endless animations)
+    double gap = 0.0;        ///< plays of repeat delay elapsed after the current play (> 0 only
+                             ///< while holding at its end, phase 1, before the next play)
 };
 
 /// The state `position` plays after the first play began (negative: waiting), for an
@@ -108,6 +115,12 @@ struct PlayState {
 /// end counts as ended; from 2⁵³ plays on the phase is 0 (a double has no fraction left
 /// there), and +inf gives the start of a play after infinitely many. NaN counts as 0.
 PlayState play_at_position(double position, double plays, bool reversed, bool yoyo) noexcept;
+
+/// The same with a repeat delay of `gap` plays (≥ 0) after every play but the last: a cycle is
+/// 1 + gap plays long, and the last play of `plays` ends at plays + (plays − 1)·gap. During a
+/// gap the state is the end of the play just finished (phase 1, `gap` > 0); within play_snap of
+/// a gap's end the next play has begun. gap 0 is the four-argument form bit for bit.
+PlayState play_at_position(double position, double plays, bool reversed, bool yoyo, double gap) noexcept;
 
 /// The state at `t` seconds (engine time) after an animation of `def` and `duration`
 /// seconds per play was created, as the Engine plays it: animation time runs at
@@ -118,8 +131,8 @@ PlayState play_at(const AnimationDef& def, double duration, double t) noexcept;
 /// (curve(1 − τ)) on backward plays; the start while waiting, the end once finished.
 double progress_at(const AnimationDef& def, double duration, double t) noexcept;
 
-/// Engine seconds from creation until the last play ends: (delay + duration·plays) /
-/// time_scale; +inf for endless animations or time_scale 0.
+/// Engine seconds from creation until the last play ends: (delay + duration·plays +
+/// repeat_delay·(plays − 1)) / time_scale; +inf for endless animations or time_scale 0.
 double end_time(const AnimationDef& def, double duration) noexcept;
 
 /// A member of T that a property animation drives: a `double T::*` or a `float T::*`.
@@ -133,6 +146,7 @@ struct Member {
 
 namespace detail {
 class EngineImpl;
+class TimelineStore;
 /// Where a property animation writes one value: a byte offset into the target and its type.
 struct MemberRef {
     std::size_t offset;
@@ -168,7 +182,8 @@ public:
     /// Curve progress of the current play (the path parameter u; may leave [0, 1]).
     double progress() const noexcept;
     /// Seconds of animation time since the first play began (negative while waiting;
-    /// counts all plays, so it runs to duration·(repeat + 1)).
+    /// counts all plays and repeat delays, so it runs to duration·(repeat + 1) +
+    /// repeat_delay·repeat).
     double time() const noexcept;
     /// Which play is running: 0 for the first, 1 after the first loop, ...
     int repetition() const noexcept;
@@ -208,11 +223,29 @@ public:
     /// saturates at UINT64_MAX).
     void on_loop(std::function<void(int play, std::uint64_t skipped)> handler) const;
 
+    /// Plays backwards from where it is (at the engine's time scale), back through earlier
+    /// plays to the first one's start, where on_reverse_complete fires and it holds (alive).
+    /// Inside its delay it waits. No loop events going back.
+    void reverse() const noexcept;
+    /// Plays forwards again from where it is (and resumes it).
+    void play() const noexcept;
+    /// Running backwards now (after reverse()).
+    bool reversed() const noexcept;
+    /// Calls `handler` after every change of state (each tick that moves it, each seek).
+    void on_update(std::function<void()> handler) const;
+    /// Calls `handler` when the first play begins (after the delay; in a timeline, each time
+    /// the timeline's time carries it forward across that point).
+    void on_start(std::function<void()> handler) const;
+    /// Calls `handler` when the animation comes back to its start running backwards (after
+    /// reverse(), or in a timeline running backwards).
+    void on_reverse_complete(std::function<void()> handler) const;
+
     friend bool operator==(const Animation&, const Animation&) noexcept = default;
 
 private:
     friend class Engine;
     friend class detail::EngineImpl;
+    friend class detail::TimelineStore;
     Animation(Engine* engine, std::uint32_t slot, std::uint32_t generation) noexcept
         : engine_(engine), slot_(slot), generation_(generation) {}
     Engine* engine_ = nullptr;
@@ -223,7 +256,9 @@ private:
 /// Owns and advances animations. Not copyable or movable (handles refer to it).
 ///
 /// Order within a tick: every animation that was alive when the tick began advances by dt
-/// (events fire as each one crosses a loop or completes), then tick listeners run.
+/// (events fire as each one crosses a loop or completes), then every top-level timeline
+/// (timeline.hpp; the animations placed in timelines are driven there, not here), then tick
+/// listeners run.
 /// Handlers may create, pause, resume, seek or kill animations: an animation created during
 /// a tick first advances on the next tick; a killed one gets no further events; a change
 /// to an animation the tick has not reached yet applies before its own update in that tick.
@@ -295,6 +330,10 @@ public:
     template <class T>
     std::vector<Animation> animations_of(const T& object);
 
+    /// A new timeline, empty and at its start (see timeline.hpp; include it to call these).
+    Timeline create_timeline();
+    Timeline create_timeline(const TimelineDef& def);
+
     /// Calls `listener(dt)` at the end of every tick; returns an id for remove_tick_listener.
     std::size_t on_tick(std::function<void(double)> listener);
     /// Stops a tick listener (safe inside a tick: it is not called again).
@@ -312,6 +351,8 @@ public:
 
 private:
     friend class Animation;
+    friend class Timeline;
+    friend class detail::TimelineStore;
     Animation create_bound_2d(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
                               std::ptrdiff_t rotation_offset, const Path& path, double duration,
                               const AnimationDef& def, bool rotation_float = false,

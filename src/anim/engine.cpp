@@ -1,5 +1,6 @@
 // The public Engine and Animation: thin forwarding to EngineImpl.
 #include "engine_impl.hpp"
+#include "timeline_impl.hpp"
 
 #include <grape/error.hpp>
 
@@ -110,7 +111,8 @@ double Animation::progress() const noexcept {
 
 double Animation::time() const noexcept {
     GRAPE_FIND(0.0);
-    return (static_cast<double>(impl.cold(dense).play) + found->phase) * impl.cold(dense).duration;
+    const double cycle = 1.0 + impl.gap_of(dense);  // a play and the repeat delay after it
+    return (static_cast<double>(impl.cold(dense).play) * cycle + found->phase) * impl.cold(dense).duration;
 }
 
 int Animation::repetition() const noexcept {
@@ -135,16 +137,19 @@ void Animation::pause() const noexcept {
 
 void Animation::resume() const noexcept {
     GRAPE_FIND();
+    if (impl.driven(slot_)) return;  // its timeline drives it
     impl.hot(dense).flags &= static_cast<std::uint8_t>(~detail::flag_paused);
 }
 
 void Animation::seek(double seconds) const noexcept {
     GRAPE_FIND();
+    if (impl.driven(slot_)) return;
     impl.seek(dense, seconds);
 }
 
 void Animation::set_time_scale(double scale) const noexcept {
     GRAPE_FIND();
+    if (impl.driven(slot_)) return;
     impl.set_time_scale(dense, scale);
 }
 
@@ -156,6 +161,45 @@ void Animation::kill() const noexcept {
 void Animation::on_complete(std::function<void()> handler) const {
     GRAPE_FIND();
     impl.extra_for(slot_).on_complete = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_listens;
+}
+
+void Animation::reverse() const noexcept {
+    GRAPE_FIND();
+    if (impl.driven(slot_)) return;
+    detail::Hot& h = impl.hot(dense);
+    h.rate = -std::fabs(h.rate);
+}
+
+void Animation::play() const noexcept {
+    GRAPE_FIND();
+    if (impl.driven(slot_)) return;
+    detail::Hot& h = impl.hot(dense);
+    h.rate = std::fabs(h.rate);
+    h.flags &= static_cast<std::uint8_t>(~detail::flag_paused);
+}
+
+bool Animation::reversed() const noexcept {
+    GRAPE_FIND(false);
+    return found->rate < 0.0;
+}
+
+void Animation::on_update(std::function<void()> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_update = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_custom;
+}
+
+void Animation::on_start(std::function<void()> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_start = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_listens;
+}
+
+void Animation::on_reverse_complete(std::function<void()> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_reverse_complete =
+        handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
     impl.hot(dense).flags |= detail::flag_listens;
 }
 

@@ -35,6 +35,16 @@ void validate(std::string_view where, double duration, const AnimationDef& def) 
     if (def.repeat >= 0 && !std::isfinite(def.delay + duration * (static_cast<double>(def.repeat) + 1.0)))
         throw Error(w + ": delay + duration · (repeat + 1) overflows (delay " + number_text(def.delay) +
                     ", duration " + number_text(duration) + ", repeat " + std::to_string(def.repeat) + ")");
+    if (!(std::isfinite(def.repeat_delay) && def.repeat_delay >= 0.0))
+        throw Error(w + ": repeat_delay must be >= 0 and finite (got " + number_text(def.repeat_delay) + ")");
+    if (!std::isfinite(def.repeat_delay / duration))
+        throw Error(w + ": repeat_delay / duration overflows (repeat_delay " + number_text(def.repeat_delay) +
+                    ", duration " + number_text(duration) + ")");
+    if (def.repeat >= 0 && !std::isfinite(def.delay + duration * (static_cast<double>(def.repeat) + 1.0) +
+                                          def.repeat_delay * static_cast<double>(def.repeat)))
+        throw Error(w + ": delay + duration · (repeat + 1) + repeat_delay · repeat overflows (delay " +
+                    number_text(def.delay) + ", duration " + number_text(duration) + ", repeat " +
+                    std::to_string(def.repeat) + ", repeat_delay " + number_text(def.repeat_delay) + ")");
 }
 
 Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay,
@@ -55,13 +65,21 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int rep
     hot_.push_back(hot);
     cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot, 0, curve});
     slots_[slot].dense = dense;
+    if (driven_begin_ != dense) {  // the first driven record moves to the end; this one takes its place
+        const std::uint32_t first = driven_begin_;
+        std::swap(hot_[first], hot_[dense]);
+        std::swap(cold_[first], cold_[dense]);
+        slots_[cold_[dense].slot].dense = dense;
+        slots_[cold_[first].slot].dense = first;
+    }
+    ++driven_begin_;
     if (extra) extras_.insert_or_assign(slot, std::move(*extra));
     ++live_;
-    if (index_on_) index_insert(dense);
+    if (index_on_) index_insert(slots_[slot].dense);
     const Animation handle(owner_, slot, slots_[slot].generation);
     {
         Dispatch d(*this);
-        write_state(dense);  // the start state, unless a delay holds it back
+        write_state(slots_[slot].dense);  // the start state, unless a delay holds it back
     }
     return handle;
 }
@@ -97,6 +115,11 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
         extra->still = 1e-12 * path.length();  // |d1| ~ length: round-off of d1 at a cusp is far below
         h.flags |= flag_custom;
     }
+    if (def.repeat_delay > 0.0 && def.repeat != 0) {
+        if (!extra) extra.emplace();
+        extra->repeat_gap = def.repeat_delay / duration;
+        h.flags |= flag_listens;
+    }
     h.path = acquire_path(path);
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
@@ -125,6 +148,10 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     if (on_update)
         extra.on_update_nd = std::make_shared<const std::function<void(std::span<const double>)>>(std::move(on_update));
     extra.overwrite = def.overwrite;
+    if (def.repeat_delay > 0.0 && def.repeat != 0) {
+        extra.repeat_gap = def.repeat_delay / duration;
+        h.flags |= flag_listens;
+    }
     h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));

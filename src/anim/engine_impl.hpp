@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +20,11 @@
 #include <vector>
 
 namespace grape::detail {
+
+class TimelineStore;
+struct TimelineStoreDelete {
+    void operator()(TimelineStore* store) const noexcept;  // timeline.cpp, where the type is complete
+};
 
 enum HotFlag : std::uint8_t {
     flag_paused = 1,
@@ -69,6 +75,9 @@ struct Extra {
     std::shared_ptr<const std::function<void(int, std::uint64_t)>> on_loop;  // (play, skipped)
     std::shared_ptr<const std::function<void(Vec2, double)>> on_update_2d;
     std::shared_ptr<const std::function<void(std::span<const double>)>> on_update_nd;
+    std::shared_ptr<const std::function<void()>> on_start;             // the first play begins
+    std::shared_ptr<const std::function<void()>> on_reverse_complete;  // back at the start
+    std::shared_ptr<const std::function<void()>> on_update;            // after every change (flag_custom)
     bool write_rotation = false;          // 2-D targets: the heading goes to x + rotation_offset
     std::ptrdiff_t rotation_offset = 0;
     bool track_heading = false;
@@ -89,6 +98,8 @@ struct Extra {
     double heading_offset = 0.0;
     double still = 0.0;                   // |d1| at or below this: a cusp; the heading stays
     double time_scale = 0.0;              // Cold::scale_ulps == scale_in_extra: the exact scale
+    double repeat_gap = 0.0;              // repeat delay in plays (its record has flag_listens,
+                                          // so play ends take the slow path that reads it)
 };
 
 /// Cold::scale_ulps when the exact scale is kept in Extra::time_scale.
@@ -145,6 +156,12 @@ public:
     Vec2 value_of(std::uint32_t dense) const noexcept;
     double heading_of(std::uint32_t dense) const noexcept;
     double progress_of(std::uint32_t dense) const noexcept;
+    /// The repeat delay in plays (0 unless one was given).
+    double gap_of(std::uint32_t dense) const noexcept {
+        if (!(hot_[dense].flags & flag_listens)) return 0.0;
+        const Extra* e = extra(cold_[dense].slot);
+        return e ? e->repeat_gap : 0.0;
+    }
     void seek(std::uint32_t dense, double seconds) noexcept;
     void set_time_scale(std::uint32_t dense, double scale) noexcept;
     void kill(std::uint32_t dense) noexcept;
@@ -156,7 +173,13 @@ public:
     std::size_t size() const noexcept { return live_; }
     std::size_t storage_bytes() const noexcept;
 
+    /// The timelines (timeline_impl.hpp), made on first use.
+    TimelineStore& timelines();
+    /// Driven by a timeline (its own pause, resume, seek and time scale are ignored).
+    bool driven(std::uint32_t slot) const noexcept;
+
 private:
+    friend class TimelineStore;
     struct Dispatch;  // RAII: counts nested handler calls, compacts when the last one ends
 
     std::uint32_t acquire_path(const Path& path);
@@ -173,9 +196,14 @@ private:
     void write_2d(const Hot& h, Vec2 p) const noexcept;
     void write_state(std::uint32_t dense);
     void advance_slow(std::uint32_t dense, double phase);
+    void advance_back(std::uint32_t dense, double phase);
+    bool fire_simple(std::uint32_t dense, std::shared_ptr<const std::function<void()>> Extra::*member);
     void fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes);
     void mark_dead(std::uint32_t dense) noexcept;
     void remove_now(std::uint32_t dense) noexcept;
+    void move_record(std::uint32_t from, std::uint32_t to) noexcept;
+    /// Moves a record into the driven region (outside a dispatch only).
+    void make_driven(std::uint32_t dense) noexcept;
     void compact() noexcept;
     void finish_dispatch() noexcept;
 
@@ -208,6 +236,10 @@ private:
     std::size_t dead_ = 0;  // records flagged dead and not yet compacted
     int depth_ = 0;         // handler calls in progress
     bool ticking_ = false;
+    std::unique_ptr<TimelineStore, TimelineStoreDelete> timelines_;  // null until the first timeline
+    // Records [0, driven_begin_) are ticked by the engine; [driven_begin_, size) are driven by
+    // timelines and never walked by the tick.
+    std::uint32_t driven_begin_ = 0;
 
     // --- typed values, safe targets, exact time scales (values.cpp, targets.cpp) ---
 public:

@@ -1,5 +1,6 @@
 // Handles and storage: lookup, seek, kill, compaction after a dispatch, tick listeners.
 #include "engine_impl.hpp"
+#include "timeline_impl.hpp"
 
 #include <grape/error.hpp>
 
@@ -29,9 +30,9 @@ void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
     const PlayState s = play_at_position(seconds / c.duration, static_cast<double>(c.plays),
-                                         (h.flags & flag_reversed) != 0, (h.flags & flag_yoyo) != 0);
+                                         (h.flags & flag_reversed) != 0, (h.flags & flag_yoyo) != 0, gap_of(dense));
     c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
-    h.phase = s.phase;
+    h.phase = s.phase + s.gap;
     h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
     try {
         Dispatch d(*this);
@@ -44,7 +45,7 @@ void EngineImpl::set_time_scale(std::uint32_t dense, double scale) noexcept {
     if (!(std::isfinite(scale) && scale >= 0.0)) return;
     const double rate = scale / cold_[dense].duration;
     if (!std::isfinite(rate)) return;  // an overflowing rate is ignored too
-    hot_[dense].rate = rate;
+    hot_[dense].rate = hot_[dense].rate < 0.0 ? -rate : rate;  // keeps the direction
     remember_scale(cold_[dense].slot, scale);
 }
 
@@ -52,6 +53,7 @@ void EngineImpl::mark_dead(std::uint32_t dense) noexcept {
     Hot& h = hot_[dense];
     if (h.flags & flag_dead) return;
     h.flags |= flag_dead;
+    if (timelines_ && (h.flags & flag_paused)) timelines_->forget(cold_[dense].slot);
     ++slots_[cold_[dense].slot].generation;  // handles go inert now; storage goes later
     --live_;
     ++dead_;
@@ -63,6 +65,7 @@ void EngineImpl::kill(std::uint32_t dense) noexcept {
 }
 
 void EngineImpl::kill_all() noexcept {
+    if (timelines_) timelines_->kill_all();
     for (std::uint32_t i = 0; i < hot_.size(); ++i) mark_dead(i);
     if (!ticking_ && depth_ == 0) finish_dispatch();
 }
@@ -76,13 +79,34 @@ void EngineImpl::remove_now(std::uint32_t dense) noexcept {
     slots_[slot].dense = free_bit | (free_slot_ & ~free_bit);
     free_slot_ = slot;
     const auto last = static_cast<std::uint32_t>(hot_.size() - 1);
-    if (dense != last) {
-        hot_[dense] = hot_[last];
-        cold_[dense] = cold_[last];
-        slots_[cold_[dense].slot].dense = dense;
+    if (dense < driven_begin_) {  // the last ticked record fills the hole, the last record its place
+        const std::uint32_t edge = driven_begin_ - 1;
+        if (dense != edge) move_record(edge, dense);
+        if (edge != last) move_record(last, edge);
+        --driven_begin_;
+    } else if (dense != last) {
+        move_record(last, dense);
     }
     hot_.pop_back();
     cold_.pop_back();
+}
+
+void EngineImpl::move_record(std::uint32_t from, std::uint32_t to) noexcept {
+    hot_[to] = hot_[from];
+    cold_[to] = cold_[from];
+    slots_[cold_[to].slot].dense = to;
+}
+
+void EngineImpl::make_driven(std::uint32_t dense) noexcept {
+    if (dense >= driven_begin_) return;
+    const std::uint32_t edge = driven_begin_ - 1;
+    if (dense != edge) {
+        std::swap(hot_[dense], hot_[edge]);
+        std::swap(cold_[dense], cold_[edge]);
+        slots_[cold_[dense].slot].dense = dense;
+        slots_[cold_[edge].slot].dense = edge;
+    }
+    --driven_begin_;
 }
 
 void EngineImpl::compact() noexcept {
@@ -98,6 +122,7 @@ void EngineImpl::compact() noexcept {
 }
 
 void EngineImpl::finish_dispatch() noexcept {
+    if (timelines_) timelines_->finish();
     if (dead_ > 0) compact();
     if (listeners_removed_) {
         std::erase_if(listeners_, [](const Listener& l) { return l.removed; });

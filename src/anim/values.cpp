@@ -23,6 +23,10 @@ Animation EngineImpl::create_value(void* object, std::unique_ptr<TargetRef> ref,
     extra.value = std::move(track);
     extra.ref = std::move(ref);
     extra.overwrite = def.overwrite;
+    if (def.repeat_delay > 0.0 && def.repeat != 0) {
+        extra.repeat_gap = def.repeat_delay / duration;
+        h.flags |= flag_listens;
+    }
     h.path = acquire_path(Path());  // shared placeholder: the value comes from the track
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
@@ -46,7 +50,7 @@ void EngineImpl::remember_scale(std::uint32_t slot, double scale) noexcept {
     if (slot >= slots_.size() || (slots_[slot].dense & free_bit)) return;  // gone during its creation
     const std::uint32_t dense = slots_[slot].dense;
     Cold& c = cold_[dense];
-    const double base = hot_[dense].rate * c.duration;
+    const double base = std::fabs(hot_[dense].rate) * c.duration;
     // Up to 8 steps: the product of a correctly rounded quotient and its divisor is within
     // 2 ulps of the dividend unless it under- or overflows; those cases use the Extra.
     for (int k = 0; k <= 8; ++k) {
@@ -68,7 +72,7 @@ void EngineImpl::remember_scale(std::uint32_t slot, double scale) noexcept {
 double EngineImpl::time_scale_of(std::uint32_t dense) const noexcept {
     const Cold& c = cold_[dense];
     if (c.scale_ulps == scale_in_extra) return extra(c.slot)->time_scale;
-    return step_ulps(hot_[dense].rate * c.duration, c.scale_ulps);
+    return step_ulps(std::fabs(hot_[dense].rate) * c.duration, c.scale_ulps);
 }
 
 // --- heading ---------------------------------------------------------------------------------

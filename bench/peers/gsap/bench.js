@@ -5,6 +5,7 @@
 //   tween        x and y tweened to the segment's end (GSAP's core, two numbers)
 //   motion       MotionPathPlugin along "M from L to" (GSAP measures paths by arc length)
 //   motion-cubic MotionPathPlugin along the same cubic Bézier as bench_anim's (b)/(c)
+//   timelines    bench_timeline's timelines of 10 sequential tweens (see runTimelines)
 // Reports CPU ns per tween update and heap bytes per tween (after gc).
 // Usage: node --expose-gc bench.js [mode...] [--n 1000,100000,1000000]
 'use strict';
@@ -77,5 +78,38 @@ function run(mode, n) {
   gsap.globalTimeline.clear();  // drop this run's tweens at once (killing 1e6 one by one crawls)
 }
 
+// bench_timeline's workload: N tweens as N/10 timelines (repeat -1) of 10 sequential x/y
+// tweens, each played once per timeline play, power2.inOut, 1 + 2·(i mod 1000)/1000 s.
+// Reports CPU ns per live update (one active tween per timeline) and per tween held.
+function runTimelines(n) {
+  const segs = segments(1024);
+  const timelines = [];
+  const targets = new Array(n);
+  for (let t = 0; t < n / 10; ++t) {
+    const tl = gsap.timeline({ repeat: -1 });
+    for (let k = 0; k < 10; ++k) {
+      const i = t * 10 + k;
+      const s = segs[i % 1024];
+      const target = { x: s.x0, y: s.y0 };
+      targets[i] = target;
+      tl.to(target, { x: s.x1, y: s.y1, duration: 1 + 2 * (i % 1000) / 1000, ease: 'power2.inOut' });
+    }
+    timelines.push(tl);
+  }
+  for (let k = 0; k < 3; ++k) { clock += frame; gsap.updateRoot(clock); }  // warm-up
+  const frames = Math.max(10, Math.min(2000, Math.round(3e7 / n)));
+  const t0 = process.cpuUsage();
+  for (let k = 0; k < frames; ++k) { clock += frame; gsap.updateRoot(clock); }
+  const t1 = process.cpuUsage(t0);
+  const ns = ((t1.user + t1.system) * 1000) / frames;
+  if (!Number.isFinite(targets[n - 1].x)) throw new Error('no motion');
+  console.log(`gsap_timelines  N=${String(n).padStart(8)}  ns/live update ${(ns / (n / 10)).toFixed(1).padStart(8)}  ns/tween held ${(ns / n).toFixed(1).padStart(7)}`);
+  gsap.globalTimeline.clear();
+}
+
 console.log(`GSAP ${gsap.version}, Node ${process.version}`);
-for (const mode of modes) for (const n of sizes) run(mode, n);
+for (const mode of modes) for (const n of sizes) {
+  if (mode === 'timelines') runTimelines(n);
+  else run(mode, n);
+}
+process.exit(0);  // GSAP's ticker would keep Node alive

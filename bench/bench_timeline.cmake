@@ -1,0 +1,1 @@
+grape_bench(timeline grape::anim grape_scenes)

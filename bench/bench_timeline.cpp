@@ -1,0 +1,186 @@
+// Timelines against free animations, ticked at 60 Hz, contenders interleaved
+// (--benchmark_enable_random_interleaving):
+//   free/N          N free 2-D animations (linear paths, quad-in-out, 1–3 s plays, repeating
+//                   with yoyo), as bench_anim's grape_linear
+//   timelines/N     the same N animations as N/10 timelines of 10 sequential children
+//                   (each child plays once, the timeline repeats forever): N/10 live updates
+//                   per tick, one per timeline
+//   one_active/K    one timeline of K sequential 0.5 s children (one active at a time): ns
+//                   per tick, which should not grow with K
+//   create_destroy  create a timeline of 10 fresh animations and kill it: ns each
+// Reports ns per live update (the children the tick moves) and per animation held, the
+// allocations during the timed ticks (0 expected), and a summary with the ratios.
+#include <grape/timeline.hpp>
+
+#include "seed_animations.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <map>
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+namespace {
+std::atomic<long long> allocations{0};
+}
+void* operator new(std::size_t size) {
+    allocations.fetch_add(1, std::memory_order_relaxed);
+    void* p = std::malloc(size == 0 ? 1 : size);
+    if (!p) throw std::bad_alloc();
+    return p;
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+constexpr double frame = 1.0 / 60.0;
+
+struct Result {
+    std::vector<double> ns;  // per live update (or per tick / per operation), one per repetition
+    double median() const {
+        std::vector<double> v = ns;
+        std::sort(v.begin(), v.end());
+        return v.empty() ? 0.0 : v[v.size() / 2];
+    }
+};
+std::map<std::string, Result> results;
+
+double cpu_now() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);  // the machine is shared: count our own time
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Times `step` and reports ns per `per` items; counts allocations inside the timed loop.
+template <class Step>
+void run(benchmark::State& state, const std::string& name, double per, Step&& step) {
+    double seconds = 0;
+    std::int64_t frames = 0;
+    const long long before = allocations.load();
+    for (auto _ : state) {
+        const double t0 = cpu_now();
+        step();
+        seconds += cpu_now() - t0;
+        ++frames;
+    }
+    const double ns = seconds * 1e9 / (static_cast<double>(frames) * per);
+    state.counters["ns"] = ns;
+    state.counters["allocs_per_iter"] = static_cast<double>(allocations.load() - before) / static_cast<double>(frames);
+    results[name].ns.push_back(ns);
+}
+
+const std::vector<grape::Path>& linear_paths() {
+    static const auto paths =
+        grape::scenes::bench_paths(grape::scenes::BenchPathKind::linear, grape::scenes::bench_segments(1024));
+    return paths;
+}
+
+void BM_free(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    auto engine = std::make_unique<grape::Engine>();
+    grape::scenes::create_bench_animations(*engine, targets, linear_paths(), grape::Curve::quad_in_out());
+    engine->tick(frame);
+    run(state, "free/" + std::to_string(n), static_cast<double>(n), [&] {
+        engine->tick(frame);
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
+void BM_timelines(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    auto engine = std::make_unique<grape::Engine>();
+    const auto& paths = linear_paths();
+    const grape::AnimationDef def{.curve = grape::Curve::quad_in_out()};
+    for (std::size_t t = 0; t < n / 10; ++t) {
+        grape::Timeline tl = engine->create_timeline({.repeat = -1});
+        for (std::size_t k = 0; k < 10; ++k) {
+            const std::size_t i = t * 10 + k;
+            tl.add(engine->create_2d_animation(targets[i], paths[i % paths.size()], grape::scenes::bench_duration(i), def));
+        }
+    }
+    engine->tick(frame);
+    run(state, "timelines/" + std::to_string(n), static_cast<double>(n / 10), [&] {
+        engine->tick(frame);
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
+void BM_one_active(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    auto engine = std::make_unique<grape::Engine>();
+    const auto& paths = linear_paths();
+    grape::Timeline tl = engine->create_timeline({.repeat = -1});
+    for (std::size_t i = 0; i < n; ++i) tl.add(engine->create_2d_animation(targets[i], paths[i % paths.size()], 0.5));
+    engine->tick(frame);
+    // 100 ticks per timed block: the thread clock costs more than one small tick.
+    run(state, "one_active/" + std::to_string(n), 100.0, [&] {
+        for (int k = 0; k < 100; ++k) engine->tick(frame);
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
+void BM_create_destroy(benchmark::State& state) {
+    std::vector<grape::scenes::BenchTarget> targets(10);
+    auto engine = std::make_unique<grape::Engine>();
+    const auto& paths = linear_paths();
+    double seconds = 0;
+    std::int64_t count = 0;
+    for (auto _ : state) {
+        const double t0 = cpu_now();
+        for (int b = 0; b < 100; ++b) {  // 100 per timed block, as above
+            grape::Timeline tl = engine->create_timeline();
+            for (std::size_t k = 0; k < 10; ++k) tl.add(engine->create_2d_animation(targets[k], paths[k], 0.5));
+            tl.kill();
+        }
+        seconds += cpu_now() - t0;
+        count += 100;
+    }
+    const double ns = seconds * 1e9 / static_cast<double>(count);
+    state.counters["ns"] = ns;
+    results["create_destroy"].ns.push_back(ns);
+}
+
+BENCHMARK(BM_free)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_timelines)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_one_active)->Arg(10)->Arg(100000)->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+BENCHMARK(BM_create_destroy)->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    auto median = [](const std::string& k) {
+        const auto it = results.find(k);
+        return it == results.end() ? 0.0 : it->second.median();
+    };
+    const double free_ns = median("free/1000000"), tl_ns = median("timelines/1000000");
+    std::printf("\nmedians over repetitions\n");
+    std::printf("free animations, ns per live update:          %8.2f\n", free_ns);
+    std::printf("timelines, ns per live update (1 per timeline):%8.2f  (%.2fx free)\n", tl_ns,
+                free_ns > 0 ? tl_ns / free_ns : 0.0);
+    std::printf("timelines, ns per animation held per tick:     %8.2f  (%.2fx free)\n", tl_ns / 10,
+                free_ns > 0 ? tl_ns / 10 / free_ns : 0.0);
+    std::printf("one active of 10, ns per tick:                 %8.1f\n", median("one_active/10"));
+    std::printf("one active of 100000, ns per tick:             %8.1f  (%.2fx of 10)\n", median("one_active/100000"),
+                median("one_active/10") > 0 ? median("one_active/100000") / median("one_active/10") : 0.0);
+    std::printf("create + destroy a 10-child timeline, ns:      %8.0f\n", median("create_destroy"));
+    return 0;
+}
