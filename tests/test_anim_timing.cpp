@@ -77,6 +77,121 @@ TEST(TimingModel, TickSeekAndProgressAtAgreeForEveryCurve) {
     }
 }
 
+// Repeat delays: tick ≡ seek ≡ progress_at for random timings with a repeat delay, and the
+// loop events arrive when the next play starts (after the delay), once each.
+TEST(TimingModel, RepeatDelayTickSeekAndProgressAtAgree) {
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int round = 0; round < 60; ++round) {
+        const AnimationDef def{.curve = round % 2 ? grape::Curve::quad_in_out() : grape::Curve(),
+                               .delay = unit(rng) < 0.3 ? 0.0 : unit(rng),
+                               .repeat = static_cast<int>(rng() % 5) - 1,
+                               .repeat_delay = 0.1 + unit(rng),
+                               .reversed = rng() % 2 == 0,
+                               .yoyo = rng() % 2 == 0,
+                               .time_scale = 0.5 + unit(rng)};
+        const double duration = 0.3 + 2.0 * unit(rng);
+        Engine ticked, sought;
+        Animation a = ticked.create_animation(unit_line, duration, def);
+        Animation b = sought.create_animation(unit_line, duration, def);
+        int loops = 0;
+        a.on_loop([&](int play) { EXPECT_EQ(play, ++loops); });
+        const double dt = 1.0 / 64.0;
+        for (int k = 1; k <= 64 * 8; ++k) {
+            ticked.tick(dt);
+            const double t = k * dt;
+            const grape::PlayState s = grape::play_at(def, duration, t);
+            const double expected = grape::progress_at(def, duration, t);
+            // As above: ≤ 512 ulps of a phase of ≤ ~40 plays, times a curve slope ≤ 2: 1e-11.
+            if (a.alive()) {
+                EXPECT_NEAR(a.progress(), expected, 1e-10) << "round " << round << " t = " << t;
+                EXPECT_EQ(loops, static_cast<int>(s.play)) << "round " << round << " t = " << t;
+            }
+            b.seek(t * def.time_scale - def.delay);
+            EXPECT_NEAR(b.progress(), expected, 1e-10) << "round " << round << " t = " << t;
+            const double plays = def.repeat + 1.0;
+            const double total = def.repeat < 0 ? INFINITY : plays * duration + (plays - 1.0) * def.repeat_delay;
+            // Plays and delays summed back: a few ulps of ≤ 40 s.
+            EXPECT_NEAR(b.time(), std::min(t * def.time_scale - def.delay, total), 1e-12 * 40) << "round " << round;
+            if (!a.alive()) {
+                EXPECT_TRUE(s.finished) << " t = " << t;
+                EXPECT_LE(grape::end_time(def, duration), t + 1e-9);
+                EXPECT_GT(grape::end_time(def, duration), t - dt - 1e-9);
+                break;
+            }
+        }
+    }
+}
+
+// Closed forms: 1 s plays, ½ s delay, ¼ s repeat delay, yoyo, 3 plays: plays run over
+// [0.5, 1.5], [1.75, 2.75], [3, 4]; the end state holds in between.
+TEST(TimingModel, RepeatDelayClosedForms) {
+    const AnimationDef def{.delay = 0.5, .repeat = 2, .repeat_delay = 0.25, .yoyo = true};
+    EXPECT_EQ(grape::end_time(def, 1.0), 4.0);
+    EXPECT_EQ(grape::end_time({.delay = 0.5, .repeat = 2, .repeat_delay = 0.25, .time_scale = 2}, 1.0), 2.0);
+    EXPECT_EQ(grape::end_time({.repeat = -1, .repeat_delay = 0.25}, 1.0), INFINITY);
+    EXPECT_EQ(grape::end_time({.repeat_delay = 5}, 1.0), 1.0);  // one play: no delay after it
+    struct Case {
+        double t, progress, play;
+        bool backward;
+        double gap;
+    };
+    // Times chosen exact in binary away from the snap points.
+    for (const Case c : {Case{0.25, 0.0, 0, false, 0}, Case{1.0, 0.5, 0, false, 0}, Case{1.625, 1.0, 0, false, 0.125},
+                         Case{2.0, 0.75, 1, true, 0}, Case{2.875, 0.0, 1, true, 0.125}, Case{3.5, 0.5, 2, false, 0},
+                         Case{4.5, 1.0, 2, false, 0}}) {
+        const grape::PlayState s = grape::play_at(def, 1.0, c.t);
+        EXPECT_EQ(grape::progress_at(def, 1.0, c.t), c.progress) << c.t;
+        EXPECT_EQ(s.play, c.play) << c.t;
+        EXPECT_EQ(s.backward, c.backward) << c.t;
+        EXPECT_EQ(s.gap, c.gap) << c.t;
+        EXPECT_EQ(s.finished, c.t >= 4.0) << c.t;
+    }
+    // gap 0 is the four-argument form; the end of a gap within play_snap starts the next play.
+    const grape::PlayState same = grape::play_at_position(2.5, 4, true, true, 0.0);
+    const grape::PlayState plain = grape::play_at_position(2.5, 4, true, true);
+    EXPECT_EQ(same.play, plain.play);
+    EXPECT_EQ(same.phase, plain.phase);
+    EXPECT_EQ(same.backward, plain.backward);
+    const grape::PlayState next = grape::play_at_position(1.5 - 1e-12, 3, false, false, 0.5);
+    EXPECT_EQ(next.play, 1.0);
+    EXPECT_EQ(next.phase, 0.0);
+    EXPECT_EQ(next.gap, 0.0);
+    // The engine on the same timing: the target holds the end through the delay, and the loop
+    // event fires as the second play starts.
+    Engine engine;
+    Point p;
+    Animation a = engine.create_2d_animation(p, unit_line, 1.0, def);
+    std::vector<double> loops_at;
+    double now = 0.0;
+    a.on_loop([&](int) { loops_at.push_back(now); });
+    const double dt = 1.0 / 8.0;
+    for (int k = 1; k <= 40 && a.alive(); ++k) {
+        now = k * dt;  // the tick's end, as the handlers see it
+        engine.tick(dt);
+        EXPECT_EQ(p.x, now < 0.5 ? -999.0 : grape::progress_at(def, 1.0, now)) << now;  // exact eighths
+        if (now == 1.625) {
+            EXPECT_EQ(a.time(), 1.125);  // 1 s of play, ⅛ s of its repeat delay
+        }
+    }
+    EXPECT_FALSE(a.alive());
+    EXPECT_EQ(loops_at, (std::vector<double>{1.75, 3.0}));
+    EXPECT_EQ(now, 4.0);
+}
+
+TEST(EngineLimits, BadRepeatDelaysAreNamed) {
+    Engine engine;
+    expect_error([&] { engine.create_animation(unit_line, 1.0, {.repeat = 1, .repeat_delay = -1}); },
+                 {"create_animation", "repeat_delay must be >= 0", "-1"});
+    expect_error([&] { engine.create_animation(unit_line, 1.0, {.repeat = 1, .repeat_delay = NAN}); },
+                 {"repeat_delay must be >= 0 and finite"});
+    expect_error([&] { engine.create_animation(unit_line, 1e-10, {.repeat = 1, .repeat_delay = 1e300}); },
+                 {"repeat_delay / duration overflows"});
+    expect_error([&] { engine.create_animation(unit_line, 1.0, {.repeat = 2, .repeat_delay = 1.7e308}); },
+                 {"repeat_delay · repeat overflows"});
+    EXPECT_EQ(engine.size(), 0u);
+}
+
 TEST(TimingModel, PlaysSnapAndDirections) {
     using grape::play_at_position;
     // Within play_snap of a play's end counts as the next play; the last play's end is final.

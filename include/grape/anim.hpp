@@ -56,6 +56,9 @@ struct AnimationDef {
     Curve curve{};            ///< progress over each play's normalized time (default linear)
     double delay = 0.0;       ///< seconds (animation time) before the first play; ≥ 0
     int repeat = 0;           ///< extra plays after the first: 0 plays once, −1 forever
+    double repeat_delay = 0.0;  ///< seconds (animation time) between plays, holding the end of
+                                ///< the play just finished; ≥ 0 (on_loop fires when the next
+                                ///< play starts, after it)
     bool reversed = false;    ///< play from the path's end to its start
     bool yoyo = false;        ///< every second play runs backwards (reverse on loop)
     double time_scale = 1.0;  ///< animation seconds per engine second; ≥ 0
@@ -82,6 +85,8 @@ struct PlayState {
                              ///< waiting (−phase·duration seconds of delay left)
     bool backward = false;   ///< the current play runs from the path's end to its start
     bool finished = false;   ///< at the end of the last play (never for endless animations)
+    double gap = 0.0;        ///< plays of repeat delay elapsed after the current play (> 0 only
+                             ///< while holding at its end, phase 1, before the next play)
 };
 
 /// The state `position` plays after the first play began (negative: waiting), for an
@@ -90,6 +95,12 @@ struct PlayState {
 /// end counts as ended; from 2⁵³ plays on the phase is 0 (a double has no fraction left
 /// there), and +inf gives the start of a play after infinitely many. NaN counts as 0.
 PlayState play_at_position(double position, double plays, bool reversed, bool yoyo) noexcept;
+
+/// The same with a repeat delay of `gap` plays (≥ 0) after every play but the last: a cycle is
+/// 1 + gap plays long, and the last play of `plays` ends at plays + (plays − 1)·gap. During a
+/// gap the state is the end of the play just finished (phase 1, `gap` > 0); within play_snap of
+/// a gap's end the next play has begun. gap 0 is the four-argument form bit for bit.
+PlayState play_at_position(double position, double plays, bool reversed, bool yoyo, double gap) noexcept;
 
 /// The state at `t` seconds (engine time) after an animation of `def` and `duration`
 /// seconds per play was created, as the Engine plays it: animation time runs at
@@ -100,8 +111,8 @@ PlayState play_at(const AnimationDef& def, double duration, double t) noexcept;
 /// (curve(1 − τ)) on backward plays; the start while waiting, the end once finished.
 double progress_at(const AnimationDef& def, double duration, double t) noexcept;
 
-/// Engine seconds from creation until the last play ends: (delay + duration·plays) /
-/// time_scale; +inf for endless animations or time_scale 0.
+/// Engine seconds from creation until the last play ends: (delay + duration·plays +
+/// repeat_delay·(plays − 1)) / time_scale; +inf for endless animations or time_scale 0.
 double end_time(const AnimationDef& def, double duration) noexcept;
 
 /// A member of T that a property animation drives: a `double T::*` or a `float T::*`.
@@ -149,7 +160,8 @@ public:
     /// Curve progress of the current play (the path parameter u; may leave [0, 1]).
     double progress() const noexcept;
     /// Seconds of animation time since the first play began (negative while waiting;
-    /// counts all plays, so it runs to duration·(repeat + 1)).
+    /// counts all plays and repeat delays, so it runs to duration·(repeat + 1) +
+    /// repeat_delay·repeat).
     double time() const noexcept;
     /// Which play is running: 0 for the first, 1 after the first loop, ...
     int repetition() const noexcept;

@@ -92,7 +92,8 @@ double Animation::progress() const noexcept {
 
 double Animation::time() const noexcept {
     GRAPE_FIND(0.0);
-    return (static_cast<double>(impl.cold(dense).play) + found->phase) * impl.cold(dense).duration;
+    const double cycle = 1.0 + impl.gap_of(dense);  // a play and the repeat delay after it
+    return (static_cast<double>(impl.cold(dense).play) * cycle + found->phase) * impl.cold(dense).duration;
 }
 
 int Animation::repetition() const noexcept {

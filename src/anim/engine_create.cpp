@@ -35,6 +35,16 @@ void validate(std::string_view where, double duration, const AnimationDef& def) 
     if (def.repeat >= 0 && !std::isfinite(def.delay + duration * (static_cast<double>(def.repeat) + 1.0)))
         throw Error(w + ": delay + duration · (repeat + 1) overflows (delay " + number_text(def.delay) +
                     ", duration " + number_text(duration) + ", repeat " + std::to_string(def.repeat) + ")");
+    if (!(std::isfinite(def.repeat_delay) && def.repeat_delay >= 0.0))
+        throw Error(w + ": repeat_delay must be >= 0 and finite (got " + number_text(def.repeat_delay) + ")");
+    if (!std::isfinite(def.repeat_delay / duration))
+        throw Error(w + ": repeat_delay / duration overflows (repeat_delay " + number_text(def.repeat_delay) +
+                    ", duration " + number_text(duration) + ")");
+    if (def.repeat >= 0 && !std::isfinite(def.delay + duration * (static_cast<double>(def.repeat) + 1.0) +
+                                          def.repeat_delay * static_cast<double>(def.repeat)))
+        throw Error(w + ": delay + duration · (repeat + 1) + repeat_delay · repeat overflows (delay " +
+                    number_text(def.delay) + ", duration " + number_text(duration) + ", repeat " +
+                    std::to_string(def.repeat) + ", repeat_delay " + number_text(def.repeat_delay) + ")");
 }
 
 Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay,
@@ -89,6 +99,11 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
         if (on_update) extra->on_update_2d = std::make_shared<const std::function<void(Vec2, double)>>(std::move(on_update));
         h.flags |= flag_custom;
     }
+    if (def.repeat_delay > 0.0 && def.repeat != 0) {
+        if (!extra) extra.emplace();
+        extra->repeat_gap = def.repeat_delay / duration;
+        h.flags |= flag_listens;
+    }
     h.path = acquire_path(path);
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     return add(h, curve, duration, def.repeat, def.delay, std::move(extra));
@@ -114,6 +129,10 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     extra.members = std::move(members);
     if (on_update)
         extra.on_update_nd = std::make_shared<const std::function<void(std::span<const double>)>>(std::move(on_update));
+    if (def.repeat_delay > 0.0 && def.repeat != 0) {
+        extra.repeat_gap = def.repeat_delay / duration;
+        h.flags |= flag_listens;
+    }
     h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
     return add(h, curve, duration, def.repeat, def.delay, std::move(extra));

@@ -70,6 +70,8 @@ struct Extra {
     std::optional<PathND> nd;             // N-D animations
     std::vector<MemberRef> members;       // N-D targets
     std::vector<double> values;           // N-D current values
+    double repeat_gap = 0.0;              // repeat delay in plays (its record has flag_listens,
+                                          // so play ends take the slow path that reads it)
 };
 
 struct PathEntry {
@@ -117,6 +119,12 @@ public:
     Vec2 value_of(std::uint32_t dense) const noexcept;
     double heading_of(std::uint32_t dense) const noexcept;
     double progress_of(std::uint32_t dense) const noexcept;
+    /// The repeat delay in plays (0 unless one was given).
+    double gap_of(std::uint32_t dense) const noexcept {
+        if (!(hot_[dense].flags & flag_listens)) return 0.0;
+        const Extra* e = extra(cold_[dense].slot);
+        return e ? e->repeat_gap : 0.0;
+    }
     void seek(std::uint32_t dense, double seconds) noexcept;
     void set_time_scale(std::uint32_t dense, double scale) noexcept;
     void kill(std::uint32_t dense) noexcept;

@@ -149,11 +149,12 @@ void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
     const std::uint32_t first_play = c.play;
     if (phase >= play_end) {
         const double plays_left = c.plays == 0 ? 0.0 : static_cast<double>(c.plays - c.play);
-        const PlayState s = play_at_position(phase, plays_left, (h.flags & flag_backward) != 0, (h.flags & flag_yoyo) != 0);
+        const PlayState s = play_at_position(phase, plays_left, (h.flags & flag_backward) != 0, (h.flags & flag_yoyo) != 0,
+                                             gap_of(dense));
         loops = s.play;
         completes = s.finished;
         c.play = completes ? c.plays - 1 : c.play + wrap_plays(s.play);
-        phase = s.phase;
+        phase = s.phase + s.gap;  // inside a repeat delay the phase runs past 1 (clamped when drawn)
         h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
     }
     h.phase = phase;
