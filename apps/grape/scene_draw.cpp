@@ -13,6 +13,62 @@ namespace {
 const Color palette[] = {colors::blue, colors::red, colors::green, colors::purple, colors::orange,
                          {0.1, 0.55, 0.6}, {0.6, 0.4, 0.2}, colors::black};
 
+// The timelines that play from scene time 0 (the others are bars inside them).
+std::vector<std::size_t> top_level_timelines(const SceneTiming& timing) {
+    std::vector<std::size_t> out;
+    for (std::size_t k = 0; k < timing.timeline_count(); ++k)
+        if (timing.layout(k).parent < 0) out.push_back(k);
+    return out;
+}
+
+// One row per top-level timeline above the time text: its children as bars over one play,
+// labels as ticks, and the playhead at the timeline's own time (which runs back on a yoyo).
+void draw_timeline_strips(Canvas& canvas, const Scene& scene, const ScenePlayer& player) {
+    const SceneTiming& timing = player.timing();
+    const auto rows = top_level_timelines(timing);
+    constexpr double row_height = 14.0;
+    constexpr std::size_t max_rows = 6;  // the picture is for the paths; more rows are summarised
+    const std::size_t shown = std::min(rows.size(), max_rows);
+    const double left = 10.0, right = canvas.width() - 10.0;
+    const double top = canvas.height() - 26.0 - row_height * static_cast<double>(shown);
+    const TextStyle small{.color = colors::grey, .size = 9};
+    for (std::size_t r = 0; r < shown; ++r) {
+        const std::size_t k = rows[r];
+        const SceneTimeline& tl = scene.timelines[k];
+        const SceneTimelineLayout& layout = timing.layout(k);
+        const double y = top + row_height * static_cast<double>(r);
+        const double x0 = left + 90.0;
+        const double span = std::max(layout.duration, 1e-9);
+        const auto x_of = [&](double s) { return x0 + (right - x0) * std::clamp(s / span, 0.0, 1.0); };
+        canvas.text({left, y + 9.0}, tl.name, small);
+        canvas.fill_rect({x0, y + 5.0, right - x0, 1.0}, {.color = colors::light_grey});
+        for (std::size_t c = 0; c < tl.children.size(); ++c) {
+            const SceneTimelineChild& child = tl.children[c];
+            const double a = x_of(layout.start[c]), b = x_of(layout.start[c] + layout.length[c]);
+            switch (child.kind) {
+                case SceneTimelineChildKind::animation: {
+                    const std::ptrdiff_t i = layout.index[c];
+                    const Color col = palette_color(static_cast<std::size_t>(std::max<std::ptrdiff_t>(i, 0)) + 1);
+                    canvas.fill_rect({a, y + 1.0, std::max(b - a, 1.0), 9.0}, {.color = {col.r, col.g, col.b, 0.6}});
+                    break;
+                }
+                case SceneTimelineChildKind::timeline:
+                    canvas.fill_rect({a, y + 1.0, std::max(b - a, 1.0), 9.0}, {.color = {0.5, 0.5, 0.5, 0.45}});
+                    canvas.text({a + 2.0, y + 8.5}, child.name, {.color = colors::black, .size = 8});
+                    break;
+                case SceneTimelineChildKind::label:
+                    canvas.fill_rect({a, y - 1.0, 1.0, 12.0}, {.color = colors::black});
+                    break;
+                case SceneTimelineChildKind::gap: break;
+            }
+        }
+        const double head = x_of(timing.timeline_time(k, player.time()));
+        canvas.fill_rect({head - 0.75, y - 2.0, 1.5, 14.0}, {.color = colors::red});
+    }
+    if (rows.size() > shown)
+        canvas.text({left, top - 4.0}, std::to_string(rows.size() - shown) + " more timelines", small);
+}
+
 }  // namespace
 
 Color palette_color(std::size_t i) { return palette[i % std::size(palette)]; }
@@ -88,6 +144,7 @@ void draw_scene(Canvas& canvas, const Scene& scene, const Bounds& world, const S
         draw_particles(canvas, positions, {}, player.inverse_masses(i), {.color = palette_color(i)});
     }
     canvas.set_transform({});
+    if (!scene.timelines.empty()) draw_timeline_strips(canvas, scene, player);
     std::string title = scene.name.empty() ? std::string("grape scene") : scene.name;
     const auto room = static_cast<std::size_t>(canvas.width() / 8.0);  // ~8 units per bold 13-unit glyph
     if (title.size() > room && room > 3) title = title.substr(0, room - 3) + "...";

@@ -1,5 +1,5 @@
 // Pictures of a scene for `grape render`: the world box every frame shares, one frame at the
-// player's time (paths, animation markers, simulations), and the
+// player's time (paths, animation markers, simulations, a strip per timeline), and the
 // animated SVG of a run of frames.
 #pragma once
 
@@ -24,7 +24,7 @@ std::string format(const char* fmt, double v);
 Bounds scene_bounds(const Scene& scene, double t_end);
 
 /// Draws the scene as `player` stands now: paths (with the view's ticks), animation markers,
-/// simulations, title and time.
+/// simulations, each timeline as a strip of its children with a playhead, title and time.
 void draw_scene(Canvas& canvas, const Scene& scene, const Bounds& world, const ScenePlayer& player);
 
 /// The animated SVG of `frames` frames from scene time t0 at `fps`: the paths once, every

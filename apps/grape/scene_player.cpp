@@ -6,7 +6,7 @@
 namespace grape::tool {
 
 ScenePlayer::ScenePlayer(const Scene& scene, bool record_trails)
-    : scene_(scene), record_trails_(record_trails) {
+    : scene_(scene), timing_(scene), record_trails_(record_trails) {
 #if GRAPE_HAS_DYNAMICS
     for (const SceneSimulation& s : scene.simulations) systems_.push_back(make_particle_system(s));
 #endif
@@ -30,7 +30,7 @@ void ScenePlayer::advance_to(double t) {
 }
 
 Vec2 ScenePlayer::animation_position(std::size_t i) const noexcept {
-    return scene_.animations[i].position(time_);
+    return scene_.animations[i].path.point(timing_.progress(i, time_));
 }
 
 std::vector<Vec2> ScenePlayer::particle_positions(std::size_t i) const {

@@ -1,5 +1,5 @@
-// The scene as `grape render` plays it: every animation where its timing puts it at the scene
-// time; simulations stepped forward to that time.
+// The scene as `grape render` plays it: every animation where its own timing, or the timeline
+// driving it, puts it at the scene time; simulations stepped forward to that time.
 #pragma once
 
 #include <grape/math.hpp>
@@ -16,7 +16,8 @@ namespace grape::tool {
 
 class ScenePlayer {
 public:
-    /// With RECORD_TRAILS every particle position after every step is kept (for the picture's
+    /// Checks the scene's timelines (grape::Error naming the JSON pointer). With
+    /// RECORD_TRAILS every particle position after every step is kept (for the picture's
     /// bounds); without it memory stays at the particles' current state.
     explicit ScenePlayer(const Scene& scene, bool record_trails = false);
 
@@ -26,6 +27,8 @@ public:
     /// The scene time of the last advance_to (0 at first).
     double time() const noexcept { return time_; }
 
+    /// Where each animation and timeline lies in time.
+    const SceneTiming& timing() const noexcept { return timing_; }
     /// Where animation i stands now.
     Vec2 animation_position(std::size_t i) const noexcept;
     /// The particles of simulation i now.
@@ -39,6 +42,7 @@ private:
     void record(std::size_t i);
 
     const Scene& scene_;
+    SceneTiming timing_;
     bool record_trails_;
     double time_ = 0.0;
 #if GRAPE_HAS_DYNAMICS
