@@ -3,6 +3,7 @@
 // round trips, and every kind of bad timeline naming its JSON pointer.
 #include <grape/anim.hpp>
 #include <grape/error.hpp>
+#include <grape/path.hpp>
 #include <grape/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -279,6 +280,57 @@ TEST(SceneTimelines, AnimationRepeatDelayHoldsTheEndOfThePlay) {
     EXPECT_EQ(a.position(9.0).x, 8.0);
 }
 
+// The engine agrees: a top-level timeline playing once at time scale 1 drives each animation
+// as the engine plays it created with the timeline's delay plus the animation's start added
+// to its own delay (random starts, timings and curves; fixed seed).
+TEST(SceneTimelines, AgreeWithTheEngineForOnePlay) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int round = 0; round < 20; ++round) {
+        Scene s;
+        grape::SceneTimeline tl;
+        tl.name = "t";
+        tl.delay = unit(rng);
+        grape::Engine engine;
+        std::vector<grape::Vec2> last(3);
+        std::vector<double> starts;
+        for (int i = 0; i < 3; ++i) {
+            grape::SceneAnimation a;
+            a.name = "a" + std::to_string(i);
+            a.path = grape::CubicBezierPath({20, 20}, {400, 200}, {400, 600}, {600, 600});
+            a.curve = grape::parse_curve(i == 0 ? "quad-in-out" : i == 1 ? "back-out(2.5)" : "linear");
+            a.duration = 0.3 + unit(rng);
+            a.delay = rng() % 2 ? 0.0 : 0.5 * unit(rng);
+            a.repeat = static_cast<int>(rng() % 3);
+            a.repeat_delay = rng() % 2 ? 0.0 : 0.5 * unit(rng);
+            a.yoyo = rng() % 2 == 0;
+            a.reversed = rng() % 3 == 0;
+            const double start = 2.0 * unit(rng);
+            tl.children.push_back({.name = a.name, .at = grape::timeline_position_at(start)});
+            grape::AnimationDef def = a.def();
+            def.delay += tl.delay + start;
+            engine.create_animation(a.path, a.duration, def, [&last, i](grape::Vec2 p, double) { last[i] = p; });
+            starts.push_back(start);
+            s.animations.push_back(a);
+        }
+        s.timelines.push_back(tl);
+        const SceneTiming timing(s);
+        const double dt = 1.0 / 64.0;  // exact in binary: engine time is k/64 with no drift
+        for (int k = 1; k <= 64 * 10; ++k) {
+            engine.tick(dt);
+            for (int i = 0; i < 3; ++i) {
+                if (k * dt <= tl.delay + starts[i] + s.animations[i].delay) continue;  // nothing written while waiting
+                const grape::Vec2 p = s.animations[i].path.point(timing.progress(i, k * dt));
+                // The same curve and path at a play fraction computed in different orders (the
+                // timeline's time minus a start, against one delay): a few ulps of τ, times
+                // |path′| ≤ ~1200 and the curve slope ≤ ~10, stays under 1e-9.
+                ASSERT_NEAR(last[i].x, p.x, 1e-9) << "round " << round << " t " << k * dt << " animation " << i;
+                ASSERT_NEAR(last[i].y, p.y, 1e-9) << "round " << round << " t " << k * dt << " animation " << i;
+            }
+        }
+    }
+}
+
 // Bad timelines: each error names the JSON pointer of the bad value and why.
 void expect_error(const std::string& json, const std::string& pointer, const std::string& why) {
     try {
@@ -335,6 +387,12 @@ TEST(SceneTimelines, ErrorsNameTheJsonPointer) {
     expect_error(scene_with(R"([{"name": "t"}])"), "/timelines/0", "missing field \"children\"");
     expect_error(scene_with(R"([{"name": "t", "children": [{"label": "x"}, {"label": "x"}]}])"), "/timelines/0/children/1",
                  "x");
+    expect_error(scene_with(R"([{"name": "t", "children": [{"animation": "a", "at": "later"}, {"label": "later"}]}])"),
+                 "/timelines/0/children/0/at", "defined before use");
+    expect_error(scene_with(R"([{"name": "t", "children": [{"label": "take-2"}]}])"), "/timelines/0/children/0/label",
+                 "cannot be a label");
+    expect_error(scene_with(R"([{"name": "t", "children": [{"animation": "a", "at": -1}]}])"), "/timelines/0/children/0/at",
+                 "negative");
     expect_error(R"({"animations": [{"path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1, "repeat_delay": -1}]})",
                  "/animations/0/repeat_delay", "must not be negative");
     // Two animations named alike cannot be told apart by a timeline.
