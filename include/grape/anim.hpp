@@ -49,6 +49,8 @@
 namespace grape {
 
 class Engine;
+class Timeline;
+struct TimelineDef;
 
 /// How an animation plays; fill with designated initializers:
 /// `{.curve = Curve::quad_in_out(), .repeat = -1, .yoyo = true}`.
@@ -126,6 +128,7 @@ struct Member {
 
 namespace detail {
 class EngineImpl;
+class TimelineStore;
 /// Where a property animation writes one value: a byte offset into the target and its type.
 struct MemberRef {
     std::size_t offset;
@@ -199,11 +202,29 @@ public:
     /// saturates at UINT64_MAX).
     void on_loop(std::function<void(int play, std::uint64_t skipped)> handler) const;
 
+    /// Plays backwards from where it is (at the engine's time scale), back through earlier
+    /// plays to the first one's start, where on_reverse_complete fires and it holds (alive).
+    /// Inside its delay it waits. No loop events going back.
+    void reverse() const noexcept;
+    /// Plays forwards again from where it is (and resumes it).
+    void play() const noexcept;
+    /// Running backwards now (after reverse()).
+    bool reversed() const noexcept;
+    /// Calls `handler` after every change of state (each tick that moves it, each seek).
+    void on_update(std::function<void()> handler) const;
+    /// Calls `handler` when the first play begins (after the delay; in a timeline, each time
+    /// the timeline's time carries it forward across that point).
+    void on_start(std::function<void()> handler) const;
+    /// Calls `handler` when the animation comes back to its start running backwards (after
+    /// reverse(), or in a timeline running backwards).
+    void on_reverse_complete(std::function<void()> handler) const;
+
     friend bool operator==(const Animation&, const Animation&) noexcept = default;
 
 private:
     friend class Engine;
     friend class detail::EngineImpl;
+    friend class detail::TimelineStore;
     Animation(Engine* engine, std::uint32_t slot, std::uint32_t generation) noexcept
         : engine_(engine), slot_(slot), generation_(generation) {}
     Engine* engine_ = nullptr;
@@ -256,6 +277,10 @@ public:
     Animation create_animation(PathND path, double duration, const AnimationDef& def = {},
                                std::function<void(std::span<const double>)> on_update = {});
 
+    /// A new timeline, empty and at its start (see timeline.hpp; include it to call these).
+    Timeline create_timeline();
+    Timeline create_timeline(const TimelineDef& def);
+
     /// Calls `listener(dt)` at the end of every tick; returns an id for remove_tick_listener.
     std::size_t on_tick(std::function<void(double)> listener);
     /// Stops a tick listener (safe inside a tick: it is not called again).
@@ -273,6 +298,8 @@ public:
 
 private:
     friend class Animation;
+    friend class Timeline;
+    friend class detail::TimelineStore;
     Animation create_bound_2d(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
                               std::ptrdiff_t rotation_offset, const Path& path, double duration,
                               const AnimationDef& def);

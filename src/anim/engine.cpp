@@ -1,5 +1,6 @@
 // The public Engine and Animation: thin forwarding to EngineImpl.
 #include "engine_impl.hpp"
+#include "timeline_impl.hpp"
 
 #include <grape/error.hpp>
 
@@ -108,7 +109,7 @@ double Animation::duration() const noexcept {
 
 double Animation::time_scale() const noexcept {
     GRAPE_FIND(0.0);
-    return found->rate * impl.cold(dense).duration;
+    return std::fabs(found->rate) * impl.cold(dense).duration;
 }
 
 void Animation::pause() const noexcept {
@@ -118,16 +119,19 @@ void Animation::pause() const noexcept {
 
 void Animation::resume() const noexcept {
     GRAPE_FIND();
+    if (impl.driven(slot_)) return;  // its timeline drives it
     impl.hot(dense).flags &= static_cast<std::uint8_t>(~detail::flag_paused);
 }
 
 void Animation::seek(double seconds) const noexcept {
     GRAPE_FIND();
+    if (impl.driven(slot_)) return;
     impl.seek(dense, seconds);
 }
 
 void Animation::set_time_scale(double scale) const noexcept {
     GRAPE_FIND();
+    if (impl.driven(slot_)) return;
     impl.set_time_scale(dense, scale);
 }
 
@@ -139,6 +143,45 @@ void Animation::kill() const noexcept {
 void Animation::on_complete(std::function<void()> handler) const {
     GRAPE_FIND();
     impl.extra_for(slot_).on_complete = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_listens;
+}
+
+void Animation::reverse() const noexcept {
+    GRAPE_FIND();
+    if (impl.driven(slot_)) return;
+    detail::Hot& h = impl.hot(dense);
+    h.rate = -std::fabs(h.rate);
+}
+
+void Animation::play() const noexcept {
+    GRAPE_FIND();
+    if (impl.driven(slot_)) return;
+    detail::Hot& h = impl.hot(dense);
+    h.rate = std::fabs(h.rate);
+    h.flags &= static_cast<std::uint8_t>(~detail::flag_paused);
+}
+
+bool Animation::reversed() const noexcept {
+    GRAPE_FIND(false);
+    return found->rate < 0.0;
+}
+
+void Animation::on_update(std::function<void()> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_update = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_custom;
+}
+
+void Animation::on_start(std::function<void()> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_start = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
+    impl.hot(dense).flags |= detail::flag_listens;
+}
+
+void Animation::on_reverse_complete(std::function<void()> handler) const {
+    GRAPE_FIND();
+    impl.extra_for(slot_).on_reverse_complete =
+        handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
     impl.hot(dense).flags |= detail::flag_listens;
 }
 

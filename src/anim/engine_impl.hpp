@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,6 +17,11 @@
 #include <vector>
 
 namespace grape::detail {
+
+class TimelineStore;
+struct TimelineStoreDelete {
+    void operator()(TimelineStore* store) const noexcept;  // timeline.cpp, where the type is complete
+};
 
 enum HotFlag : std::uint8_t {
     flag_paused = 1,
@@ -63,6 +69,9 @@ struct Extra {
     std::shared_ptr<const std::function<void(int, std::uint64_t)>> on_loop;  // (play, skipped)
     std::shared_ptr<const std::function<void(Vec2, double)>> on_update_2d;
     std::shared_ptr<const std::function<void(std::span<const double>)>> on_update_nd;
+    std::shared_ptr<const std::function<void()>> on_start;             // the first play begins
+    std::shared_ptr<const std::function<void()>> on_reverse_complete;  // back at the start
+    std::shared_ptr<const std::function<void()>> on_update;            // after every change (flag_custom)
     bool write_rotation = false;          // 2-D targets: the heading goes to x + rotation_offset
     std::ptrdiff_t rotation_offset = 0;
     bool track_heading = false;
@@ -136,7 +145,13 @@ public:
     std::size_t size() const noexcept { return live_; }
     std::size_t storage_bytes() const noexcept;
 
+    /// The timelines (timeline_impl.hpp), made on first use.
+    TimelineStore& timelines();
+    /// Driven by a timeline (its own pause, resume, seek and time scale are ignored).
+    bool driven(std::uint32_t slot) const noexcept;
+
 private:
+    friend class TimelineStore;
     struct Dispatch;  // RAII: counts nested handler calls, compacts when the last one ends
 
     std::uint32_t acquire_path(const Path& path);
@@ -153,6 +168,8 @@ private:
     void write_2d(const Hot& h, Vec2 p) const noexcept;
     void write_state(std::uint32_t dense);
     void advance_slow(std::uint32_t dense, double phase);
+    void advance_back(std::uint32_t dense, double phase);
+    bool fire_simple(std::uint32_t dense, std::shared_ptr<const std::function<void()>> Extra::*member);
     void fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes);
     void mark_dead(std::uint32_t dense) noexcept;
     void remove_now(std::uint32_t dense) noexcept;
@@ -188,6 +205,7 @@ private:
     std::size_t dead_ = 0;  // records flagged dead and not yet compacted
     int depth_ = 0;         // handler calls in progress
     bool ticking_ = false;
+    std::unique_ptr<TimelineStore, TimelineStoreDelete> timelines_;  // null until the first timeline
 };
 
 /// The high bit of Slot::dense marks a free slot (its low bits chain to the next free one).

@@ -1,5 +1,6 @@
 // Handles and storage: lookup, seek, kill, compaction after a dispatch, tick listeners.
 #include "engine_impl.hpp"
+#include "timeline_impl.hpp"
 
 #include <grape/error.hpp>
 
@@ -43,13 +44,14 @@ void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
 void EngineImpl::set_time_scale(std::uint32_t dense, double scale) noexcept {
     if (!(std::isfinite(scale) && scale >= 0.0)) return;
     const double rate = scale / cold_[dense].duration;
-    if (std::isfinite(rate)) hot_[dense].rate = rate;  // an overflowing rate is ignored too
+    if (std::isfinite(rate)) hot_[dense].rate = hot_[dense].rate < 0.0 ? -rate : rate;  // keeps the direction; an overflowing rate is ignored too
 }
 
 void EngineImpl::mark_dead(std::uint32_t dense) noexcept {
     Hot& h = hot_[dense];
     if (h.flags & flag_dead) return;
     h.flags |= flag_dead;
+    if (timelines_ && (h.flags & flag_paused)) timelines_->forget(cold_[dense].slot);
     ++slots_[cold_[dense].slot].generation;  // handles go inert now; storage goes later
     --live_;
     ++dead_;
@@ -61,6 +63,7 @@ void EngineImpl::kill(std::uint32_t dense) noexcept {
 }
 
 void EngineImpl::kill_all() noexcept {
+    if (timelines_) timelines_->kill_all();
     for (std::uint32_t i = 0; i < hot_.size(); ++i) mark_dead(i);
     if (!ticking_ && depth_ == 0) finish_dispatch();
 }
@@ -95,6 +98,7 @@ void EngineImpl::compact() noexcept {
 }
 
 void EngineImpl::finish_dispatch() noexcept {
+    if (timelines_) timelines_->finish();
     if (dead_ > 0) compact();
     if (listeners_removed_) {
         std::erase_if(listeners_, [](const Listener& l) { return l.removed; });

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine_eval.hpp"
+#include "timeline_impl.hpp"
 
 namespace grape::detail {
 
@@ -51,6 +52,11 @@ void EngineImpl::write_state(std::uint32_t dense) {
             Dispatch d(*this);
             (*handler)(e.values);
         }
+        if (e.on_update) {
+            const auto handler = e.on_update;
+            Dispatch d(*this);
+            (*handler)();
+        }
         return;
     }
     const Path& path = paths_[h.path].path;
@@ -69,6 +75,11 @@ void EngineImpl::write_state(std::uint32_t dense) {
         const auto handler = e.on_update_2d;
         Dispatch d(*this);
         (*handler)(p, e.heading);
+    }
+    if (e.on_update) {
+        const auto handler = e.on_update;
+        Dispatch d(*this);
+        (*handler)();
     }
 }
 
@@ -101,7 +112,9 @@ void EngineImpl::tick(double dt) {
         for (; i < n; ++i) {
             Hot& h = hot[i];
             double phase = h.phase + dt * h.rate;
-            if ((h.flags & (flag_paused | flag_dead | flag_custom)) || !(phase >= 0.0) || !h.target) break;
+            if ((h.flags & (flag_paused | flag_dead | flag_custom)) || !(phase >= 0.0) || !h.target ||
+                (h.phase < 0.0 && (h.flags & flag_listens)))  // the first play begins: on_start
+                break;
             if (phase >= play_end) {
                 // A new play that nobody listens for, reached within this tick: handled here.
                 Cold& c = cold[i];
@@ -124,11 +137,14 @@ void EngineImpl::tick(double dt) {
         Hot& h = hot_[i];
         if (!(h.flags & (flag_paused | flag_dead))) {
             const double phase = h.phase + dt * h.rate;
-            if (phase < 0.0) h.phase = phase;  // still waiting: nothing to write
+            if (h.rate < 0.0) advance_back(static_cast<std::uint32_t>(i), phase);
+            else if (phase < 0.0) h.phase = phase;  // still waiting: nothing to write
             else advance_slow(static_cast<std::uint32_t>(i), phase);
         }
         ++i;
     }
+
+    if (timelines_) timelines_->tick(dt);
 
     if (!listeners_.empty()) {
         Dispatch d(*this);
@@ -144,6 +160,7 @@ void EngineImpl::tick(double dt) {
 void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
+    const bool starts = h.phase < 0.0 && (h.flags & flag_listens);  // the first play begins now
     double loops = 0.0;
     bool completes = false;
     const std::uint32_t first_play = c.play;
@@ -159,7 +176,58 @@ void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
     }
     h.phase = phase;
     write_state(dense);
+    if (starts && !fire_simple(dense, &Extra::on_start)) return;  // changed by its handler
     if (loops > 0.0 || completes) fire_events(dense, first_play, loops, completes);
+}
+
+// Running backwards (reverse() at run time): back through earlier plays to the first one's
+// start, which fires on_reverse_complete and holds there. No loop events going back.
+void EngineImpl::advance_back(std::uint32_t dense, double phase) {
+    Hot& h = hot_[dense];
+    Cold& c = cold_[dense];
+    if (h.phase < 0.0) return;  // reversed inside its delay: it waits
+    if (phase >= 0.0) {
+        h.phase = phase;
+        write_state(dense);
+        return;
+    }
+    const double gap = gap_of(dense);
+    const double position = static_cast<double>(c.play) * (1.0 + gap) + phase;  // from the first play's start
+    const bool was_at_start = c.play == 0 && h.phase == 0.0;
+    if (position <= 0.0) {
+        c.play = 0;
+        h.phase = 0.0;
+        const bool reversed = (h.flags & flag_reversed) != 0;
+        h.flags = static_cast<std::uint8_t>(reversed ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+        if (was_at_start) return;
+        write_state(dense);
+        if (h.flags & flag_listens) fire_simple(dense, &Extra::on_reverse_complete);
+        return;
+    }
+    const PlayState s = play_at_position(position, static_cast<double>(c.plays), (h.flags & flag_reversed) != 0,
+                                         (h.flags & flag_yoyo) != 0, gap);
+    c.play = wrap_plays(s.play);
+    h.phase = s.phase + s.gap;
+    h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+    write_state(dense);
+}
+
+// One handler without arguments from the record's Extra; false if the handler changed the
+// record's state (seek, kill, restart), as fire_events judges it.
+bool EngineImpl::fire_simple(std::uint32_t dense, std::shared_ptr<const std::function<void()>> Extra::*member) {
+    const std::uint32_t slot = cold_[dense].slot;
+    const auto it = extras_.find(slot);
+    if (it == extras_.end() || !(it->second.*member)) return true;
+    const std::uint32_t generation = slots_[slot].generation;
+    const std::uint32_t play = cold_[dense].play;
+    const double phase = hot_[dense].phase;
+    const auto handler = it->second.*member;
+    {
+        Dispatch d(*this);
+        (*handler)();
+    }
+    const Hot& h = hot_[dense];
+    return slots_[slot].generation == generation && cold_[dense].play == play && h.phase == phase && !(h.flags & flag_dead);
 }
 
 void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes) {

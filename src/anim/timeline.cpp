@@ -1,0 +1,510 @@
+// Timelines: creation, placing children, the handle's queries and commands.
+#include "timeline_impl.hpp"
+
+#include <grape/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace grape {
+
+namespace detail {
+
+void TimelineStoreDelete::operator()(TimelineStore* store) const noexcept { delete store; }
+
+TimelineStore& EngineImpl::timelines() {
+    if (!timelines_) timelines_.reset(new TimelineStore(*this));
+    return *timelines_;
+}
+
+bool EngineImpl::driven(std::uint32_t slot) const noexcept { return timelines_ && timelines_->drives(slot); }
+
+namespace {
+std::string where_of(const char* what) { return std::string("Timeline::") + what; }
+}  // namespace
+
+Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
+    const std::string w = "create_timeline";
+    if (!(std::isfinite(def.delay) && def.delay >= 0.0))
+        throw Error(w + ": delay must be >= 0 and finite (got " + number_text(def.delay) + ")");
+    if (def.repeat < -1)
+        throw Error(w + ": repeat must be >= 0, or -1 for forever (got " + std::to_string(def.repeat) + ")");
+    if (!(std::isfinite(def.repeat_delay) && def.repeat_delay >= 0.0))
+        throw Error(w + ": repeat_delay must be >= 0 and finite (got " + number_text(def.repeat_delay) + ")");
+    if (!(std::isfinite(def.time_scale) && def.time_scale >= 0.0))
+        throw Error(w + ": time_scale must be >= 0 and finite (got " + number_text(def.time_scale) + ")");
+    std::uint32_t slot;
+    if (!free_.empty()) {
+        slot = free_.back();
+        free_.pop_back();
+    } else {
+        if (recs_.size() >= UINT32_MAX - 1) throw Error(w + ": too many timelines");
+        slot = static_cast<std::uint32_t>(recs_.size());
+        recs_.push_back(std::make_unique<TimelineRec>());
+        free_.reserve(recs_.size());  // so killing never allocates
+    }
+    roots_.push_back(slot);
+    TimelineRec& r = *recs_[slot];
+    const std::uint32_t generation = r.generation;
+    r = TimelineRec();
+    r.generation = generation;
+    r.alive = true;
+    r.delay = def.delay;
+    r.plays = def.repeat < 0 ? 0.0 : def.repeat + 1.0;
+    r.repeat_delay = def.repeat_delay;
+    r.yoyo = def.yoyo;
+    r.time_scale = def.time_scale;
+    r.paused = def.paused;
+    return Timeline(owner, slot, generation);
+}
+
+TimelineRec* TimelineStore::find(std::uint32_t slot, std::uint32_t generation) noexcept {
+    if (slot >= recs_.size()) return nullptr;
+    TimelineRec* r = recs_[slot].get();
+    return r->alive && r->generation == generation ? r : nullptr;
+}
+
+double TimelineStore::total(const TimelineRec& r) const noexcept {
+    if (r.plays == 0.0) return HUGE_VAL;
+    return r.delay + r.duration * r.plays + r.repeat_delay * (r.plays - 1.0);
+}
+
+// Resolves a position as layout_timeline does, for one more entry at the end.
+double TimelineStore::place(TimelineRec& r, const TimelinePosition& at, double duration, bool point,
+                            const char* what) {
+    const std::string w = where_of(what);
+    if (!std::isfinite(at.offset)) throw Error(w + ": position offset must be finite (got " + number_text(at.offset) + ")");
+    double start = 0.0;
+    using Anchor = TimelinePosition::Anchor;
+    switch (at.anchor) {
+        case Anchor::start: start = at.offset; break;
+        case Anchor::end: start = r.duration + at.offset; break;
+        case Anchor::previous_end: start = r.previous_end + at.offset; break;
+        case Anchor::previous_start: start = r.previous_start + at.offset; break;
+        case Anchor::label: {
+            const auto it = std::find_if(r.labels.begin(), r.labels.end(), [&](const auto& l) { return l.first == at.label; });
+            if (it == r.labels.end()) throw Error(w + ": unknown label '" + at.label + "'");
+            start = it->second + at.offset;
+            break;
+        }
+    }
+    if (!(start >= 0.0))
+        throw Error(w + ": position '" + to_string(at) + "' gives a negative start (" + number_text(start) + " s)");
+    if (!std::isfinite(start + duration)) throw Error(w + ": start + length overflows");
+    if (!point) {
+        r.previous_start = start;
+        r.previous_end = start + duration;
+    }
+    return start;
+}
+
+void TimelineStore::insert_child(std::uint32_t slot, TimelineChild c) {
+    TimelineRec& r = *recs_[slot];
+    r.children.reserve(r.children.size() + 1);
+    r.by_end.reserve(r.children.size() + 1);
+    r.active.reserve(r.children.size() + 1);  // the window never allocates while playing
+    const auto pos = std::upper_bound(r.children.begin(), r.children.end(), c.start,
+                                      [](double s, const TimelineChild& x) { return s < x.start; });
+    const auto index = static_cast<std::uint32_t>(pos - r.children.begin());
+    const bool at_back = pos == r.children.end();
+    const bool end_last = r.by_end.empty() || r.children[r.by_end.back()].end <= c.end;
+    const bool ahead = c.start > r.cursor;  // the window has not reached it
+    r.children.insert(pos, c);
+    if (!at_back) {
+        for (std::uint32_t& e : r.by_end) e += e >= index ? 1u : 0u;
+        for (std::uint32_t& e : r.active) e += e >= index ? 1u : 0u;
+    }
+    const auto epos = std::upper_bound(r.by_end.begin(), r.by_end.end(), c.end,
+                                       [&](double e, std::uint32_t x) { return e < r.children[x].end; });
+    r.by_end.insert(epos, index);
+    if (!(at_back && end_last && ahead)) r.dirty = true;  // the window is rebuilt at the next update
+    if (c.end > r.duration) {
+        r.duration = c.end;
+        grew(slot);
+    }
+}
+
+void TimelineStore::grew(std::uint32_t slot) {
+    TimelineRec& r = *recs_[slot];
+    if (r.parent == UINT32_MAX) return;
+    TimelineRec& p = *recs_[r.parent];
+    for (std::size_t i = 0; i < p.children.size(); ++i) {
+        TimelineChild& c = p.children[i];
+        if (c.is_timeline && c.slot == slot && c.generation == r.generation) {
+            c.length = length_in_parent(r);
+            c.end = c.start + c.length;
+            std::stable_sort(p.by_end.begin(), p.by_end.end(),
+                             [&](std::uint32_t a, std::uint32_t b) { return p.children[a].end < p.children[b].end; });
+            p.dirty = true;
+            if (c.end > p.duration) {
+                p.duration = c.end;
+                grew(r.parent);
+            }
+            return;
+        }
+    }
+}
+
+void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const TimelinePosition& at) {
+    const std::string w = where_of("add");
+    if (a.engine_ == nullptr || &*a.engine_->impl_ != &engine_ || !engine_.find(a.slot_, a.generation_))
+        throw Error(w + ": the animation is not alive in this engine");
+    if (drives(a.slot_)) throw Error(w + ": the animation is already in a timeline");
+    const std::uint32_t dense = engine_.dense_of(a.slot_);
+    Hot& h = engine_.hot_[dense];
+    Cold& cold = engine_.cold_[dense];
+    TimelineChild c;
+    c.slot = a.slot_;
+    c.generation = a.generation_;
+    c.p0 = cold.play == 0 && h.phase < 0.0 ? h.phase : 0.0;  // its delay, if it has not begun
+    c.rate = std::fabs(h.rate);  // a run-time reverse does not carry into the timeline
+    c.plays = cold.plays;
+    c.gap = engine_.gap_of(dense);
+    c.reversed = (h.flags & flag_reversed) != 0;
+    c.yoyo = (h.flags & flag_yoyo) != 0;
+    if (c.plays == 0.0 || !(c.rate > 0.0))
+        throw Error(w + ": an endless animation (repeat -1 or time_scale 0) has no end to place");
+    c.length = (-c.p0 + c.plays + (c.plays - 1.0) * c.gap) / c.rate;
+    if (!std::isfinite(c.length)) throw Error(w + ": the animation's length overflows");
+    c.start = place(*recs_[slot], at, c.length, false, "add");
+    c.end = c.start + c.length;
+    driven_.emplace(a.slot_, slot);
+    try {
+        insert_child(slot, c);
+    } catch (...) {
+        driven_.erase(a.slot_);
+        throw;
+    }
+    // Driven from now on: the engine's own loop passes over it; it rests at its start.
+    Hot& hot = engine_.hot_[dense];
+    hot.flags |= flag_paused;
+    cold.play = 0;
+    hot.phase = 0.0;
+    hot.flags = static_cast<std::uint8_t>(c.reversed ? (hot.flags | flag_backward) : (hot.flags & ~flag_backward));
+    {
+        EngineImpl::Dispatch d(engine_);
+        engine_.write_state(dense);
+    }
+    engine_.hot_[engine_.dense_of(a.slot_)].phase = c.p0;
+}
+
+void TimelineStore::add_timeline(std::uint32_t slot, std::uint32_t child, const TimelinePosition& at) {
+    const std::string w = where_of("add");
+    TimelineRec& c = *recs_[child];
+    if (c.parent != UINT32_MAX) throw Error(w + ": the timeline is already in a timeline");
+    for (std::uint32_t s = slot; s != UINT32_MAX; s = recs_[s]->parent)
+        if (s == child) throw Error(w + ": a timeline cannot contain itself (the placement would make a cycle)");
+    if (c.plays == 0.0 || !(c.time_scale > 0.0))
+        throw Error(w + ": an endless timeline (repeat -1 or time_scale 0) has no end to place");
+    TimelineChild e;
+    e.is_timeline = true;
+    e.slot = child;
+    e.generation = c.generation;
+    e.length = length_in_parent(c);
+    if (!std::isfinite(e.length)) throw Error(w + ": the timeline's length overflows");
+    e.start = place(*recs_[slot], at, e.length, false, "add");
+    e.end = e.start + e.length;
+    insert_child(slot, e);
+    c.parent = slot;
+    c.paused = false;
+    c.direction = 1.0;
+}
+
+void TimelineStore::add_callback(std::uint32_t slot, std::function<void()> f, const TimelinePosition& at) {
+    TimelineRec& r = *recs_[slot];
+    const double t = place(r, at, 0.0, true, "call");
+    auto handler = std::make_shared<const std::function<void()>>(std::move(f));
+    const auto pos = std::upper_bound(r.callbacks.begin(), r.callbacks.end(), t,
+                                      [](double s, const TimelineCallback& x) { return s < x.time; });
+    if (!(pos == r.callbacks.end() && t > r.cursor)) r.dirty = true;
+    r.callbacks.insert(pos, {t, std::move(handler)});
+    if (t > r.duration) {
+        r.duration = t;
+        grew(slot);
+    }
+}
+
+void TimelineStore::add_label(std::uint32_t slot, std::string_view name, const TimelinePosition& at) {
+    TimelineRec& r = *recs_[slot];
+    if (name.empty()) throw Error("Timeline::label: a label needs a name");
+    if (std::any_of(r.labels.begin(), r.labels.end(), [&](const auto& l) { return l.first == name; }))
+        throw Error("Timeline::label: duplicate label '" + std::string(name) + "'");
+    const double t = place(r, at, 0.0, true, "label");
+    r.labels.emplace_back(std::string(name), t);
+    if (t > r.duration) {
+        r.duration = t;
+        grew(slot);
+    }
+}
+
+void TimelineStore::add_gap(std::uint32_t slot, double seconds, const TimelinePosition& at) {
+    if (!(std::isfinite(seconds) && seconds >= 0.0))
+        throw Error("Timeline::gap: seconds must be >= 0 and finite (got " + number_text(seconds) + ")");
+    TimelineRec& r = *recs_[slot];
+    const double t = place(r, at, seconds, false, "gap");
+    if (t + seconds > r.duration) {
+        r.duration = t + seconds;
+        grew(slot);
+    }
+}
+
+void TimelineStore::rebase(TimelineRec& r) noexcept {
+    r.base = r.tau;
+    r.elapsed = 0.0;
+    ++r.epoch;
+}
+
+void TimelineStore::kill_rec(std::uint32_t slot) noexcept {
+    TimelineRec& r = *recs_[slot];
+    if (!r.alive) return;
+    r.alive = false;
+    r.dead = true;
+    ++r.generation;
+    ++r.epoch;
+    ++dead_;
+    for (const TimelineChild& c : r.children) {
+        if (c.is_timeline) {
+            if (recs_[c.slot]->generation == c.generation) kill_rec(c.slot);
+        } else if (const Hot* h = engine_.find(c.slot, c.generation)) {
+            (void)h;
+            driven_.erase(c.slot);
+            engine_.mark_dead(engine_.dense_of(c.slot));
+        }
+    }
+}
+
+void TimelineStore::kill(std::uint32_t slot) noexcept {
+    kill_rec(slot);
+    if (!engine_.ticking_ && engine_.depth_ == 0) engine_.finish_dispatch();
+}
+
+void TimelineStore::kill_all() noexcept {
+    for (std::uint32_t s = 0; s < recs_.size(); ++s) kill_rec(s);
+}
+
+void TimelineStore::finish() noexcept {
+    if (depth_ > 0) return;
+    if (dead_ > 0) {
+        for (std::uint32_t s = 0; s < recs_.size(); ++s) {
+            TimelineRec& r = *recs_[s];
+            if (!r.dead) continue;
+            const std::uint32_t generation = r.generation;
+            r = TimelineRec();  // frees its vectors and handlers
+            r.generation = generation;
+            free_.push_back(s);  // capacity reserved at creation
+        }
+        dead_ = 0;
+    }
+    // Top-level entries that were killed or placed into a timeline leave the list.
+    std::erase_if(roots_, [&](std::uint32_t s) { return !recs_[s]->alive || recs_[s]->parent != UINT32_MAX; });
+}
+
+}  // namespace detail
+
+// --- the public Engine and Timeline ------------------------------------------------------------
+
+Timeline Engine::create_timeline() { return create_timeline(TimelineDef{}); }
+Timeline Engine::create_timeline(const TimelineDef& def) { return impl_->timelines().create(this, def); }
+
+#define GRAPE_TIMELINE(fallback)                                                   \
+    if (!engine_) return fallback;                                                 \
+    detail::EngineImpl& impl = *engine_->impl_;                                    \
+    detail::TimelineStore& store = impl.timelines();                               \
+    detail::TimelineRec* found = store.find(slot_, generation_);                   \
+    if (!found) return fallback;                                                   \
+    detail::TimelineRec& r = *found;                                               \
+    (void)r
+
+namespace {
+void require(const detail::TimelineRec* r, const char* what) {
+    if (!r) throw Error(std::string("Timeline::") + what + ": the timeline is not alive");
+}
+}  // namespace
+
+bool Timeline::alive() const noexcept {
+    GRAPE_TIMELINE(false);
+    return true;
+}
+
+Timeline& Timeline::add(const Animation& animation, At at) {
+    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
+    require(r, "add");
+    engine_->impl_->timelines().add_animation(slot_, animation, at.position);
+    engine_->impl_->timelines().sync(slot_);
+    return *this;
+}
+
+Timeline& Timeline::add(const Timeline& child, At at) {
+    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
+    require(r, "add");
+    if (child.engine_ != engine_ || !child.alive()) throw Error("Timeline::add: the timeline is not alive in this engine");
+    engine_->impl_->timelines().add_timeline(slot_, child.slot_, at.position);
+    engine_->impl_->timelines().sync(slot_);
+    return *this;
+}
+
+Timeline& Timeline::call(std::function<void()> handler, At at) {
+    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
+    require(r, "call");
+    if (!handler) throw Error("Timeline::call: the handler is empty");
+    engine_->impl_->timelines().add_callback(slot_, std::move(handler), at.position);
+    engine_->impl_->timelines().sync(slot_);
+    return *this;
+}
+
+Timeline& Timeline::label(std::string_view name, At at) {
+    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
+    require(r, "label");
+    engine_->impl_->timelines().add_label(slot_, name, at.position);
+    engine_->impl_->timelines().sync(slot_);
+    return *this;
+}
+
+Timeline& Timeline::gap(double seconds, At at) {
+    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
+    require(r, "gap");
+    engine_->impl_->timelines().add_gap(slot_, seconds, at.position);
+    engine_->impl_->timelines().sync(slot_);
+    return *this;
+}
+
+double Timeline::duration() const noexcept {
+    GRAPE_TIMELINE(0.0);
+    return r.duration;
+}
+
+double Timeline::total_duration() const noexcept {
+    GRAPE_TIMELINE(0.0);
+    return store.total(r) - r.delay;
+}
+
+double Timeline::time() const noexcept {
+    GRAPE_TIMELINE(0.0);
+    return r.tau - r.delay;
+}
+
+double Timeline::local_time() const noexcept {
+    GRAPE_TIMELINE(0.0);
+    return store.local_of(r, r.tau, nullptr);
+}
+
+double Timeline::progress() const noexcept {
+    GRAPE_TIMELINE(0.0);
+    return r.duration > 0.0 ? store.local_of(r, r.tau, nullptr) / r.duration : 0.0;
+}
+
+int Timeline::repetition() const noexcept {
+    GRAPE_TIMELINE(0);
+    double play = 0.0;
+    store.local_of(r, r.tau, &play);
+    return static_cast<int>(std::min(play, static_cast<double>(INT32_MAX)));
+}
+
+double Timeline::label_time(std::string_view name) const noexcept {
+    GRAPE_TIMELINE(NAN);
+    for (const auto& l : r.labels)
+        if (l.first == name) return l.second;
+    return NAN;
+}
+
+bool Timeline::paused() const noexcept {
+    GRAPE_TIMELINE(false);
+    return r.paused;
+}
+
+void Timeline::pause() const noexcept {
+    GRAPE_TIMELINE();
+    if (r.parent != UINT32_MAX || r.paused) return;
+    r.paused = true;
+    store.rebase(r);
+}
+
+void Timeline::resume() const noexcept {
+    GRAPE_TIMELINE();
+    if (r.parent != UINT32_MAX || !r.paused) return;
+    r.paused = false;
+    store.rebase(r);
+}
+
+void Timeline::reverse() const noexcept {
+    GRAPE_TIMELINE();
+    if (r.parent != UINT32_MAX || r.direction < 0.0) return;
+    r.direction = -1.0;
+    store.rebase(r);
+}
+
+void Timeline::play() const noexcept {
+    GRAPE_TIMELINE();
+    if (r.parent != UINT32_MAX) return;
+    r.direction = 1.0;
+    r.paused = false;
+    store.rebase(r);
+}
+
+bool Timeline::reversed() const noexcept {
+    GRAPE_TIMELINE(false);
+    return r.direction < 0.0;
+}
+
+void Timeline::set_time_scale(double scale) const noexcept {
+    GRAPE_TIMELINE();
+    if (r.parent != UINT32_MAX || !(std::isfinite(scale) && scale >= 0.0)) return;
+    r.time_scale = scale;
+    store.rebase(r);
+}
+
+double Timeline::time_scale() const noexcept {
+    GRAPE_TIMELINE(0.0);
+    return r.time_scale;
+}
+
+void Timeline::seek(double seconds, bool fire_events) const {
+    GRAPE_TIMELINE();
+    if (r.parent != UINT32_MAX || !std::isfinite(seconds)) return;
+    const double tau = std::clamp(seconds + r.delay, 0.0, store.total(r));
+    store.seek(slot_, tau, fire_events);
+}
+
+void Timeline::seek(std::string_view label, bool fire_events) const {
+    GRAPE_TIMELINE();
+    const double t = label_time(label);
+    if (std::isnan(t)) throw Error("Timeline::seek: unknown label '" + std::string(label) + "'");
+    seek(t, fire_events);
+}
+
+void Timeline::kill() const noexcept {
+    GRAPE_TIMELINE();
+    store.kill(slot_);
+}
+
+namespace {
+detail::Handler wrap(std::function<void()> f) {
+    return f ? std::make_shared<const std::function<void()>>(std::move(f)) : nullptr;
+}
+}  // namespace
+
+void Timeline::on_start(std::function<void()> handler) const {
+    GRAPE_TIMELINE();
+    r.on_start = wrap(std::move(handler));
+}
+void Timeline::on_update(std::function<void()> handler) const {
+    GRAPE_TIMELINE();
+    r.on_update = wrap(std::move(handler));
+}
+void Timeline::on_complete(std::function<void()> handler) const {
+    GRAPE_TIMELINE();
+    r.on_complete = wrap(std::move(handler));
+}
+void Timeline::on_reverse_complete(std::function<void()> handler) const {
+    GRAPE_TIMELINE();
+    r.on_reverse_complete = wrap(std::move(handler));
+}
+void Timeline::on_loop(std::function<void(int)> handler) const {
+    GRAPE_TIMELINE();
+    r.on_loop = handler ? std::make_shared<const std::function<void(int)>>(std::move(handler)) : nullptr;
+}
+
+#undef GRAPE_TIMELINE
+
+}  // namespace grape
