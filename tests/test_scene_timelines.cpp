@@ -1,16 +1,20 @@
 // scene timelines: the example cut-scene evaluated at times whose child times are derived by
-// hand, random nested trees against a reference model that walks play after play, save → load
-// round trips, and every kind of bad timeline naming its JSON pointer.
+// hand, random nested trees against a reference model that walks play after play, both
+// against the engine's timelines ticking the same scene, save → load round trips, and every
+// kind of bad timeline naming its JSON pointer.
 #include <grape/anim.hpp>
 #include <grape/error.hpp>
 #include <grape/path.hpp>
 #include <grape/scene.hpp>
+#include <grape/timeline.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -25,6 +29,43 @@ std::size_t index_of(const Scene& s, const std::string& name) {
         if (s.animations[i].name == name) return i;
     ADD_FAILURE() << "no animation " << name;
     return 0;
+}
+
+// The scene's timelines built as the engine's Timelines (children first, in placement
+// order); each animation writes its position into `out`.
+void build_in_engine(const Scene& s, grape::Engine& engine, std::vector<grape::Vec2>& out) {
+    out.assign(s.animations.size(), grape::Vec2{std::numeric_limits<double>::quiet_NaN(), 0.0});
+    std::vector<grape::Animation> animations;
+    for (std::size_t i = 0; i < s.animations.size(); ++i) {
+        const grape::SceneAnimation& a = s.animations[i];
+        animations.push_back(engine.create_animation(a.path, a.duration, a.def(), [&out, i](grape::Vec2 p, double) { out[i] = p; }));
+    }
+    std::vector<grape::Timeline> timelines(s.timelines.size());
+    const std::function<void(std::size_t)> build = [&](std::size_t k) {
+        if (timelines[k]) return;
+        const grape::SceneTimeline& tl = s.timelines[k];
+        grape::Timeline t = engine.create_timeline({.delay = tl.delay, .repeat = tl.repeat, .repeat_delay = tl.repeat_delay,
+                                                    .yoyo = tl.yoyo, .time_scale = tl.time_scale});
+        for (const grape::SceneTimelineChild& c : tl.children) {
+            switch (c.kind) {
+                case grape::SceneTimelineChildKind::animation:
+                    for (std::size_t i = 0; i < s.animations.size(); ++i)
+                        if (s.animations[i].name == c.name) t.add(animations[i], c.at);
+                    break;
+                case grape::SceneTimelineChildKind::timeline:
+                    for (std::size_t n = 0; n < s.timelines.size(); ++n)
+                        if (s.timelines[n].name == c.name) {
+                            build(n);
+                            t.add(timelines[n], c.at);
+                        }
+                    break;
+                case grape::SceneTimelineChildKind::label: t.label(c.name, c.at); break;
+                case grape::SceneTimelineChildKind::gap: t.gap(c.gap, c.at); break;
+            }
+        }
+        timelines[k] = t;
+    };
+    for (std::size_t k = 0; k < s.timelines.size(); ++k) build(k);
 }
 
 // scenes/timeline_cutscene.json by hand. flourish (time scale 2): spin 0 → 4.25 (two plays of
@@ -137,7 +178,8 @@ double reference_length(const Timing& g, double length) {
 
 // Random trees three timelines deep (root ⊃ middle ⊃ leaf), each holding a few animations at
 // absolute starts, with random delays, repeats, repeat delays, yoyo and time scales; every
-// animation's progress at random scene times against the reference model.
+// animation's progress at random scene times against the reference model, and frame by
+// frame against the engine's timelines built from the same scene.
 TEST(SceneTimelines, RandomNestedTreesAgreeWithAReferenceModel) {
     std::mt19937_64 rng(12);
     std::uniform_real_distribution<double> unit(0, 1);
@@ -222,6 +264,24 @@ TEST(SceneTimelines, RandomNestedTreesAgreeWithAReferenceModel) {
                 }
             }
         }
+        // The engine's timelines, built from the same scene, tick to the same states.
+        grape::Engine engine;
+        std::vector<grape::Vec2> engine_at;
+        build_in_engine(s, engine, engine_at);
+        const double dt = 1.0 / 64.0;  // exact in binary: engine time is k/64 with no drift
+        int compared = 0, frames = 0;
+        for (int k = 1; k * dt <= total + 1.0; ++k, ++frames) {
+            engine.tick(dt);
+            for (std::size_t i = 0; i < s.animations.size(); ++i) {
+                if (std::isnan(engine_at[i].x)) continue;  // not written yet
+                ++compared;
+                // The path runs from (0, 0) to (1, 0): x is u. The same bound as above.
+                ASSERT_NEAR(engine_at[i].x, timing.progress(i, k * dt), 2e-11)
+                    << "round " << round << " t " << k * dt << " " << s.animations[i].name;
+            }
+        }
+        // Most frames of most animations: an animation is written once its timeline reaches it.
+        EXPECT_GT(compared, frames * static_cast<int>(s.animations.size()) / 4) << "round " << round;
     }
 }
 
@@ -329,6 +389,32 @@ TEST(SceneTimelines, AgreeWithTheEngineForOnePlay) {
             }
         }
     }
+}
+
+// The scene's player and the engine's timelines agree on the cut-scene (nested, repeats,
+// yoyo, repeat delays, time scale, labels, a gap), frame by frame.
+TEST(SceneTimelines, CutSceneAgreesWithTheEnginesTimelines) {
+    const Scene s = grape::load_scene_file(std::filesystem::path(GRAPE_SCENES_DIR) / "timeline_cutscene.json");
+    const SceneTiming timing(s);
+    grape::Engine engine;
+    std::vector<grape::Vec2> engine_at;
+    build_in_engine(s, engine, engine_at);
+    const double dt = 1.0 / 64.0;  // exact in binary: engine time is k/64 with no drift
+    int compared = 0;
+    for (int k = 1; k <= 64 * 12; ++k) {
+        engine.tick(dt);
+        for (std::size_t i = 0; i < s.animations.size(); ++i) {
+            if (std::isnan(engine_at[i].x)) continue;  // not written yet
+            const grape::Vec2 p = s.animations[i].path.point(timing.progress(i, k * dt));
+            // Both compose timeline_local_time and progress_at, in their own orders: a few ulps
+            // of ~10 s of time (scaled by 2 in flourish) through curve slopes ≤ π/2 per second
+            // and paths of ≤ 510 units per u: well under 1e-9.
+            ASSERT_NEAR(engine_at[i].x, p.x, 1e-9) << s.animations[i].name << " at " << k * dt;
+            ASSERT_NEAR(engine_at[i].y, p.y, 1e-9) << s.animations[i].name << " at " << k * dt;
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 64 * 10 * 4);  // nearly every frame of every animation was compared
 }
 
 // Bad timelines: each error names the JSON pointer of the bad value and why.
