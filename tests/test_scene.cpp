@@ -558,7 +558,7 @@ TEST(SceneFiles, DocumentationExampleAndSchemaAgreeWithTheLoader) {
 }
 
 // SceneAnimation's closed-form timing agrees with the anim engine playing the same
-// animation (random timings, curves, repeat, yoyo and reverse; fixed seed).
+// animation (random timings, curves, repeat, repeat delay, yoyo and reverse; fixed seed).
 void expect_agreement_with_engine(const std::vector<std::string>& curves) {
     std::mt19937_64 rng(6);
     std::uniform_real_distribution<double> unit(0, 1);
@@ -571,11 +571,12 @@ void expect_agreement_with_engine(const std::vector<std::string>& curves) {
         a.repeat = static_cast<int>(rng() % 4) - 1;
         a.yoyo = rng() % 2 == 0;
         a.reversed = rng() % 2 == 0;
+        a.repeat_delay = rng() % 2 == 0 ? 0.0 : 0.5 * unit(rng);
         grape::Engine engine;
         Vec2 last{};
-        engine.create_animation(a.path, a.duration,
-                                {.curve = a.curve, .delay = a.delay, .repeat = a.repeat, .reversed = a.reversed, .yoyo = a.yoyo},
-                                [&](Vec2 p, double) { last = p; });
+        grape::AnimationDef def{.curve = a.curve, .delay = a.delay, .repeat = a.repeat, .reversed = a.reversed, .yoyo = a.yoyo};
+        def.repeat_delay = a.repeat_delay;
+        engine.create_animation(a.path, a.duration, def, [&](Vec2 p, double) { last = p; });
         const double dt = 1.0 / 64.0;  // exact in binary: engine time is k/64 with no drift
         for (int k = 1; k <= 64 * 8; ++k) {
             engine.tick(dt);

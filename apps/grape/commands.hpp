@@ -32,6 +32,10 @@ void register_render_command(CLI::App& app);
 void demo_pictures(const DemoContext& context);
 #endif
 
+#ifdef GRAPE_TOOL_SAMPLE
+void register_sample_command(CLI::App& app);  ///< `grape sample SCENE --at T,...`
+#endif
+
 void register_demo_command(CLI::App& app);
 void register_sprite_commands(CLI::App& app);  // empty without the scene module
 

@@ -3,7 +3,8 @@
 // name such as "cubic-bezier(0.3,0,0.2,1)" or "steps(5)"), duration, repeat, reverse, yoyo
 // and arc length; the path is drawn with its debug rendering and a marker plays along it.
 // Bézier and spline control points can be dragged (the path's spec is edited and rebuilt);
-// the animation follows.
+// the animation follows. A loaded scene with timelines gets a timeline view under the canvas:
+// its animations then play by the scene's time, which the view's playhead seeks.
 #include "studio.hpp"
 
 #include <seed_paths.hpp>
@@ -19,13 +20,17 @@
 #include <grape/scene.hpp>
 
 #include <nlohmann/json.hpp>
+
+#include "timeline_view.hpp"
 #endif
 
 #include <SDL.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <ostream>
 
 namespace grape::studio {
@@ -122,6 +127,13 @@ public:
 
     void advance(double dt) override {
         if (playing_) engine_.tick(dt);
+#ifdef GRAPE_STUDIO_SCENE
+        // The scene's time runs round the view's axis (unless the playhead is held).
+        if (playing_ && !timeline_.empty() && !seeking_) {
+            scene_time_ += dt;
+            if (scene_time_ > timeline_.span()) scene_time_ = 0.0;
+        }
+#endif
     }
 
     void controls() override {
@@ -198,12 +210,16 @@ public:
     }
 
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
-        Canvas canvas(dl, min, max, view_min_, view_max_);
+        ImVec2 canvas_max = max;  // the timeline view, when shown, takes the bottom of the canvas
+#ifdef GRAPE_STUDIO_SCENE
+        if (!timeline_.empty()) canvas_max.y = std::max(min.y + 40.0f, max.y - timeline_.height());
+#endif
+        Canvas canvas(dl, min, canvas_max, view_min_, view_max_);
         screen_offset_ = canvas.offset();
         screen_scale_ = canvas.scale();
         canvas.grid(grid_step(), colour::grid);
         Entry& e = entries_[current_];
-        draw_path(canvas, min, max);
+        draw_path(canvas, min, canvas_max);
 
         // Control polygon and handles.
         if (!e.controls.empty()) {
@@ -230,8 +246,18 @@ public:
         if (compare_ && ghost_) {
             canvas.ring(ghost_.value(), 7.0f, colour::ink, 2.0f);
         }
-        const Vec2 p = anim_.value();
-        const double h = anim_.heading();
+        Vec2 p = anim_.value();
+        double h = anim_.heading();
+#ifdef GRAPE_STUDIO_SCENE
+        if (const auto i = timeline_animation()) {  // played by the scene's timelines
+            const double u = timing_.progress(*i, scene_time_);
+            const Vec2 d = shown_.d1(u);
+            p = shown_.point(u);
+            h = std::atan2(d.y, d.x);
+        }
+        marker_ = p;
+        if (!timeline_.empty()) seeking_ = timeline_.draw(dl, {min.x, canvas_max.y}, max, scene_time_);
+#endif
         canvas.line(p, p + Vec2{std::cos(h), std::sin(h)} * (22.0 / canvas.scale()), colour::marker, 2.0f);
         canvas.disc(p, 7.0f, colour::marker);
         char label[96];
@@ -253,6 +279,15 @@ public:
                 << screen_offset_.y + e.controls[i].y * screen_scale_ << "\n";
         out << "midpoint: " << e.path.point(0.5).x << ' ' << e.path.point(0.5).y << "\n";
         out << "marker: " << anim_.value().x << ' ' << anim_.value().y << "\nprogress: " << anim_.progress() << "\n";
+#ifdef GRAPE_STUDIO_SCENE
+        if (!timeline_.empty()) {
+            out << "timelines: " << scene_.timelines.size() << "\nscene_time: " << scene_time_ << "\ntimeline_axis: "
+                << timeline_.axis_start() << ' ' << timeline_.axis_end() << ' ' << timeline_.span() << "\n";
+            if (const auto i = timeline_animation())
+                out << "timeline_animation: " << scene_.animations[*i].name << "\ntimeline_marker: " << marker_.x << ' ' << marker_.y
+                    << "\n";
+        }
+#endif
     }
 
 private:
@@ -442,6 +477,12 @@ private:
                 reversed_ = a.reversed;
             }
             arc_length_ = false;
+            scene_ = scene;
+            timing_ = SceneTiming(scene);
+            timeline_.set_scene(scene);
+            scene_time_ = 0.0;
+            seeking_ = false;
+            file_first_ = scene.animations.empty() ? entries_.size() : first;
             select(first);
             scene_message_ = std::string("loaded ") + scene_file_;
         } catch (const Error& err) {
@@ -449,8 +490,21 @@ private:
         }
     }
 
+    // The scene animation entry `current_` shows, when the loaded scene's timelines play it.
+    std::optional<std::size_t> timeline_animation() const {
+        if (timeline_.empty() || current_ < file_first_ || current_ - file_first_ >= scene_.animations.size()) return {};
+        return current_ - file_first_;
+    }
+
     char scene_file_[256] = "studio-scene.json";
     std::string scene_message_;
+    Scene scene_;                 // the last scene loaded
+    SceneTiming timing_;          // its animations and timelines in time
+    TimelineView timeline_;       // its timelines under the canvas
+    double scene_time_ = 0.0;     // seconds, seeked by the view's playhead
+    bool seeking_ = false;        // the playhead is held
+    std::size_t file_first_ = SIZE_MAX;  // the entry of the scene's first animation
+    Vec2 marker_;                 // where the marker was drawn, for reports
 #endif
 
     std::vector<Entry> entries_;

@@ -1,4 +1,4 @@
-// grape — scene: JSON files describing paths, curves, animations and simulations
+// grape — scene: JSON files describing paths, curves, animations, simulations and timelines
 // (format: docs/scene-format.md, schema: docs/scene.schema.json).
 //
 // Loading validates everything and throws grape::Error naming the JSON pointer of the bad
@@ -8,6 +8,8 @@
 //
 //   grape::Scene scene = grape::load_scene_file("scenes/seed_complex.json");
 //   grape::Vec2 where = scene.animations[0].position(1.5);   // 1.5 s into the scene
+//   grape::SceneTiming timing(scene);                         // with its timelines
+//   double u = timing.progress(0, 1.5);                        // as its timeline plays it
 //   grape::save_scene_file(scene, "copy.json");
 #pragma once
 
@@ -16,6 +18,7 @@
 #include <grape/curve.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
+#include <grape/timeline_layout.hpp>
 
 #include <cstddef>
 #include <filesystem>
@@ -49,6 +52,7 @@ struct SceneAnimation {
     int repeat = 0;          ///< plays after the first: 0 plays once, −1 forever
     bool yoyo = false;       ///< every other play runs backwards
     bool reversed = false;   ///< the first play runs from the path's end to its start
+    double repeat_delay = 0.0;  ///< seconds between plays, ≥ 0 (the state holds at the end of the play just finished)
 
     /// The AnimationDef the anim engine plays this with (curve and timing).
     AnimationDef def() const noexcept;
@@ -60,6 +64,33 @@ struct SceneAnimation {
     Vec2 position(double t) const noexcept { return path.point(progress(t)); }
     /// Seconds until the last play ends (infinity when repeating forever).
     double end_time() const noexcept;
+};
+
+/// What a child of a timeline is.
+enum class SceneTimelineChildKind { animation, timeline, label, gap };
+
+/// One child of a SceneTimeline, in the order placed.
+struct SceneTimelineChild {
+    SceneTimelineChildKind kind = SceneTimelineChildKind::animation;
+    std::string name{};   ///< the animation's, the nested timeline's or the label's name (unused for gaps)
+    double gap = 0.0;     ///< gap: seconds it occupies, ≥ 0
+    TimelinePosition at{};  ///< where it goes; the default: after everything placed so far
+};
+
+/// A timeline: animations, nested timelines, labels and gaps placed in time, played like an
+/// animation. An animation placed in a timeline is driven by it and does not play on its
+/// own: before its start in the timeline it rests at its start, after its end at its end.
+struct SceneTimeline {
+    std::string name;            ///< unique among the timelines, not empty
+    double delay = 0.0;          ///< seconds (of its parent) before the first play, ≥ 0
+    int repeat = 0;              ///< plays after the first: 0 plays once, −1 forever (top level only)
+    double repeat_delay = 0.0;   ///< seconds between plays, ≥ 0
+    bool yoyo = false;           ///< every other play runs backwards
+    double time_scale = 1.0;     ///< timeline seconds per parent second, > 0
+    std::vector<SceneTimelineChild> children;  ///< in placement order
+
+    /// The timing as an AnimationDef (curve linear): what timeline_local_time plays.
+    AnimationDef def() const noexcept;
 };
 
 /// A particle of a simulation.
@@ -127,6 +158,7 @@ struct Scene {
     std::vector<NamedCurve> curves;           ///< named curves
     std::vector<SceneAnimation> animations;   ///< animations (their paths are drawn too)
     std::vector<SceneSimulation> simulations; ///< particle simulations
+    std::vector<SceneTimeline> timelines;     ///< timelines driving some of the animations
     /// What loading forgave, one message each: SVG path data with a syntax error is read by
     /// SVG's error rule (the path before the command holding the error). Not saved.
     std::vector<std::string> warnings;
@@ -135,6 +167,63 @@ struct Scene {
     const NamedPath* find_path(std::string_view name) const noexcept;
     /// The named curve; nullptr when there is none.
     const NamedCurve* find_curve(std::string_view name) const noexcept;
+};
+
+/// One play of a timeline as laid out, and where it is placed.
+struct SceneTimelineLayout {
+    std::vector<double> start;        ///< per child, seconds from the timeline's start
+    std::vector<double> length;       ///< per child, seconds it lasts in the timeline (labels 0)
+    std::vector<std::ptrdiff_t> index;  ///< per child, the animation's or timeline's index (−1 for labels, gaps)
+    double duration = 0.0;            ///< seconds of one play (the end of the last-ending child)
+    double end_time = 0.0;            ///< seconds of its parent until its last play ends (+inf: forever)
+    std::ptrdiff_t parent = -1;       ///< the timeline it is placed in (−1: it plays from scene time 0)
+    double start_in_parent = 0.0;     ///< seconds from the parent's start (0 at the top level)
+};
+
+/// A scene's animations and timelines placed in time: which timeline drives each animation
+/// and where. Built once from a scene (which it then no longer needs); evaluation is
+/// noexcept and allocation-free, the same timing model the anim engine plays (progress_at,
+/// timeline_local_time).
+class SceneTiming {
+public:
+    SceneTiming() = default;
+    /// Lays out every timeline. Throws grape::Error "scene: POINTER: WHY" for an unknown or
+    /// ambiguous animation, timeline or label, a cycle of timelines, nesting deeper than 32,
+    /// an animation or timeline placed twice, a child repeating forever, a negative start.
+    explicit SceneTiming(const Scene& scene);
+
+    std::size_t animation_count() const noexcept { return animations_.size(); }
+    std::size_t timeline_count() const noexcept { return timelines_.size(); }
+    /// The timeline driving animation i (−1: it plays on its own from scene time 0).
+    std::ptrdiff_t driver(std::size_t animation) const noexcept { return animations_[animation].driver; }
+    /// Timeline k's layout and placement.
+    const SceneTimelineLayout& layout(std::size_t timeline) const noexcept { return timelines_[timeline].layout; }
+
+    /// Seconds into one play of timeline k at scene time t (timeline_local_time down its
+    /// chain of parents).
+    double timeline_time(std::size_t timeline, double t) const noexcept;
+    /// The time animation i plays at at scene time t: t itself when free, otherwise the
+    /// seconds since its start in its timeline (negative before it, past its end after).
+    double animation_time(std::size_t animation, double t) const noexcept;
+    /// Progress u of animation i at scene time t: progress_at(def, duration, animation_time).
+    double progress(std::size_t animation, double t) const noexcept;
+    /// Scene seconds until every free animation and top-level timeline has ended (+inf when
+    /// one repeats forever).
+    double end_time() const noexcept;
+
+private:
+    struct Animation {
+        AnimationDef def;
+        double duration = 1.0;
+        std::ptrdiff_t driver = -1;
+        double start = 0.0;  // in the driver's time
+    };
+    struct Timeline {
+        AnimationDef def;
+        SceneTimelineLayout layout;
+    };
+    std::vector<Animation> animations_;
+    std::vector<Timeline> timelines_;
 };
 
 /// Parses scene JSON text. Throws grape::Error naming the JSON pointer and the reason

@@ -29,7 +29,7 @@ namespace {
 using namespace scene_io;
 
 Scene read_scene(const json& root) {
-    object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations"});
+    object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations", "timelines"});
     if (const auto v = root.find("grape_scene"); v != root.end()) {
         if (integer(*v, "/grape_scene") != 1) fail("/grape_scene", "unsupported format version (this reader knows 1)");
     }
@@ -85,7 +85,7 @@ Scene read_scene(const json& root) {
         PathReader reader{&scene.paths, &scene.warnings};
         for (std::size_t i = 0; i < v->size(); ++i) {
             const std::string p = child("/animations", i);
-            const json& o = object((*v)[i], p, {"name", "path", "curve", "duration", "delay", "repeat", "yoyo", "reversed"});
+            const json& o = object((*v)[i], p, {"name", "path", "curve", "duration", "delay", "repeat", "yoyo", "reversed", "repeat_delay"});
             SceneAnimation a;
             a.name = name_field(o, p, nullptr);
             const json& path = required(o, p, "path");
@@ -114,12 +114,17 @@ Scene read_scene(const json& root) {
             }
             a.yoyo = bool_field(o, p, "yoyo", false);
             a.reversed = bool_field(o, p, "reversed", false);
+            a.repeat_delay = non_negative_field(o, p, "repeat_delay", 0.0);
             scene.animations.push_back(std::move(a));
         }
     }
     if (const auto v = root.find("simulations"); v != root.end()) {
         if (!v->is_array()) fail("/simulations", "expected an array, got " + type_of(*v));
         for (std::size_t i = 0; i < v->size(); ++i) scene.simulations.push_back(read_simulation((*v)[i], child("/simulations", i)));
+    }
+    if (const auto v = root.find("timelines"); v != root.end()) {
+        scene.timelines = read_timelines(*v, "/timelines");
+        (void)SceneTiming(scene);  // names, cycles and positions resolve, or the error names where
     }
     return scene;
 }
@@ -155,6 +160,7 @@ ordered scene_json(const Scene& scene) {
             o["repeat"] = anim.repeat;
             o["yoyo"] = anim.yoyo;
             o["reversed"] = anim.reversed;
+            if (anim.repeat_delay != 0.0) o["repeat_delay"] = anim.repeat_delay;
             a.push_back(std::move(o));
         }
         j["animations"] = std::move(a);
@@ -164,6 +170,7 @@ ordered scene_json(const Scene& scene) {
         for (const SceneSimulation& s : scene.simulations) a.push_back(simulation_json(s));
         j["simulations"] = std::move(a);
     }
+    if (!scene.timelines.empty()) j["timelines"] = timelines_json(scene.timelines);
     return j;
 }
 
@@ -172,7 +179,9 @@ ordered scene_json(const Scene& scene) {
 // --------------------------------------------------------------------------------- public
 
 AnimationDef SceneAnimation::def() const noexcept {
-    return {.curve = curve, .delay = delay, .repeat = repeat, .reversed = reversed, .yoyo = yoyo};
+    AnimationDef d{.curve = curve, .delay = delay, .repeat = repeat, .reversed = reversed, .yoyo = yoyo};
+    d.repeat_delay = repeat_delay;
+    return d;
 }
 
 double SceneAnimation::progress(double t) const noexcept {

@@ -79,4 +79,8 @@ ordered path_json(const Path& path);
 SceneSimulation read_simulation(const json& j, const std::string& pointer);
 ordered simulation_json(const SceneSimulation& s);
 
+/// The "timelines" array (names, fields and positions; references resolve in SceneTiming).
+std::vector<SceneTimeline> read_timelines(const json& j, const std::string& pointer);
+ordered timelines_json(const std::vector<SceneTimeline>& timelines);
+
 }  // namespace grape::scene_io

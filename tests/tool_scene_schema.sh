@@ -1,0 +1,59 @@
+#!/bin/sh
+# docs/scene.schema.json against the scenes grape reads: every scenes/*.json and every JSON
+# example in docs/scene-format.md must validate, and a scene with a misspelt field, a child
+# of two kinds or a bad position type must not. Exits 0 (as expected), 1 (not) or 77
+# (skipped: python3 with jsonschema, Debian's python3-jsonschema, is missing).
+#   tests/tool_scene_schema.sh SCHEMA FORMAT_DOC SCENES_DIR
+set -u
+schema=$1
+doc=$2
+scenes=$3
+if ! python3 -c "import jsonschema" 2>/dev/null; then
+    echo "skipped: python3 -c 'import jsonschema' failed (apt-get install python3-jsonschema)"
+    exit 77
+fi
+python3 - "$schema" "$doc" "$scenes" <<'PY'
+import glob, json, re, sys
+import jsonschema
+
+schema_file, doc_file, scenes_dir = sys.argv[1:4]
+schema = json.load(open(schema_file, encoding="utf-8"))
+jsonschema.Draft202012Validator.check_schema(schema)
+validator = jsonschema.Draft202012Validator(schema)
+failures = 0
+
+def check(label, scene, valid):
+    global failures
+    errors = sorted(validator.iter_errors(scene), key=lambda e: list(e.path))
+    if bool(errors) == valid:
+        failures += 1
+        why = "; ".join("/" + "/".join(map(str, e.path)) + ": " + e.message for e in errors[:3])
+        print("FAIL:", label, "is valid" if not valid else "is not valid: " + why)
+    else:
+        print("ok:  ", label, "valid" if valid else "refused")
+
+files = sorted(glob.glob(scenes_dir + "/*.json"))
+for f in files:
+    check(f, json.load(open(f, encoding="utf-8")), True)
+blocks = re.findall(r"```json\n(.*?)```", open(doc_file, encoding="utf-8").read(), re.S)
+for i, text in enumerate(blocks):
+    check(doc_file + " example " + str(i + 1), json.loads(text), True)
+if len(files) < 7 or len(blocks) < 2:
+    print("FAIL: expected at least 7 scenes and 2 examples, found", len(files), "and", len(blocks))
+    failures += 1
+
+line = {"kind": "linear", "start": [0, 0], "end": [1, 0]}
+anim = {"name": "a", "path": line, "duration": 1}
+def timeline(*children):
+    return {"animations": [anim], "timelines": [{"name": "t", "children": list(children)}]}
+check("a timeline child with a position", timeline({"animation": "a", "at": "<+0.5"}), True)
+check("an animation with a repeat delay", {"animations": [dict(anim, repeat_delay=0.5)]}, True)
+check("a misspelt animation field", {"animations": [dict(anim, durtion=1)]}, False)
+check("a child of two kinds", timeline({"animation": "a", "label": "x"}), False)
+check("a child of no kind", timeline({"at": 1}), False)
+check("a position that is neither number nor string", timeline({"animation": "a", "at": [1]}), False)
+check("a negative gap", timeline({"gap": -1}), False)
+check("a timeline without children", {"timelines": [{"name": "t"}]}, False)
+check("a time scale of 0", {"timelines": [{"name": "t", "time_scale": 0, "children": []}]}, False)
+sys.exit(1 if failures else 0)
+PY
