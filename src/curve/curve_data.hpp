@@ -1,0 +1,117 @@
+// What the curves with data share on the heap (private to the curve module): one type per
+// kind, each derived from detail::CurveData so that a Curve holds any of them.
+#pragma once
+
+#include <grape/curve.hpp>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace grape::detail {
+
+/// Monotone curve: knots and their Fritsch–Carlson slopes.
+struct MonotoneData : CurveData {
+    std::vector<double> x;
+    std::vector<double> y;
+    std::vector<double> m;  // dy/dx at each knot
+};
+
+/// One piece of an SVG curve: a line, quadratic or cubic Bézier (absolute points, as given),
+/// and its cubic form for evaluation.
+struct SvgPiece {
+    enum class Kind : unsigned char { line, quadratic, cubic };
+    Kind kind = Kind::cubic;
+    double px[4] = {};  // the points as written (line: 2, quadratic: 3, cubic: 4)
+    double py[4] = {};
+    double cx[4] = {};  // cubic control points (a line or quadratic raised exactly to degree 3 where it can be)
+    double cy[4] = {};
+};
+
+/// SVG curve: its pieces in order of x, with their start x.
+struct SvgData : CurveData {
+    std::vector<SvgPiece> pieces;
+    std::vector<double> start_x;  // pieces[i] covers [start_x[i], start_x[i + 1])
+    double y_start = 0.0;
+    double y_end = 0.0;
+};
+
+/// Spring: the closed form's constants (see spring.cpp).
+struct SpringData : CurveData {
+    enum class Regime : unsigned char { under, critical, over };
+    Regime regime = Regime::under;
+    double zeta_omega = 0.0;  // ζ·ω0, the decay rate
+    double omega = 0.0;       // ωd (under) or γ = ω0·√(ζ² − 1) (over); 0 when critical
+    double b = 0.0;           // B = ζ·ω0 − v0, the coefficient of the second mode (see spring.cpp)
+    double slow = 0.0;        // over: the slow decay rate ζ·ω0 − γ = ω0² / (ζ·ω0 + γ)
+    double span = 0.0;        // T: spring seconds the curve covers
+    double end_offset = 0.0;  // x(T), removed linearly so that curve(1) = 1
+    bool by_duration = false; // made by spring_duration (its to_string form)
+};
+
+/// Function curve: the callable and its finite end values.
+struct FunctionData : CurveData {
+    std::function<double(double)> f;
+    double at0 = 0.0;
+    double at1 = 1.0;
+};
+
+/// A curve's shared data as its kind's type (the kind must match).
+template <class Data>
+const Data& data_of(const Curve& c) noexcept {
+    return static_cast<const Data&>(*static_cast<const CurveData*>(c.identity()));
+}
+
+/// x of a spring at spring time tau (x(0) = 1; the curve is 1 − x).
+double spring_offset(const SpringData& d, double tau) noexcept;
+
+/// The SVG curve's path data as to_string writes it (absolute M, L, Q, C; shortest numbers).
+std::string svg_text(const SvgData& d);
+/// Same pieces, point for point.
+bool svg_same(const SvgData& a, const SvgData& b) noexcept;
+
+/// B(s) = 3(1−s)²s·c1 + 3(1−s)s²·c2 + s³·c3 (a Bézier from 0 through c1, c2 to c3) in its
+/// Bernstein form: a sum of non-negative terms when 0 ≤ c1, c2, c3, so that it keeps its
+/// relative accuracy (≈ 8 ulp of B) however small s is.
+inline double bernstein(double c1, double c2, double c3, double s) noexcept {
+    const double m = 1.0 - s;
+    return s * (3.0 * m * (m * c1 + s * c2) + s * s * c3);
+}
+
+/// The s in [0, 1] with B(s) = v, for B non-decreasing on [0, 1] and 0 < v < c3: Newton
+/// inside a bracket [lo, hi] with B(lo) < v < B(hi), bisecting (geometrically while the
+/// bracket spans more than a factor 4, so a flat start is found in a few steps) whenever
+/// Newton would leave it. Stops when B(s) = v, when the Newton step is below half an ulp of
+/// s, or when lo and hi are adjacent doubles: s is then within an ulp or two of the point
+/// where the computed B(s) − v changes sign. At most 200 steps (work bounded; a few Newton
+/// steps on ordinary curves).
+inline double bernstein_solve(double c1, double c2, double c3, double v) noexcept {
+    const double d0 = c1;  // B′ = 3·(Bernstein form with d0, d1, d2)
+    const double d1 = c2 - c1;
+    const double d2 = c3 - c2;
+    double lo = 0.0;
+    double hi = 1.0;
+    double s = v / c3;
+    double last_step = 1.0;
+    for (int i = 0; i < 200; ++i) {
+        const double g = bernstein(c1, c2, c3, s) - v;
+        if (g == 0.0) break;
+        (g < 0.0 ? lo : hi) = s;
+        const double m = 1.0 - s;
+        const double slope = 3.0 * (m * (m * d0 + 2.0 * s * d1) + s * s * d2);
+        double next = s - g / slope;
+        // Bisect when Newton leaves the bracket, or crawls (a step over 0.4 of the last one:
+        // a flat end or flat point, where Newton only halves the distance each step).
+        if (!(next > lo && next < hi) || std::abs(next - s) > 0.4 * last_step) {
+            next = lo > 0.0 && hi > 4.0 * lo ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) break;  // lo and hi are adjacent doubles
+        }
+        if (next == s) break;
+        last_step = std::abs(next - s);
+        s = next;
+    }
+    return s;
+}
+
+}  // namespace grape::detail
