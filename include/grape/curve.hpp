@@ -263,8 +263,8 @@ public:
     /// CSS cubic-bezier(x1, y1, x2, y2): x1, x2 in [0, 1], y1, y2 finite; outside [0, 1]
     /// continues along the end tangents as CSS does. Solved to round-off: on the half of the
     /// curve nearer t (mirrored through (½, ½) above ½, where 1 − t is exact) x(s) is a sum of
-    /// non-negative Bernstein terms, evaluated to 8 ulp of itself, and a bracketed Newton
-    /// with bisection stops at the double s where that sign changes. So s is exact for a t
+    /// non-negative Bernstein terms, evaluated to 8 ulp of itself, and Halley's iteration in a
+    /// bracket, with bisection, stops at the double s where x(s) − t changes sign. So s is exact for a t
     /// within 8 ulp of the given one: y is within a few ulp of the exact y(t) wherever t·|y′(t)|
     /// is O(|y|), flat ends (ease, ease-in, ease-out) included. Only next to an interior point
     /// where x′ = 0 (when x2 < x1 and (x1 − x2)² = x1·(1 − x2), e.g. cubic-bezier(1,0,0,1) at
@@ -283,8 +283,8 @@ public:
     /// x = 0 to x = 1 (each within 1e-12, then set exactly), x never decreasing along any
     /// segment (checked exactly on the control points; a vertical segment is a jump: y takes
     /// its top value from there on). y is free (overshoot allowed). Each segment's x(s) = t is
-    /// solved from its nearer end, as cubic_bezier is (bracketed Newton with bisection to the
-    /// double where the computed x(s) − t changes sign), so y has cubic_bezier's accuracy.
+    /// solved from its nearer end as cubic_bezier is (to the double where the computed
+    /// x(s) − t changes sign), so y has cubic_bezier's accuracy.
     /// Outside [0, 1] holds the end values.
     /// Throws grape::Error naming the segment (its number from 1 and its start) that breaks a rule.
     static Curve svg(std::string_view data);
