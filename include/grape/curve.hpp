@@ -264,9 +264,9 @@ public:
     /// continues along the end tangents as CSS does. Solved to round-off: on the half of the
     /// curve nearer t (mirrored through (½, ½) above ½, where 1 − t is exact) x(s) is a sum of
     /// non-negative Bernstein terms, evaluated to 8 ulp of itself, and Halley's iteration in a
-    /// bracket, with bisection, stops at the double s where x(s) − t changes sign. So s is exact for a t
-    /// within 8 ulp of the given one: y is within a few ulp of the exact y(t) wherever t·|y′(t)|
-    /// is O(|y|), flat ends (ease, ease-in, ease-out) included. Only next to an interior point
+    /// bracket, with bisection, stops at the double s where x(s) − t changes sign. So s is
+    /// exact for a t within 8 ulp of the given one: y is within a few ulp of the exact y(t)
+    /// wherever t·|y′(t)| is O(|y|), flat ends (ease, ease-in, ease-out) included. Only next to an interior point
     /// where x′ = 0 (when x2 < x1 and (x1 − x2)² = x1·(1 − x2), e.g. cubic-bezier(1,0,0,1) at
     /// ½), where y(t) has a vertical tangent, that freedom in t shows: there y is within
     /// ∛(8 ulp(t) / |x‴/6|)·|y′(s)| (6e-6·|y′| for (1,·,0,·)).
@@ -282,7 +282,7 @@ public:
     /// path (`M L H V C S Q T`, absolute or relative, parsed by grape::parse_svg_path) from
     /// x = 0 to x = 1 (each within 1e-12, then set exactly), x never decreasing along any
     /// segment (checked exactly on the control points; a vertical segment is a jump: y takes
-    /// its top value from there on). y is free (overshoot allowed). Each segment's x(s) = t is
+    /// its end value from there on). y is free (overshoot allowed). Each segment's x(s) = t is
     /// solved from its nearer end as cubic_bezier is (to the double where the computed
     /// x(s) − t changes sign), so y has cubic_bezier's accuracy.
     /// Outside [0, 1] holds the end values.
@@ -314,7 +314,7 @@ public:
     CurveKind kind() const noexcept { return kind_; }
     /// The kind's numbers: back (overshoot), elastic (amplitude, period), cubic_bezier
     /// (x1, y1, x2, y2), steps (n, position as a number), spring (stiffness, damping, mass,
-    /// velocity; for spring_duration: duration, bounce, velocity, and −1); zero otherwise.
+    /// velocity; for spring_duration: duration, bounce, velocity, 0); zero otherwise.
     double parameter(int i) const noexcept { return i >= 0 && i < 4 ? p_[i] : 0.0; }
     /// A spring's span in seconds of spring time (t = 1); 0 for other kinds.
     double settling_time() const noexcept;
