@@ -2,8 +2,8 @@
 // progress along the path. Progress may leave [0, 1] (back, elastic): paths extend along
 // their end tangents, so the overshoot shows in space too.
 //
-// `Curve` is a small value (a kind plus a few numbers; monotone, SVG, spring and function
-// curves share their data on the heap: copies share it). Evaluation is noexcept,
+// `Curve` is a small value (a kind plus a few numbers; cubic-bezier, monotone, SVG, spring and
+// function curves share their data on the heap: copies share it). Evaluation is noexcept,
 // allocation-free and a switch on the kind.
 //
 //   grape::Curve c = grape::Curve::quad_in_out();
@@ -211,7 +211,7 @@ inline constexpr double spring_settle_tolerance = 1e-3;
 
 namespace detail {
 struct CurveData {};  // what a curve shares on the heap; one derived type per kind (src/curve/)
-double cubic_bezier_eval(double x1, double y1, double x2, double y2, double t) noexcept;
+double cubic_bezier_eval(const CurveData& table, double x1, double y1, double x2, double y2, double t) noexcept;
 double steps_eval(double n, double position, double t) noexcept;
 double monotone_eval(const CurveData& data, double t) noexcept;
 double svg_eval(const CurveData& data, double t) noexcept;
@@ -318,7 +318,7 @@ public:
     double parameter(int i) const noexcept { return i >= 0 && i < 4 ? p_[i] : 0.0; }
     /// A spring's span in seconds of spring time (t = 1); 0 for other kinds.
     double settling_time() const noexcept;
-    /// The address of the data copies share (monotone, svg, spring, function curves), else
+    /// The address of the data copies share (cubic_bezier, monotone, svg, spring, function), else
     /// nullptr: equal for copies, distinct for curves made separately.
     const void* identity() const noexcept { return data_.get(); }
     /// The knots of a monotone curve (empty otherwise).
@@ -436,7 +436,7 @@ inline double Curve::operator()(double t) const noexcept {
         case CurveKind::elastic_out: return ease::elastic_out(t, p_[0], p_[1]);
         case CurveKind::elastic_in_out: return ease::elastic_in_out(t, p_[0], p_[1]);
         case CurveKind::elastic_out_in: return ease::elastic_out_in(t, p_[0], p_[1]);
-        case CurveKind::cubic_bezier: return detail::cubic_bezier_eval(p_[0], p_[1], p_[2], p_[3], t);
+        case CurveKind::cubic_bezier: return detail::cubic_bezier_eval(*data_, p_[0], p_[1], p_[2], p_[3], t);
         case CurveKind::steps: return detail::steps_eval(p_[0], p_[1], t);
         case CurveKind::monotone: return detail::monotone_eval(*data_, t);
         case CurveKind::svg: return detail::svg_eval(*data_, t);

@@ -144,6 +144,7 @@ Curve Curve::cubic_bezier(double x1, double y1, double x2, double y2) {
     c.p_[1] = y1;
     c.p_[2] = x2;
     c.p_[3] = y2;
+    c.data_ = detail::cubic_bezier_table(x1, x2);
     return c;
 }
 

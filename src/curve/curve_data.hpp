@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,9 @@ const Data& data_of(const Curve& c) noexcept {
 /// x of a spring at spring time tau (x(0) = 1; the curve is 1 − x).
 double spring_offset(const SpringData& d, double tau) noexcept;
 
+/// cubic-bezier's table of starts for x1, x2 (computed once per curve).
+std::shared_ptr<const CurveData> cubic_bezier_table(double x1, double x2);
+
 /// The SVG curve's path data as to_string writes it (absolute M, L, Q, C; shortest numbers).
 std::string svg_text(const SvgData& d);
 /// Same pieces, point for point.
@@ -82,20 +86,20 @@ inline double bernstein(double c1, double c2, double c3, double s) noexcept {
 /// The s in [0, 1] with B(s) = v, for B non-decreasing on [0, 1] and 0 < v < c3: Halley
 /// inside a bracket [lo, hi] with B(lo) < v < B(hi), bisecting (geometrically while the
 /// bracket spans more than a factor 4, so a flat start is found in a few steps) whenever
-/// Halley would leave it. Stops when B(s) = v, when the step is within an ulp of s, or
-/// when lo and hi are adjacent doubles: s is then within an ulp or two of the point
+/// Halley would leave it. Stops when B(s) = v, when the step is within an ulp of s (or
+/// Halley's error estimate after it is), or when lo and hi are adjacent doubles: s is then
+/// within an ulp or two of the point
 /// where the computed B(s) − v changes sign. At most 200 steps (work bounded; a few Halley
 /// steps on ordinary curves).
-inline double bernstein_solve(double c1, double c2, double c3, double v) noexcept {
+/// Started from s0 inside a bracket [lo, hi] known to hold the solution (to rounding).
+inline double bernstein_solve(double c1, double c2, double c3, double v, double lo, double hi, double s0) noexcept {
     const double d0 = c1;  // B′ = 3·(Bernstein form with d0, d1, d2)
     const double d1 = c2 - c1;
     const double d2 = c3 - c2;
     const double e0 = d1 - d0;  // B″ = 6·((1 − s)·e0 + s·e1)
     const double e1 = d2 - d1;
-    double lo = 0.0;
-    double hi = 1.0;
-    double s = v / c3;
-    double last_step = 1.0;
+    double s = s0;
+    double last_step = hi - lo;
     for (int i = 0; i < 200; ++i) {
         const double g = bernstein(c1, c2, c3, s) - v;
         if (g == 0.0) break;
@@ -114,8 +118,14 @@ inline double bernstein_solve(double c1, double c2, double c3, double v) noexcep
             const double r = g / slope;
             next = s - r / (1.0 - 0.5 * r * bend / slope);
         }
-        // Converged: the step is within an ulp of s, where the sign of g is rounding.
-        if (std::abs(next - s) <= 0x1p-52 * s) return next;
+        // Converged: the step is within an ulp of s, where the sign of g is rounding; or the
+        // step is so small that Halley's next error, ≈ K·step³ with K = (B″/2B′)² + |B‴/6B′|,
+        // is below a quarter ulp of s even 16 times over (saves the last evaluation).
+        const double step = std::abs(next - s);
+        if (step <= 0x1p-52 * s) return next;
+        const double q = bend / slope;
+        const double k = 0.25 * q * q + std::abs(e1 - e0) / std::abs(slope);
+        if (16.0 * k * step * step * step <= 0x1p-54 * s && next > lo && next < hi) return next;
         // Bisect when the step leaves the bracket, or, after a few steps, crawls (a step over
         // 0.4 of the last one: a flat end or flat point, where the distance only halves).
         if (!(next > lo && next < hi) || (i >= 4 && std::abs(next - s) > 0.4 * last_step)) {
@@ -127,5 +137,20 @@ inline double bernstein_solve(double c1, double c2, double c3, double v) noexcep
     }
     return s;
 }
+
+/// From the bracket [0, 1] and the straight line's guess v/c3.
+inline double bernstein_solve(double c1, double c2, double c3, double v) noexcept {
+    return bernstein_solve(c1, c2, c3, v, 0.0, 1.0, v / c3);
+}
+
+/// cubic-bezier's start: the solved s at x = k/32 on each half (s for x ≤ ½, w = 1 − s for
+/// x ≥ ½ as the mirrored curve's parameter), so that a t finds a bracket 1/32 wide in x by
+/// one multiplication and starts from the straight line between its ends: two or three
+/// Halley steps instead of four or five from s = t.
+struct BezierTable : CurveData {
+    static constexpr int n = 32;
+    double s[n / 2 + 1];  // s[k]: x(s) = k/n, k = 0..n/2
+    double w[n / 2 + 1];  // w[j]: the mirrored curve's x(w) = j/n
+};
 
 }  // namespace grape::detail
