@@ -148,7 +148,7 @@ TEST(Curve, DefaultIsLinear) {
 }
 
 TEST(Curve, EveryPennerCurveMapsZeroToZeroAndOneToOneExactly) {
-    for (int k = 0; k <= static_cast<int>(CurveKind::bounce_in_out); ++k) {
+    for (int k = 0; k <= static_cast<int>(CurveKind::bounce_out_in); ++k) {
         const Curve c(static_cast<CurveKind>(k));
         SCOPED_TRACE(grape::to_string(c));
         EXPECT_EQ(c(0.0), 0.0);
@@ -332,8 +332,9 @@ TEST(CubicBezier, AgreesWithAnIndependentBisectionOnRandomControlPoints) {
         for (int i = 0; i <= 200; ++i) {
             const double x = i / 200.0;
             const double truth = bezier_by_bisection(x1, y1, x2, y2, x);
-            // grape solves |x(u) − x| ≤ 1e-12; a solve that good moves y by at most
-            // |dy/dx|·1e-12 (first order). Allow twice that plus 16 ulp of the O(1) value.
+            // A loose check against a plain double bisection (itself off by |dy/dx| times its
+            // x rounding): |dy/dx|·2e-12 plus 16 ulp of the O(1) value. The round-off check
+            // against a long double reference is WithinAFewUlpOfAHighPrecisionReference... below.
             double lo = 0, hi = 1;
             for (int k = 0; k < 200; ++k) {
                 const double mid = 0.5 * (lo + hi);
@@ -458,7 +459,7 @@ TEST(Monotone, BadPointsAreErrors) {
 
 TEST(CurveNames, RoundTripEveryCurve) {
     std::vector<Curve> curves;
-    for (int k = 0; k <= static_cast<int>(CurveKind::bounce_in_out); ++k) curves.emplace_back(static_cast<CurveKind>(k));
+    for (int k = 0; k <= static_cast<int>(CurveKind::bounce_out_in); ++k) curves.emplace_back(static_cast<CurveKind>(k));
     curves.push_back(Curve::back(EaseDirection::out, 2.5));
     curves.push_back(Curve::elastic(EaseDirection::in_out, 1.25, 0.6));
     curves.push_back(Curve::steps(7, grape::StepPosition::jump_both));
@@ -476,7 +477,7 @@ TEST(CurveNames, RoundTripEveryCurve) {
     EXPECT_EQ(grape::to_string(Curve::steps(4)), "steps(4,jump-end)");
     EXPECT_EQ(grape::parse_curve(" cubic-bezier( 0.25 , 0.1, 0.25 ,1 ) "), grape::parse_curve("ease"));
     EXPECT_EQ(grape::parse_curve("QUAD_IN_OUT"), Curve::quad_in_out());
-    EXPECT_EQ(grape::curve_names().size(), 31u);
+    EXPECT_EQ(grape::curve_names().size(), 41u);
 }
 
 TEST(CurveNames, UnknownNamesListTheValidOnes) {
@@ -495,11 +496,176 @@ TEST(CurveNames, UnknownNamesListTheValidOnes) {
 
 TEST(Curve, EveryCurveStaysFiniteOutsideTheUnitInterval) {
     std::vector<Curve> curves;
-    for (int k = 0; k <= static_cast<int>(CurveKind::bounce_in_out); ++k) curves.emplace_back(static_cast<CurveKind>(k));
+    for (int k = 0; k <= static_cast<int>(CurveKind::bounce_out_in); ++k) curves.emplace_back(static_cast<CurveKind>(k));
     curves.push_back(grape::parse_curve("ease"));
     curves.push_back(Curve::steps(3));
     for (const Curve& c : curves)
         for (int i = -100; i <= 200; ++i) {
             EXPECT_TRUE(std::isfinite(c(i / 100.0))) << grape::to_string(c) << " at " << i / 100.0;
         }
+}
+
+// --- out-in --------------------------------------------------------------------------------
+
+TEST(Curve, OutInIsPennersOutThenInForEveryFamily) {
+    // Tweener's easeOutIn*: out over the first half scaled by ½, then in from ½ (Penner's
+    // published in and out above, not grape's). Back and elastic keep their in/out constants.
+    std::vector<std::function<double(double)>> in(10), out(10);
+    const auto refs = penner_references();
+    for (int f = 0; f < 10; ++f) {
+        in[f] = refs[3 * f].f;
+        out[f] = refs[3 * f + 1].f;
+    }
+    for (int f = 0; f < 10; ++f) {
+        const Curve c = Curve::out_in(static_cast<EaseFamily>(f));
+        SCOPED_TRACE(grape::to_string(c));
+        EXPECT_EQ(c.kind(), static_cast<CurveKind>(1 + 4 * f + 3));
+        EXPECT_EQ(c, Curve(static_cast<EaseFamily>(f), EaseDirection::out_in));
+        for (int i = 0; i <= 1000; ++i) {
+            const double t = i / 1000.0;
+            const double truth = t < 0.5 ? 0.5 * out[f](2 * t) : 0.5 + 0.5 * in[f](2 * t - 1);
+            EXPECT_NEAR(c(t), truth, formula_tolerance) << "t = " << t;
+        }
+        EXPECT_EQ(c(0.0), 0.0);
+        EXPECT_EQ(c(0.5), 0.5);
+        EXPECT_EQ(c(1.0), 1.0);
+        // Point symmetry about (½, ½): out-in(t) = 1 − out-in(1 − t), as out(x) = 1 − in(1 − x).
+        for (int i = 0; i <= 100; ++i) EXPECT_NEAR(c(i / 100.0), 1.0 - c(1.0 - i / 100.0), formula_tolerance);
+    }
+    // Adjusted constants reach both halves; names read back.
+    const Curve back = Curve::back(EaseDirection::out_in, 2.5);
+    EXPECT_NEAR(back(0.3), 0.5 * penner::out_back(0.6, 2.5), formula_tolerance);
+    EXPECT_NEAR(back(0.8), 0.5 + 0.5 * penner::in_back(0.6, 2.5), formula_tolerance);
+    const Curve elastic = Curve::elastic(EaseDirection::out_in, 1.5, 0.4);
+    EXPECT_NEAR(elastic(0.3), 0.5 * penner::out_elastic(0.6, 1.5, 0.4), formula_tolerance);
+    EXPECT_EQ(grape::to_string(back), "back-out-in(2.5)");
+    EXPECT_EQ(grape::parse_curve("elastic-out-in(1.5,0.4)"), elastic);
+    EXPECT_EQ(grape::to_string(Curve::elastic_out_in()), "elastic-out-in");
+    EXPECT_EQ(grape::parse_curve("bounce-out-in"), Curve::bounce_out_in());
+    EXPECT_EQ(Curve(CurveKind::sine_out_in), Curve::sine_out_in());
+}
+
+// --- cubic-bezier to round-off ---------------------------------------------------------------
+
+namespace {
+
+constexpr double eps = 2.220446049250313e-16;
+
+// Independent reference in long double (64-bit significand on x86, 2048× finer than a
+// double): bisection over [0, 1] of the plain Bernstein sum until the bracket is 2⁻⁶⁶ of its
+// lower end (a quarter ulp of a long double there), no Newton. Above ½ it bisects on w = 1 − s
+// for 1 − x = w³ + 3w²(1 − w)(1 − x1) + 3w(1 − w)²(1 − x2) = 1 − t: near 1 a long double x has
+// only 1e-19 absolute resolution, which next to a flat end (1 − x ∝ w²) would move w by
+// 1e-19/|dx/dw| and y by far more than a double's ulp.
+struct BezierReference {
+    long double y;
+    long double slope;  // dy/dx at the solution
+};
+BezierReference bezier_reference(double x1, double y1, double x2, double y2, double t) {
+    using L = long double;
+    auto b = [](L p1, L p2, L s) { const L m = 1 - s; return 3 * m * m * s * p1 + 3 * m * s * s * p2 + s * s * s; };
+    auto d = [](L p1, L p2, L s) { const L m = 1 - s; return 3 * m * m * p1 + 6 * m * s * (p2 - p1) + 3 * s * s * (1 - p2); };
+    // From the end: w³ + 3w²(1 − w)(1 − p1) + 3w(1 − w)²(1 − p2) = 1 − b(p1, p2, 1 − w).
+    auto e = [](L p1, L p2, L w) { const L m = 1 - w; return w * w * w + 3 * w * w * m * (1 - p1) + 3 * w * m * m * (1 - p2); };
+    const bool upper = t > 0.5;
+    const L target = upper ? 1 - static_cast<L>(t) : static_cast<L>(t);
+    L lo = 0, hi = 1;
+    for (int i = 0; i < 20000 && hi - lo > std::ldexp(lo, -66); ++i) {
+        const L mid = (lo + hi) / 2;
+        if (mid == lo || mid == hi) break;
+        ((upper ? e(x1, x2, mid) : b(x1, x2, mid)) < target ? lo : hi) = mid;
+    }
+    const L u = (lo + hi) / 2;
+    const L s = upper ? 1 - u : u;
+    const L dx = d(x1, x2, s);
+    return {upper ? 1 - e(y1, y2, u) : b(y1, y2, s), dx > 0 ? std::fabs(d(y1, y2, s) / dx) : 1e300L};
+}
+
+// Dense in the middle and geometric towards both ends, where the flat ends live.
+std::vector<double> dense_grid() {
+    std::vector<double> t;
+    for (int i = 1; i < 4000; ++i) t.push_back(i / 4000.0);
+    for (int j = 1; j <= 60; ++j) t.push_back(std::ldexp(1.0, -j));
+    for (int j = 1; j <= 52; ++j) t.push_back(1.0 - std::ldexp(1.0, -j));
+    for (double x : {1e-300, 1e-100, 3e-17, 0.5 - 1e-16, 0.5 + 1.1e-16, 1.0 - 1.1e-16}) t.push_back(x);
+    return t;
+}
+
+// The bound the solver states: s exact for a t within 8 ulp (of min(t, 1 − t), the exact
+// input on the half it solves), so y within 8 ulp · (min(t, 1 − t)·|dy/dt|) from the solve,
+// plus the evaluation of y: 8 ulp of its Bernstein terms (|y| for y controls in [0, 1], and
+// max(1, |y1|, |y2|) when they overshoot) and half an ulp of 1 for 1 − y on the upper half.
+// Twice that, 16 ulp, for margin.
+double bezier_tolerance(double y1, double y2, double t, const BezierReference& r) {
+    const double near = std::min(t, 1.0 - t);
+    const bool unit = y1 >= 0 && y1 <= 1 && y2 >= 0 && y2 <= 1;
+    const double scale = unit ? static_cast<double>(std::fabs(r.y)) : std::max({1.0, std::abs(y1), std::abs(y2)}) * 3;
+    return 16 * eps * (scale + near * static_cast<double>(r.slope)) + (t > 0.5 ? eps : 0.0);
+}
+
+}  // namespace
+
+TEST(CubicBezier, WithinAFewUlpOfAHighPrecisionReferenceIncludingFlatEnds) {
+    struct Controls { double x1, y1, x2, y2; };
+    std::vector<Controls> cases = {
+        {0.25, 0.1, 0.25, 1},  {0.42, 0, 1, 1},   {0, 0, 0.58, 1},    {0.42, 0, 0.58, 1},  // CSS keywords
+        {0, 0, 1, 1},          {0, 1, 1, 0},      {1, 0, 1, 1},       {0, 0, 0, 1},        // flat ends
+        {0.68, -0.6, 0.32, 1.6}, {0.5, 0, 0.5, 1}, {0.1, 0.9, 0.2, 1}, {0.9, 0, 0.9, 0.1},
+    };
+    std::mt19937_64 rng(4242);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::uniform_real_distribution<double> wide(-1.0, 2.0);
+    for (int i = 0; i < 40; ++i) cases.push_back({unit(rng), unit(rng), unit(rng), unit(rng)});
+    for (int i = 0; i < 20; ++i) cases.push_back({unit(rng), wide(rng), unit(rng), wide(rng)});
+    const std::vector<double> grid = dense_grid();
+    double worst = 0;  // in units of the tolerance
+    for (const Controls& k : cases) {
+        const Curve c = Curve::cubic_bezier(k.x1, k.y1, k.x2, k.y2);
+        for (double t : grid) {
+            const BezierReference r = bezier_reference(k.x1, k.y1, k.x2, k.y2, t);
+            if (r.slope > 1e12) continue;  // vertical tangent: y is not a function of t to round-off
+            const double tolerance = bezier_tolerance(k.y1, k.y2, t, r);
+            const double error = std::abs(c(t) - static_cast<double>(r.y));
+            worst = std::max(worst, error / tolerance);
+            ASSERT_LE(error, tolerance) << grape::to_string(c) << " t=" << t << " reference " << static_cast<double>(r.y);
+        }
+    }
+    std::printf("cubic-bezier: worst error %.3g of the tolerance over %zu curves x %zu t\n", worst, cases.size(), grid.size());
+}
+
+TEST(CubicBezier, FlatEndsThatStoppedAt1e12AreNowExact) {
+    // ease-in near its flat end (x2 = 1, y2 = 1): 1 − x ≈ 3(1 − x1)·w² ... with w = 1 − s, so a
+    // solve stopped at |x − t| ≤ 1e-12 missed s by ~1e-6 and y by ~1e-6 relative to 1 − y.
+    // Here both 1 − y and y next to the flat start (ease-out at t = 2^-40) keep full relative
+    // precision.
+    const Curve ease_in = grape::parse_curve("ease-in");
+    const Curve ease_out = grape::parse_curve("ease-out");
+    for (int j = 20; j <= 52; ++j) {
+        const double t = 1.0 - std::ldexp(1.0, -j);
+        const BezierReference r = bezier_reference(0.42, 0, 1, 1, t);
+        EXPECT_NEAR(1.0 - ease_in(t), static_cast<double>(1.0L - r.y), 4 * eps * static_cast<double>(1.0L - r.y) + eps) << j;
+        const double u = std::ldexp(1.0, -j);
+        const BezierReference q = bezier_reference(0, 0, 0.58, 1, u);
+        EXPECT_NEAR(ease_out(u), static_cast<double>(q.y), 16 * eps * static_cast<double>(q.y)) << j;
+    }
+}
+
+TEST(CubicBezier, InteriorFlatPointStaysWithinItsStatedBound) {
+    // cubic-bezier(1, 0, 0, 1): x(s) = ½ + 4(s − ½)³ exactly and y(s) = 3s² − 2s³, so the
+    // exact answer is s = ½ + ∛((t − ½)/4) (t − ½ exact in long double). Away from t = ½ the
+    // solve is exact to a few ulp; next to it the header's bound ∛(8 ulp(t)/4)·|y′(s)| holds,
+    // y′(½) = 3/2: ∛(8·2⁻⁵³/4)·1.5 = 9.1e-6.
+    const Curve c = Curve::cubic_bezier(1, 0, 0, 1);
+    EXPECT_EQ(c(0.5), 0.5);
+    for (double t : {0.5 - 1e-16, 0.5 + 1.2e-16, 0.5 - 1e-12, 0.5 + 1e-9, 0.25, 0.75, 0.1, 0.999}) {
+        using L = long double;
+        const L w = std::cbrt((static_cast<L>(t) - 0.5L) / 4);
+        const L s = 0.5L + w;
+        const L y = 3 * s * s - 2 * s * s * s;
+        const double near_flat = std::cbrt(8 * std::ldexp(1.0, -53) / 4) * 1.5 * 1.01;  // 1 % for rounding of the bound
+        const double slope = static_cast<double>((6 * s - 6 * s * s) / (12 * w * w));  // dy/dt = y′(s)/x′(s)
+        const double ordinary = 16 * eps * (1 + std::min(t, 1 - t) * slope);
+        EXPECT_NEAR(c(t), static_cast<double>(y), std::min(near_flat, ordinary) > 0 && std::abs(t - 0.5) > 1e-6 ? ordinary : near_flat)
+            << "t = " << t;
+    }
 }

@@ -94,11 +94,19 @@ export interface Curve extends Deletable {
   name(): string;
   kind(): string;
   equals(other: Curve): boolean;
+  /** A spring's span in seconds of spring time (0 for other kinds). */
+  settlingTime(): number;
 }
 export interface CurveStatic {
   new(): Curve;
   /** Any parse_curve name; an unknown one throws, listing the valid names. */
   parse(name: string): Curve;
+  /** y at x along SVG path data from x = 0 to x = 1 (GSAP's CustomEase data). */
+  svg(data: string): Curve;
+  /** A damped spring; velocity in progress per second (parse("spring(170,26)") takes mass 1, velocity 0). */
+  spring(stiffness: number, damping: number, mass: number, velocity: number): Curve;
+  /** A spring by perceptual duration and bounce in (−1, 1), as SwiftUI gives it. */
+  springDuration(duration: number, bounce: number, velocity: number): Curve;
 }
 
 /** How an animation plays (all optional). */

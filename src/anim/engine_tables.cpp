@@ -55,6 +55,9 @@ void EngineImpl::release_path(std::uint32_t index) noexcept {
 
 std::uint16_t EngineImpl::acquire_curve(const Curve& curve) {
     std::string key = to_string(curve);
+    // A function curve has no text of its own: its shared callable is its identity (the
+    // entry keeps that callable alive, so the address is not reused while the key exists).
+    if (curve.kind() == CurveKind::function) key += '@' + std::to_string(reinterpret_cast<std::uintptr_t>(curve.identity()));
     if (auto it = curve_index_.find(key); it != curve_index_.end()) {
         ++curves_[it->second].refs;
         return it->second;

@@ -1,4 +1,7 @@
-// Curves: validation, the solver for CSS cubic-bezier, steps, the monotone cubic, and names.
+// Curves: validation, steps, the monotone cubic, and names (cubic_bezier.cpp, svg_curve.cpp,
+// spring.cpp and function_curve.cpp hold the other kinds).
+#include "curve_data.hpp"
+
 #include <grape/curve.hpp>
 #include <grape/error.hpp>
 
@@ -16,59 +19,6 @@ namespace grape {
 
 namespace detail {
 
-struct MonotoneData {
-    std::vector<double> x;
-    std::vector<double> y;
-    std::vector<double> m;  // dy/dx at each knot
-};
-
-double cubic_bezier_eval(double x1, double y1, double x2, double y2, double t) noexcept {
-    if (!(t > 0.0)) {
-        if (!(t < 0.0)) return t;  // 0 (exact) or NaN (passed through, never invented)
-        // CSS: a straight line through the start with the start tangent.
-        const double slope = x1 > 0.0 ? y1 / x1 : (x2 > 0.0 ? y2 / x2 : 0.0);
-        return slope * t;
-    }
-    if (t >= 1.0) {
-        if (t == 1.0) return 1.0;
-        const double slope = x2 < 1.0 ? (y2 - 1.0) / (x2 - 1.0) : (x1 < 1.0 ? (y1 - 1.0) / (x1 - 1.0) : 0.0);
-        return 1.0 + slope * (t - 1.0);
-    }
-    // Power form: x(u) = ((ax·u + bx)·u + cx)·u, monotone on [0, 1] because x1, x2 ∈ [0, 1].
-    const double cx = 3.0 * x1;
-    const double bx = 3.0 * (x2 - x1) - cx;
-    const double ax = 1.0 - cx - bx;
-    const double cy = 3.0 * y1;
-    const double by = 3.0 * (y2 - y1) - cy;
-    const double ay = 1.0 - cy - by;
-    constexpr double tolerance = 1e-12;
-    auto x_of = [&](double u) { return ((ax * u + bx) * u + cx) * u; };
-
-    double u = t;
-    bool solved = false;
-    for (int i = 0; i < 8; ++i) {
-        const double f = x_of(u) - t;
-        if (std::abs(f) <= tolerance) { solved = true; break; }
-        const double slope = (3.0 * ax * u + 2.0 * bx) * u + cx;
-        if (std::abs(slope) < 1e-9) break;  // flat spot: Newton would fly off
-        u -= f / slope;
-        if (!(u >= 0.0 && u <= 1.0)) break;
-    }
-    if (!solved) {
-        // Bisection always converges: x is non-decreasing and x(0) = 0 < t < 1 = x(1).
-        double lo = 0.0;
-        double hi = 1.0;
-        u = t;
-        for (int i = 0; i < 200; ++i) {
-            const double f = x_of(u) - t;
-            if (std::abs(f) <= tolerance) break;
-            if (f > 0.0) hi = u; else lo = u;
-            u = 0.5 * (lo + hi);
-        }
-    }
-    return ((ay * u + by) * u + cy) * u;
-}
-
 double steps_eval(double n, double position, double t) noexcept {
     if (std::isnan(t)) return t;
     const auto pos = static_cast<StepPosition>(static_cast<int>(position));
@@ -82,7 +32,8 @@ double steps_eval(double n, double position, double t) noexcept {
     return current / jumps;
 }
 
-double monotone_eval(const MonotoneData& d, double t) noexcept {
+double monotone_eval(const CurveData& base, double t) noexcept {
+    const auto& d = static_cast<const MonotoneData&>(base);
     const std::size_t last = d.x.size() - 1;
     if (!(t > 0.0)) {
         if (t == 0.0) return d.y[0];
@@ -107,24 +58,25 @@ double monotone_eval(const MonotoneData& d, double t) noexcept {
 
 namespace {
 
-constexpr std::array<std::string_view, 31> kind_names{
+constexpr std::array<std::string_view, 41> kind_names{
     "linear",
-    "quad-in", "quad-out", "quad-in-out",
-    "cubic-in", "cubic-out", "cubic-in-out",
-    "quart-in", "quart-out", "quart-in-out",
-    "quint-in", "quint-out", "quint-in-out",
-    "sine-in", "sine-out", "sine-in-out",
-    "expo-in", "expo-out", "expo-in-out",
-    "circ-in", "circ-out", "circ-in-out",
-    "back-in", "back-out", "back-in-out",
-    "elastic-in", "elastic-out", "elastic-in-out",
-    "bounce-in", "bounce-out", "bounce-in-out",
+    "quad-in", "quad-out", "quad-in-out", "quad-out-in",
+    "cubic-in", "cubic-out", "cubic-in-out", "cubic-out-in",
+    "quart-in", "quart-out", "quart-in-out", "quart-out-in",
+    "quint-in", "quint-out", "quint-in-out", "quint-out-in",
+    "sine-in", "sine-out", "sine-in-out", "sine-out-in",
+    "expo-in", "expo-out", "expo-in-out", "expo-out-in",
+    "circ-in", "circ-out", "circ-in-out", "circ-out-in",
+    "back-in", "back-out", "back-in-out", "back-out-in",
+    "elastic-in", "elastic-out", "elastic-in-out", "elastic-out-in",
+    "bounce-in", "bounce-out", "bounce-in-out", "bounce-out-in",
 };
+static_assert(kind_names.size() == static_cast<std::size_t>(CurveKind::bounce_out_in) + 1);
 
 constexpr std::array<std::string_view, 4> position_names{"jump-start", "jump-end", "jump-none", "jump-both"};
 
-bool is_back(CurveKind k) noexcept { return k >= CurveKind::back_in && k <= CurveKind::back_in_out; }
-bool is_elastic(CurveKind k) noexcept { return k >= CurveKind::elastic_in && k <= CurveKind::elastic_in_out; }
+bool is_back(CurveKind k) noexcept { return k >= CurveKind::back_in && k <= CurveKind::back_out_in; }
+bool is_elastic(CurveKind k) noexcept { return k >= CurveKind::elastic_in && k <= CurveKind::elastic_out_in; }
 
 using detail::number_text;
 
@@ -140,7 +92,7 @@ double default_period(EaseDirection direction) noexcept {
 }  // namespace
 
 Curve::Curve(EaseFamily family, EaseDirection direction) noexcept
-    : kind_(static_cast<CurveKind>(1 + 3 * static_cast<int>(family) + static_cast<int>(direction))) {
+    : kind_(static_cast<CurveKind>(1 + 4 * static_cast<int>(family) + static_cast<int>(direction))) {
     if (is_back(kind_)) p_[0] = ease::back_overshoot;
     if (is_elastic(kind_)) {
         p_[0] = ease::elastic_amplitude;
@@ -149,12 +101,12 @@ Curve::Curve(EaseFamily family, EaseDirection direction) noexcept
 }
 
 Curve::Curve(CurveKind kind) {
-    if (kind > CurveKind::bounce_in_out)
+    if (kind > CurveKind::bounce_out_in)
         throw Error("Curve: kind " + std::string(to_string(kind)) +
-                    " needs its parameters: use Curve::cubic_bezier, Curve::steps or Curve::monotone");
+                    " needs its parameters: use Curve::cubic_bezier, steps, monotone, svg, spring or from_function");
     if (kind == CurveKind::linear) return;
     const int index = static_cast<int>(kind) - 1;
-    *this = Curve(static_cast<EaseFamily>(index / 3), static_cast<EaseDirection>(index % 3));
+    *this = Curve(static_cast<EaseFamily>(index / 4), static_cast<EaseDirection>(index % 4));
 }
 
 Curve Curve::back(EaseDirection direction, double overshoot) {
@@ -192,6 +144,7 @@ Curve Curve::cubic_bezier(double x1, double y1, double x2, double y2) {
     c.p_[1] = y1;
     c.p_[2] = x2;
     c.p_[3] = y2;
+    c.data_ = detail::cubic_bezier_table(x1, x2);
     return c;
 }
 
@@ -257,24 +210,44 @@ Curve Curve::monotone(std::span<const double> x, std::span<const double> y) {
     }
     Curve c;
     c.kind_ = CurveKind::monotone;
-    c.points_ = std::move(data);
+    c.data_ = std::move(data);
     return c;
 }
 
 std::span<const double> Curve::knots_x() const noexcept {
-    return points_ ? std::span<const double>(points_->x) : std::span<const double>();
+    if (kind_ != CurveKind::monotone) return {};
+    return static_cast<const detail::MonotoneData&>(*data_).x;
 }
 
 std::span<const double> Curve::knots_y() const noexcept {
-    return points_ ? std::span<const double>(points_->y) : std::span<const double>();
+    if (kind_ != CurveKind::monotone) return {};
+    return static_cast<const detail::MonotoneData&>(*data_).y;
+}
+
+double Curve::settling_time() const noexcept {
+    return kind_ == CurveKind::spring ? static_cast<const detail::SpringData&>(*data_).span : 0.0;
 }
 
 bool operator==(const Curve& a, const Curve& b) noexcept {
     if (a.kind_ != b.kind_) return false;
     for (int i = 0; i < 4; ++i)
         if (!(a.p_[i] == b.p_[i])) return false;
-    if (a.kind_ != CurveKind::monotone) return true;
-    return a.points_ == b.points_ || (a.points_->x == b.points_->x && a.points_->y == b.points_->y);
+    if (a.data_ == b.data_) return true;
+    switch (a.kind_) {
+        case CurveKind::monotone: {
+            const auto& x = static_cast<const detail::MonotoneData&>(*a.data_);
+            const auto& y = static_cast<const detail::MonotoneData&>(*b.data_);
+            return x.x == y.x && x.y == y.y;
+        }
+        case CurveKind::svg:
+            return detail::svg_same(static_cast<const detail::SvgData&>(*a.data_),
+                                    static_cast<const detail::SvgData&>(*b.data_));
+        case CurveKind::spring:
+            return static_cast<const detail::SpringData&>(*a.data_).by_duration ==
+                   static_cast<const detail::SpringData&>(*b.data_).by_duration;
+        case CurveKind::function: return false;  // different callables (copies share data_)
+        default: return true;
+    }
 }
 
 std::string_view to_string(CurveKind kind) noexcept {
@@ -284,6 +257,9 @@ std::string_view to_string(CurveKind kind) noexcept {
         case CurveKind::cubic_bezier: return "cubic-bezier";
         case CurveKind::steps: return "steps";
         case CurveKind::monotone: return "monotone";
+        case CurveKind::svg: return "svg";
+        case CurveKind::spring: return "spring";
+        case CurveKind::function: return "function";
         default: return "unknown";
     }
 }
@@ -306,7 +282,7 @@ std::string to_string(const Curve& c) {
     if (is_back(k)) {
         if (c.parameter(0) != ease::back_overshoot) arguments({p(0)});
     } else if (is_elastic(k)) {
-        const double period = k == CurveKind::elastic_in_out ? ease::elastic_in_out_period : ease::elastic_period;
+        const double period = k == CurveKind::elastic_in_out ? ease::elastic_in_out_period : ease::elastic_period;  // out-in: 0.3
         if (c.parameter(0) != ease::elastic_amplitude || c.parameter(1) != period) arguments({p(0), p(1)});
     } else if (k == CurveKind::cubic_bezier) {
         arguments({p(0), p(1), p(2), p(3)});
@@ -321,6 +297,17 @@ std::string to_string(const Curve& c) {
             name += number_text(x[i]) + "," + number_text(y[i]);
         }
         name += ")";
+    } else if (k == CurveKind::svg) {
+        name += '(';
+        name += detail::svg_text(detail::data_of<detail::SvgData>(c));
+        name += ')';
+    } else if (k == CurveKind::spring) {
+        if (detail::data_of<detail::SpringData>(c).by_duration) {
+            name = "spring-duration";
+            arguments({p(0), p(1), p(2)});
+        } else {
+            arguments({p(0), p(1), p(2), p(3)});
+        }
     }
     return name;
 }
@@ -339,7 +326,8 @@ std::string_view trim(std::string_view s) noexcept {
     message +=
         "back-in|out|in-out(overshoot), elastic-in|out|in-out(amplitude,period), cubic-bezier(x1,y1,x2,y2), "
         "ease, ease-in, ease-out, ease-in-out, steps(n[,jump-start|jump-end|jump-none|jump-both|start|end]), "
-        "step-start, step-end, monotone(x0,y0,x1,y1,...)";
+        "step-start, step-end, monotone(x0,y0,x1,y1,...), svg(SVG path data from x = 0 to x = 1), "
+        "spring(stiffness,damping[,mass[,velocity]]), spring-duration(duration[,bounce[,velocity]])";
     throw Error(message);
 }
 
@@ -368,6 +356,12 @@ Curve parse_curve(std::string_view text) {
     const std::string_view whole = trim(text);
     const std::size_t open = whole.find('(');
     const std::string name = normalized_name(trim(whole.substr(0, open)));
+    if (name == "svg") {
+        // The path data keeps its commas and spaces: everything between the parentheses.
+        if (open == std::string_view::npos || whole.back() != ')')
+            unknown_curve(text, "svg takes its path data in parentheses:");
+        return Curve::svg(whole.substr(open + 1, whole.size() - open - 2));
+    }
     std::vector<std::string_view> args;
     if (open != std::string_view::npos) {
         if (whole.back() != ')') unknown_curve(text, "missing ')' in");
@@ -430,12 +424,25 @@ Curve parse_curve(std::string_view text) {
         }
         return Curve::monotone(x, y);
     }
+    if (name == "spring") {
+        expect_args(2, 4);
+        return Curve::spring({.stiffness = number(0),
+                              .damping = number(1),
+                              .mass = args.size() > 2 ? number(2) : 1.0,
+                              .velocity = args.size() > 3 ? number(3) : 0.0});
+    }
+    if (name == "spring-duration") {
+        expect_args(1, 3);
+        return Curve::spring_duration(number(0), args.size() > 1 ? number(1) : 0.0, args.size() > 2 ? number(2) : 0.0);
+    }
+    if (name == "function")
+        throw Error("parse_curve: a function curve (Curve::from_function) has no text form; give it in code");
     for (std::size_t i = 0; i < kind_names.size(); ++i) {
         if (name != kind_names[i]) continue;
         const auto kind = static_cast<CurveKind>(i);
         if (open == std::string_view::npos) return Curve(kind);
         const int index = static_cast<int>(i) - 1;
-        const auto direction = static_cast<EaseDirection>(index % 3);
+        const auto direction = static_cast<EaseDirection>(index % 4);
         if (is_back(kind)) {
             expect_args(1, 1);
             return Curve::back(direction, number(0));

@@ -27,6 +27,15 @@ val names() {
     return out;
 }
 bool equals(const Curve& a, const Curve& b) { return a == b; }
+double settling_time(const Curve& c) { return c.settling_time(); }
+Curve svg(std::string data) { return Curve::svg(data); }
+// Every number given (embind checks the count); parse("spring(170,26)") takes the defaults.
+Curve spring(double stiffness, double damping, double mass, double velocity) {
+    return Curve::spring({.stiffness = stiffness, .damping = damping, .mass = mass, .velocity = velocity});
+}
+Curve spring_duration(double duration, double bounce, double velocity) {
+    return Curve::spring_duration(duration, bounce, velocity);
+}
 
 }  // namespace
 
@@ -39,7 +48,11 @@ EMSCRIPTEN_BINDINGS(grape_curve) {
         .function("name", &name)
         .function("kind", &kind)
         .function("equals", &equals)
-        .class_function("parse", guarded<&parse>);
+        .function("settlingTime", &settling_time)
+        .class_function("parse", guarded<&parse>)
+        .class_function("svg", guarded<&svg>)
+        .class_function("spring", guarded<&spring>)
+        .class_function("springDuration", guarded<&spring_duration>);
     function("parseCurve", guarded<&parse>);
     function("ease", guarded<&ease>);
     function("curveNames", &names);

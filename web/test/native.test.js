@@ -101,7 +101,7 @@ test('native and wasm agree', async (t) => {
 
   await t.test('every named easing at nine times', () => {
     const names = [...g.curveNames(), 'back-out(2.5)', 'elastic-in(1.2,0.4)', 'cubic-bezier(0.25,0.1,0.25,1)',
-      'steps(4,jump-end)', 'monotone(0,0,0.5,0.8,1,1)', 'ease-in-out'];
+      'steps(4,jump-end)', 'monotone(0,0,0.5,0.8,1,1)', 'ease-in-out', 'svg(M0,0 C0.2,0 0.3,1 1,1)', 'spring(170,26)'];
     let identical = 0;
     let total = 0;
     for (const name of names) {

@@ -1,0 +1,1 @@
+grape_bench(curve grape::curve grape::anim)
