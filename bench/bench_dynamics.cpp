@@ -150,6 +150,9 @@ void run_chains(int rounds) {
     all.push_back({"grape rk4 + projection", [](std::size_t n) {
                        return grape_chain(n, {.drift = {.method = DriftControl::projection}}, rk4_substeps_for(n));
                    }});
+    all.push_back({"grape rattle, automatic sub-steps", [](std::size_t n) {
+                       return grape_chain(n, {.integrator = Integrator::rattle, .substeps = {.automatic = true}}, 1);
+                   }});
     all.push_back({"box2d 2.4 (8/3 iterations)", box2d24_chain});
 #if GRAPE_BENCH_BOX2D3
     const std::string v3 = std::string("box2d ") + bench::box2d3_version() + " (4 sub-steps)";

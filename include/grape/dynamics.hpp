@@ -100,6 +100,13 @@ enum class Integrator {
     rk4,                  ///< classical Runge–Kutta, order 4, 4 evaluations
     velocity_verlet,      ///< Verlet with a predicted velocity for a(q, v), order 2, 2 evaluations
     rk45,                 ///< Dormand–Prince 5(4), adaptive sub-steps with error control
+    /// RATTLE (ParticleSystem): velocity Verlet whose positions are held on C = 0 (Newton,
+    /// along the constraint gradients at the step's start) and velocities on Ċ = 0 at the
+    /// end of every step. Symplectic and time-reversible with velocity-independent forces,
+    /// order 2, one force evaluation and one factorization of J W Jᵀ per step (reused by
+    /// the next step); DriftDef's method does not apply. A Stepper or Bead (no
+    /// constraints) runs it as velocity_verlet.
+    rattle,
 };
 
 /// The integrator's name in snake_case ("velocity_verlet").
@@ -107,6 +114,8 @@ std::string_view to_string(Integrator integrator) noexcept;
 /// The integrator named `name` (as to_string gives it, or the short forms "symplectic" and
 /// "verlet"); throws grape::Error naming the unknown value.
 Integrator integrator_from_string(std::string_view name);
+/// Every integrator, in declaration order (for menus and name lists).
+std::span<const Integrator> all_integrators() noexcept;
 /// The formal order of accuracy (rk45: 5 at a fixed step).
 int order(Integrator integrator) noexcept;
 
@@ -198,6 +207,8 @@ enum class DriftControl {
 std::string_view to_string(DriftControl drift) noexcept;
 /// The drift control named `name`; throws grape::Error naming the unknown value.
 DriftControl drift_control_from_string(std::string_view name);
+/// Every drift control, in declaration order (for menus and name lists).
+std::span<const DriftControl> all_drift_controls() noexcept;
 
 /// Drift-control settings.
 struct DriftDef {
@@ -227,12 +238,26 @@ struct SolverDef {
     int cg_max_iterations = 0;     ///< conjugate gradient: 0 means 4 × rows
 };
 
+/// How step(dt) divides dt into sub-steps.
+struct SubstepDef {
+    /// False: one integrator step per step(dt). True: equal sub-steps, re-chosen after each,
+    /// so that ω·h ≤ omega_h, where ω bounds the stiffest mode from the latest constraint
+    /// forces (tension of distance and anchor rods, by Gershgorin: ω² ≤ max over particles
+    /// of w·Σ 2|λ| over its rods) and spring stiffnesses.
+    bool automatic = false;
+    /// rad per sub-step, > 0: velocity Verlet and RATTLE are stable up to ω·h = 2, RK4 up to 2.8,
+    /// and the bound ω is at or above the true one, so 1 leaves a factor of 2 at least.
+    double omega_h = 1.0;
+    int max = 64;          ///< sub-steps per step() at most, ≥ 1
+};
+
 /// A particle system's settings, for designated initializers.
 struct ParticleSystemDef {
     Integrator integrator = Integrator::rk4;  ///< see Integrator
     DriftDef drift{};                           ///< see DriftDef
     SolverDef solver{};                         ///< see SolverDef
     Rk45Def rk45{};                             ///< used when integrator is rk45
+    SubstepDef substeps{};                      ///< see SubstepDef
 };
 
 /// Outcome of the last constraint solve(s).
@@ -250,7 +275,7 @@ std::string_view to_string(SolveStatus status) noexcept;
 struct StepReport {
     SolveStatus status = SolveStatus::ok;  ///< worst status over the step's solves
     int evaluations = 0;                   ///< constraint solves inside the integrator
-    int substeps = 0;                      ///< integrator sub-steps (rk45)
+    int substeps = 0;                      ///< integrator sub-steps (rk45, or SubstepDef::automatic)
     int rejected = 0;                      ///< rk45 rejected sub-steps
     int projection_iterations = 0;         ///< Newton iterations of the position projection
     int cg_iterations = 0;                 ///< conjugate-gradient iterations, summed
@@ -399,6 +424,9 @@ public:
     std::vector<ConstraintRow> constraint_rows() const;
     /// The largest residual over all constraints (zeros when there are none).
     ConstraintResidual max_residual() const;
+    /// The bound ω on the stiffest mode that SubstepDef::automatic uses, rad/s, from the
+    /// constraint forces of the last evaluation (0 before the first).
+    double stiffest_mode() const noexcept;
     /// Evaluates the constrained accelerations at the current state without stepping
     /// (fills forces() and constraint_forces(); Baumgarte gains are the last step's);
     /// returns the solve status.
@@ -424,6 +452,7 @@ private:
     std::uint32_t checked(ParticleId id, std::string_view where) const;
     ConstraintId push_constraint(const ConstraintRecord& record);
     void apply_forces(double t, std::span<const Vec2> x, std::span<const Vec2> v) noexcept;
+    StepReport single_step(double dt);
 
     ParticleSystemDef def_{};
     double time_ = 0.0;
@@ -440,7 +469,7 @@ private:
     Stepper stepper_{};
     std::unique_ptr<detail::SolverWorkspace> solver_{};
     detail::SolverWorkspace& evaluated_rows() const;  // rows evaluated at the current state
-    void refuse_degenerate_rows();                     // throws for a violated row with ∇C = 0
+    void refuse_degenerate_rows(bool evaluated);       // throws for a violated row with ∇C = 0
     static_assert(sizeof(Vec2) == 2 * sizeof(double), "positions are viewed as 2n doubles");
 };
 

@@ -1,6 +1,7 @@
 // ParticleSystem: particles, force generators, constraints and the step.
 #include "witkin.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -38,8 +39,13 @@ std::string_view to_string(DriftControl drift) noexcept {
     return "unknown";
 }
 
+std::span<const DriftControl> all_drift_controls() noexcept {
+    static constexpr DriftControl all[] = {DriftControl::none, DriftControl::baumgarte, DriftControl::projection};
+    return all;
+}
+
 DriftControl drift_control_from_string(std::string_view name) {
-    for (DriftControl d : {DriftControl::none, DriftControl::baumgarte, DriftControl::projection})
+    for (DriftControl d : all_drift_controls())
         if (name == to_string(d)) return d;
     throw Error("drift control: unknown name '" + std::string(name) + "' (expected none, baumgarte or projection)");
 }
@@ -63,6 +69,10 @@ ParticleSystem::ParticleSystem(ParticleSystemDef def)
     validate(def.drift);
     if (!(def.solver.cg_tolerance > 0.0) || !std::isfinite(def.solver.cg_tolerance))
         throw Error("SolverDef: cg_tolerance must be positive and finite (got " + number_text(def.solver.cg_tolerance) + ")");
+    if (!(def.substeps.omega_h > 0.0) || !std::isfinite(def.substeps.omega_h))
+        throw Error("SubstepDef: omega_h must be positive and finite (got " + number_text(def.substeps.omega_h) + ")");
+    if (def.substeps.max < 1)
+        throw Error("SubstepDef: max must be at least 1 (got " + std::to_string(def.substeps.max) + ")");
     if (def.solver.cg_max_iterations < 0)
         throw Error("SolverDef: cg_max_iterations must be ≥ 0 (got " + std::to_string(def.solver.cg_max_iterations) + ")");
 }
@@ -111,6 +121,7 @@ void ParticleSystem::set_position(ParticleId id, Vec2 position) {
     const auto i = checked(id, "set_position");
     if (!finite(position)) throw Error("set_position: position must be finite");
     positions_[i] = position;
+    solver_->factor_current = false;
 }
 
 void ParticleSystem::set_velocity(ParticleId id, Vec2 velocity) {
@@ -268,9 +279,9 @@ bool all_finite(std::span<const Vec2> points) noexcept {
 
 }  // namespace
 
-void ParticleSystem::refuse_degenerate_rows() {
+void ParticleSystem::refuse_degenerate_rows(bool evaluated) {
     if (constraints_.empty()) return;
-    auto& s = evaluated_rows();
+    auto& s = evaluated ? *solver_ : evaluated_rows();
     for (std::size_t r = 0; r < s.rows; ++r) {
         // C = 0 with no gradient (a user constraint at rest) asks for no force: let it be.
         if (s.gradient_norm2[r] > 0.0 || s.c[r] == 0.0) continue;
@@ -285,13 +296,60 @@ void ParticleSystem::refuse_degenerate_rows() {
 
 StepReport ParticleSystem::step(double dt) {
     if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("step: dt must be positive and finite (got " + number_text(dt) + ")");
+    if (!def_.substeps.automatic) return single_step(dt);
+    // Equal sub-steps over what is left of dt, re-chosen after each from the latest forces.
+    auto& s = *solver_;
+    StepReport report;
+    double done = 0.0;
+    int taken = 0;
+    const SubstepDef& rule = def_.substeps;
+    while (done < dt) {
+        const double left = dt - done;
+        s.owner = this;  // the system may have moved since the last step
+        if (s.dirty) s.build_topology();
+        const double omega = s.stiffest_mode();
+        const double wanted = std::ceil(omega * left / rule.omega_h);
+        const int count = std::clamp(static_cast<int>(std::min(wanted, 1e9)), 1, std::max(1, rule.max - taken));
+        const bool last = count == 1;
+        const double h = last ? left : left / count;
+        const StepReport r = single_step(h);
+        ++taken;
+        report.evaluations += r.evaluations;
+        report.rejected += r.rejected;
+        report.projection_iterations += r.projection_iterations;
+        report.cg_iterations += r.cg_iterations;
+        if (static_cast<int>(r.status) > static_cast<int>(report.status)) report.status = r.status;
+        if (r.status == SolveStatus::non_finite) break;
+        done = last ? dt : done + h;
+    }
+    report.substeps = taken;
+    return report;
+}
+
+StepReport ParticleSystem::single_step(double dt) {
     auto& s = *solver_;
     s.prepare(*this, dt);
-    refuse_degenerate_rows();
+    StepReport report;
+    if (def_.integrator == Integrator::rattle) {
+        if (s.rows > 0) s.evaluate_rows(positions_, velocities_);  // the step's start, as rattle_step reads it
+        refuse_degenerate_rows(true);
+        const bool ok = s.rattle_step(time_, positions_, velocities_, dt, report.projection_iterations);
+        report.evaluations = s.evaluations;
+        report.substeps = 1;
+        report.cg_iterations = s.cg_iterations;
+        std::fill(exerted_.begin(), exerted_.end(), Vec2{});
+        if (!ok) {
+            report.status = SolveStatus::non_finite;
+            return report;
+        }
+        time_ += dt;
+        report.status = s.worst;
+        return report;
+    }
+    refuse_degenerate_rows(false);
     const std::span<double> q(reinterpret_cast<double*>(positions_.data()), 2 * positions_.size());
     const std::span<double> v(reinterpret_cast<double*>(velocities_.data()), 2 * velocities_.size());
     const StepStats stats = stepper_.step(s, time_, q, v, dt);
-    StepReport report;
     report.evaluations = s.evaluations;
     report.substeps = stats.substeps;
     report.rejected = stats.rejected;
@@ -316,6 +374,13 @@ StepReport ParticleSystem::step(double dt) {
     report.cg_iterations = s.cg_iterations;
     std::fill(exerted_.begin(), exerted_.end(), Vec2{});
     return report;
+}
+
+double ParticleSystem::stiffest_mode() const noexcept {
+    auto& s = *solver_;
+    if (s.dirty) return 0.0;
+    s.owner = const_cast<ParticleSystem*>(this);
+    return s.stiffest_mode();
 }
 
 SolveStatus ParticleSystem::evaluate(std::span<Vec2> accelerations) {
