@@ -215,4 +215,92 @@ TEST(Cloth, StripStartsWithEveryLinkAtItsLengthAndHolds) {
     expect_error([] { cloth_strip(1, 5, 0.1, 9.81); }, "cloth_strip: columns and rows must be at least 2");
 }
 
+// The grab spring on a free particle, critically damped (ζ = 1, ω = 2πf): from rest at
+// distance d it closes as d·(1 + ωt)·e^(−ωt), the closed form. RK4 at 1/2000 s is within
+// ~1e-12 of it (error ~ (ωh)⁴·d); 1e-9 of d leaves room for round-off of the exponential.
+TEST(Grab, CriticallyDampedApproachMatchesTheClosedForm) {
+    ParticleSystem system({.integrator = Integrator::rk4});
+    const ParticleId p = system.add_particle({.position = {1.0, 0.0}, .mass = 2.0});
+    const double hertz = 2.0, omega = 2.0 * pi * hertz;
+    system.grab(p, {0.0, 0.0}, {.hertz = hertz});
+    ASSERT_EQ(system.grabbed(), std::optional<ParticleId>(p));
+    const double h = 1.0 / 2000;
+    for (int i = 0; i < 1000; ++i) system.step(h);
+    const double t = system.time();
+    EXPECT_NEAR(system.position(p).x, (1.0 + omega * t) * std::exp(-omega * t), 1e-9);
+    EXPECT_EQ(system.position(p).y, 0.0);
+    system.release_grab();
+    EXPECT_FALSE(system.grabbed());
+    const Vec2 before = system.velocity(p);
+    system.step(h);
+    EXPECT_EQ(system.velocity(p), before);  // nothing pulls any more
+}
+
+// Tuned for a heavier mass M, the spring is k = M·ω² (its pull on a chain's end holds the
+// chain) while ζ stays relative to the particle's own mass; the force is capped at max_force;
+// and k is part of the stiffness bound: ω_p = √(k/m).
+TEST(Grab, TunedMassCapAndStiffness) {
+    ParticleSystem system;
+    const ParticleId p = system.add_particle({.position = {3.0, 4.0}});
+    const double omega = 2.0 * pi * 5.0;
+    system.grab(p, {0.0, 0.0}, {.hertz = 5.0, .damping_ratio = 0.0, .mass = 100.0});
+    std::vector<Vec2> a(1);
+    system.evaluate(a);
+    EXPECT_NEAR(a[0].x, -100.0 * omega * omega * 3.0, 1e-9 * 100.0 * omega * omega * 3.0);
+    EXPECT_NEAR(system.stiffest_mode(), std::sqrt(100.0) * omega, 1e-12 * std::sqrt(100.0) * omega);
+    EXPECT_NEAR(system.potential_energy(), 0.5 * 100.0 * omega * omega * 25.0, 1e-9 * 100.0 * omega * omega * 25.0);
+    system.grab(p, {0.0, 0.0}, {.hertz = 5.0, .mass = 100.0, .max_force = 2.0});
+    system.evaluate(a);
+    EXPECT_NEAR(length(a[0]), 2.0, 1e-15);  // mass 1: |a| = |F| = the cap
+    EXPECT_NEAR(a[0].x / a[0].y, 0.75, 1e-15);  // still towards the target
+}
+
+// A grabbed chain keeps its links at round-off (the pull is a force; the constraints decide
+// how the rest follows). Undamped, the grab is a conservative spring: on a grabbed pendulum
+// bob (spring and rod together) RATTLE at 60 Hz keeps the energy within its O(h²) swing,
+// which does not grow: the worst over 60 s stays within 1.2× the worst over the first 6 s.
+TEST(Grab, GrabbedChainKeepsItsLinksAndUndampedEnergyIsBounded) {
+    auto system = chain(20, 0.1, 9.81, chain_def(), 0.0);
+    const ParticleId end{20};
+    system.grab(end, system.position(end) + Vec2{0.3, -0.2}, {.hertz = 1.0, .mass = 20.0});
+    double worst = 0.0;
+    for (int frame = 0; frame < 600; ++frame) {
+        system.step(1.0 / 60);
+        worst = std::max(worst, chain_link_error(system, 0.1));
+    }
+    EXPECT_LT(worst, 1e-12);
+
+    auto energy_error = [](double seconds) {
+        auto bob = simple_pendulum(1.0, pi / 4, 9.81, {.integrator = Integrator::rattle, .substeps = {.automatic = true}});
+        bob.grab(ParticleId{0}, {0.5, 1.0}, {.hertz = 1.0, .damping_ratio = 0.0});
+        const double e0 = bob.energy();
+        double most = 0.0;
+        for (int frame = 0; frame < static_cast<int>(seconds * 60); ++frame) {
+            bob.step(1.0 / 60);
+            most = std::max(most, std::abs(bob.energy() - e0));
+        }
+        return most / std::abs(e0);
+    };
+    const double first = energy_error(6.0), long_run = energy_error(60.0);
+    EXPECT_LT(first, 1e-2);
+    EXPECT_LT(long_run, 1.2 * first);
+    std::cout << "[ info ] grabbed bob: energy within " << first << " (6 s), " << long_run << " (60 s)\n";
+}
+
+TEST(Grab, PickingAndErrors) {
+    auto system = chain(3, 1.0, 9.81, chain_def(), pi / 2);  // particles at x = 0 (pinned), 1, 2, 3
+    EXPECT_EQ(system.nearest_particle({1.9, 0.2}, 0.5), std::optional<ParticleId>(ParticleId{2}));
+    EXPECT_FALSE(system.nearest_particle({0.0, 0.0}, 0.5));  // only the pin is near: skipped
+    EXPECT_FALSE(system.nearest_particle({5.0, 0.0}, 0.5));
+    expect_error([&] { system.grab(ParticleId{0}, {0, 0}); }, "grab: particle 0 is pinned");
+    expect_error([&] { system.grab(ParticleId{9}, {0, 0}); }, "grab: particle 9 does not exist");
+    expect_error([&] { system.grab(ParticleId{1}, {NAN, 0}); }, "grab: target must be finite");
+    expect_error([&] { system.grab(ParticleId{1}, {0, 0}, {.hertz = 0}); }, "GrabDef: hertz must be positive");
+    expect_error([&] { system.grab(ParticleId{1}, {0, 0}, {.damping_ratio = -1}); }, "GrabDef: damping_ratio must be");
+    expect_error([&] { system.grab(ParticleId{1}, {0, 0}, {.max_force = 0}); }, "GrabDef: max_force must be positive");
+    expect_error([&] { system.move_grab({INFINITY, 0}); }, "move_grab: target must be finite");
+    system.move_grab({1, 1});  // nothing grabbed: nothing happens
+    EXPECT_FALSE(system.grabbed());
+}
+
 }  // namespace

@@ -312,6 +312,19 @@ using ForceFunction = std::function<void(const ForceContext&)>;
 /// A generator's potential energy at the given positions (world units of energy).
 using PotentialFunction = std::function<double(std::span<const Vec2> positions)>;
 
+/// A grab spring (the hand of a mouse, as Box2D's samples make a mouse joint once): on one
+/// particle F = k·(target − x) − c·v, scaled down to max_force when longer.
+struct GrabDef {
+    double hertz = 5.0;          ///< f > 0: k = m·(2πf)² for the mass m below
+    /// ζ ≥ 0: c = 2ζ·√(k·mₚ) for the grabbed particle's own mass mₚ (1: it is critically
+    /// damped on the spring, whatever mass the spring is tuned for)
+    double damping_ratio = 1.0;
+    /// The mass m the spring is tuned for, ≥ 0 (0: the grabbed particle's own). A hand that
+    /// should hold a whole chain takes the chain's mass: its weight then hardly stretches it.
+    double mass = 0.0;
+    double max_force = std::numeric_limits<double>::infinity();  ///< N, > 0 (Box2D: a multiple of m·g)
+};
+
 /// What a user constraint writes for the current positions and velocities of its particles.
 struct UserConstraintOutput {
     double value = 0.0;         ///< C
@@ -373,6 +386,20 @@ public:
     void add_spring(ParticleId a, ParticleId b, const SpringDef& def);
     /// A user force, with an optional potential counted in energy(). Throws if `force` is empty.
     void add_force(ForceFunction force, PotentialFunction potential = {});
+
+    // -- the grab spring (one at a time, applied after the generators) --
+    /// Grabs particle `id` with a spring to `target` (replacing any grab). Its potential
+    /// ½k|target − x|² counts in energy() and its k in stiffest_mode(). Throws grape::Error
+    /// for an unknown or pinned particle, a non-finite target or a bad GrabDef.
+    void grab(ParticleId id, Vec2 target, const GrabDef& def = {});
+    /// Moves the grab's target (nothing happens when nothing is grabbed). Throws if not finite.
+    void move_grab(Vec2 target);
+    /// Lets go.
+    void release_grab() noexcept;
+    /// The grabbed particle, if any.
+    std::optional<ParticleId> grabbed() const noexcept;
+    /// The particle nearest to `point` within `radius` (pinned particles skipped): what a click grabs.
+    std::optional<ParticleId> nearest_particle(Vec2 point, double radius) const noexcept;
 
     // -- constraints --
     /// |xa − xb| = length (C = ½(|d|² − L²)). Throws for unknown ids, a == b, length ≤ 0, or
@@ -438,6 +465,7 @@ private:
     struct Drag { double k; };
     struct Spring { std::uint32_t a, b; SpringDef def; };
     struct UserForce { ForceFunction force; PotentialFunction potential; };
+    struct Grab { std::uint32_t particle; Vec2 target; double k, c, max_force; };
     enum class GeneratorKind : std::uint8_t { gravity, drag, spring, user };
     struct Generator { GeneratorKind kind; std::uint32_t index; };
     enum class ConstraintKind : std::uint8_t { distance, anchor, fixed_point, curve, user };
@@ -463,6 +491,7 @@ private:
     std::vector<Drag> drags_{};
     std::vector<Spring> springs_{};
     std::vector<UserForce> user_forces_{};
+    std::optional<Grab> grab_{};
     std::vector<ConstraintRecord> constraints_{};
     std::vector<ImplicitCurve> curves_{};
     std::vector<UserConstraint> users_{};

@@ -267,6 +267,13 @@ void ParticleSystem::apply_forces(double t, std::span<const Vec2> x, std::span<c
             break;
         }
     }
+    if (grab_) {
+        const Grab& g = *grab_;
+        Vec2 force = g.k * (g.target - x[g.particle]) - g.c * v[g.particle];
+        const double size = length(force);
+        if (size > g.max_force) force = force * (g.max_force / size);
+        forces_[g.particle] += force;
+    }
 }
 
 namespace {
@@ -413,6 +420,7 @@ double ParticleSystem::potential_energy() const {
     }
     for (const UserForce& u : user_forces_)
         if (u.potential) e += u.potential(positions_);
+    if (grab_) e += 0.5 * grab_->k * length_squared(grab_->target - positions_[grab_->particle]);
     return e;
 }
 

@@ -144,7 +144,7 @@ double SolverWorkspace::stiffest_mode() noexcept {
     // Gershgorin on W·K, K the stiffness of the constraint forces (λ times the Hessian of
     // C = ½(|d|² − L²): ±λ·I blocks, row sum 2|λ| for a rod between two particles, |λ|
     // for a rod to an anchor) and of the springs (k along the spring plus the tension
-    // |T|/len across it, row sum ≤ 2(k + |T|/len)).
+    // |T|/len across it, row sum ≤ 2(k + |T|/len); the grab spring's k).
     const ParticleSystem& s = *owner;
     std::vector<double>& sum = stiffness_sum;
     sum.assign(s.size(), 0.0);  // no allocation once sized
@@ -173,6 +173,7 @@ double SolverWorkspace::stiffest_mode() noexcept {
         sum[spring.a] += 2.0 * (k + across);
         sum[spring.b] += 2.0 * (k + across);
     }
+    if (s.grab_) sum[s.grab_->particle] += s.grab_->k;  // a spring to a fixed point: k·I
     double omega2 = 0.0;
     for (std::size_t p = 0; p < sum.size(); ++p) omega2 = std::max(omega2, s.inverse_masses_[p] * sum[p]);
     return std::sqrt(omega2);
