@@ -41,10 +41,9 @@ void SolverWorkspace::each_block(Visit visit) const {
 
 bool SolverWorkspace::rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v, double h, int& iterations) {
     // The rows were evaluated at (x₀, v₀) by the caller (which refuses degenerate ones).
-    ParticleSystem& s = *owner;
-    const auto& w = s.inverse_masses_;
-    auto& f = s.forces_;
-    auto& fc = s.constraint_forces_;
+    const auto& w = view.inverse_masses;
+    auto& f = forces;
+    auto& fc = constraint_forces;
     const std::size_t n = x.size();
     x_start.assign(x.begin(), x.end());
     v_start.assign(v.begin(), v.end());
@@ -53,7 +52,7 @@ bool SolverWorkspace::rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v
     // Kick and drift with a first guess of the multipliers at x₀: the previous step's SHAKE
     // multipliers when its factor is still current (they are forces, and change by O(h)
     // per step, as Witkin's do within one), else Witkin's.
-    s.apply_forces(t, x, v);
+    view.apply_forces(view.system, t, x, v, f);
     std::fill(fc.begin(), fc.end(), Vec2{});
     if (rows > 0) {
         jacobian_start.assign(jacobian.begin(), jacobian.end());
@@ -78,7 +77,7 @@ bool SolverWorkspace::rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v
 
     if (rows > 0) {
         // SHAKE: Newton on C(x₁) = 0, x₁ moving along W G₀ᵀ (and v½ with it, by 1/h).
-        const DriftDef& drift = s.def_.drift;
+        const DriftDef& drift = *view.drift;
         const double tolerance = std::max(drift.projection_tolerance, 8.0 * std::numeric_limits<double>::epsilon() * scale);
         const double inverse_h = 1.0 / h;
         const double to_force = 2.0 / (h * h);  // a correction W G₀ᵀδ is δ·2/h² of multiplier
@@ -115,7 +114,7 @@ bool SolverWorkspace::rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v
         }
     }
     // Kick with f₁, then project v₁ onto G₁v = 0 with G₁WG₁ᵀ factored once.
-    s.apply_forces(t + h, x, v);
+    view.apply_forces(view.system, t + h, x, v, f);
     bool ok = true;  // finite x and v here, with a finite μ (solve_factored's guarantee), stay finite
     for (std::size_t p = 0; p < n; ++p) {
         v[p] += (0.5 * h * w[p]) * f[p];
@@ -145,37 +144,36 @@ double SolverWorkspace::stiffest_mode() noexcept {
     // C = ½(|d|² − L²): ±λ·I blocks, row sum 2|λ| for a rod between two particles, |λ|
     // for a rod to an anchor) and of the springs (k along the spring plus the tension
     // |T|/len across it, row sum ≤ 2(k + |T|/len); the grab spring's k).
-    const ParticleSystem& s = *owner;
     std::vector<double>& sum = stiffness_sum;
-    sum.assign(s.size(), 0.0);  // no allocation once sized
+    sum.assign(view.particles, 0.0);  // no allocation once sized
     if (have_witkin_lambda) {
         std::uint32_t row = 0;
-        for (const auto& r : s.constraints_) {
+        for (const auto& r : view.constraints) {
             const double l = std::abs(witkin_lambda[row]);
             switch (r.kind) {
-            case ParticleSystem::ConstraintKind::distance:
+            case ConstraintKind::distance:
                 sum[r.a] += 2.0 * l;
                 sum[r.b] += 2.0 * l;
                 break;
-            case ParticleSystem::ConstraintKind::anchor: sum[r.a] += l; break;
-            case ParticleSystem::ConstraintKind::fixed_point: ++row; break;  // constant gradient: no stiffness
-            case ParticleSystem::ConstraintKind::curve:
-            case ParticleSystem::ConstraintKind::user: break;  // their Hessians are not known here
+            case ConstraintKind::anchor: sum[r.a] += l; break;
+            case ConstraintKind::fixed_point: ++row; break;  // constant gradient: no stiffness
+            case ConstraintKind::curve:
+            case ConstraintKind::user: break;  // their Hessians are not known here
             }
             ++row;
         }
     }
-    for (const auto& spring : s.springs_) {
-        const Vec2 d = s.positions_[spring.b] - s.positions_[spring.a];
+    for (const auto& spring : view.springs) {
+        const Vec2 d = view.positions[spring.b] - view.positions[spring.a];
         const double len = length(d);
         const double k = spring.def.stiffness;
         const double across = len > 0.0 ? std::abs(k * (len - spring.def.rest_length)) / len : 0.0;
         sum[spring.a] += 2.0 * (k + across);
         sum[spring.b] += 2.0 * (k + across);
     }
-    if (s.grab_) sum[s.grab_->particle] += s.grab_->k;  // a spring to a fixed point: k·I
+    if (view.grab) sum[view.grab->particle] += view.grab->k;  // a spring to a fixed point: k·I
     double omega2 = 0.0;
-    for (std::size_t p = 0; p < sum.size(); ++p) omega2 = std::max(omega2, s.inverse_masses_[p] * sum[p]);
+    for (std::size_t p = 0; p < sum.size(); ++p) omega2 = std::max(omega2, view.inverse_masses[p] * sum[p]);
     return std::sqrt(omega2);
 }
 

@@ -21,10 +21,14 @@ std::span<Vec2> as_vec2(std::span<double> values) noexcept {
 }
 }  // namespace
 
-void SolverWorkspace::prepare(ParticleSystem& system, double dt) {
-    owner = &system;
+void SolverWorkspace::look_at(const SystemView& system) {
+    view = system;
     if (dirty) build_topology();
-    const DriftDef& drift = system.def_.drift;
+}
+
+void SolverWorkspace::prepare(const SystemView& system, double dt) {
+    look_at(system);
+    const DriftDef& drift = *view.drift;
     if (drift.method == DriftControl::baumgarte) {
         if (drift.stiffness) {
             ks = *drift.stiffness;
@@ -43,28 +47,27 @@ void SolverWorkspace::prepare(ParticleSystem& system, double dt) {
 }
 
 void SolverWorkspace::build_topology() {
-    const ParticleSystem& s = *owner;
     row_constraint.clear();
     row_begin.assign(1, 0);
     block_particle.clear();
-    for (std::uint32_t k = 0; k < s.constraints_.size(); ++k) {
-        const auto& r = s.constraints_[k];
+    for (std::uint32_t k = 0; k < view.constraints.size(); ++k) {
+        const auto& r = view.constraints[k];
         auto add_row = [&](std::initializer_list<std::uint32_t> particles) {
             row_constraint.push_back(k);
             for (auto p : particles) block_particle.push_back(p);
             row_begin.push_back(static_cast<std::uint32_t>(block_particle.size()));
         };
         switch (r.kind) {
-        case ParticleSystem::ConstraintKind::distance: add_row({r.a, r.b}); break;
-        case ParticleSystem::ConstraintKind::anchor:
-        case ParticleSystem::ConstraintKind::curve: add_row({r.a}); break;
-        case ParticleSystem::ConstraintKind::fixed_point:
+        case ConstraintKind::distance: add_row({r.a, r.b}); break;
+        case ConstraintKind::anchor:
+        case ConstraintKind::curve: add_row({r.a}); break;
+        case ConstraintKind::fixed_point:
             add_row({r.a});
             add_row({r.a});
             break;
-        case ParticleSystem::ConstraintKind::user: {
+        case ConstraintKind::user: {
             row_constraint.push_back(k);
-            for (ParticleId p : s.users_[r.extra].particles) block_particle.push_back(p.index);
+            for (ParticleId p : view.users[r.extra].particles) block_particle.push_back(p.index);
             row_begin.push_back(static_cast<std::uint32_t>(block_particle.size()));
             break;
         }
@@ -85,10 +88,10 @@ void SolverWorkspace::build_topology() {
     std::vector<std::uint32_t> block_row(blocks);
     for (std::uint32_t r = 0; r < rows; ++r)
         for (std::uint32_t b = row_begin[r]; b < row_begin[r + 1]; ++b) block_row[b] = r;
-    std::vector<std::vector<std::uint32_t>> blocks_of(s.size());
+    std::vector<std::vector<std::uint32_t>> blocks_of(view.particles);
     for (std::uint32_t b = 0; b < blocks; ++b) blocks_of[block_particle[b]].push_back(b);
 
-    const SolverDef& solver = s.def_.solver;
+    const SolverDef& solver = *view.solver;
     // Envelope of the lower triangle: the first column each row couples to.
     first.resize(rows);
     for (std::uint32_t r = 0; r < rows; ++r) first[r] = r;
@@ -161,13 +164,12 @@ void SolverWorkspace::build_topology() {
 void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec2> v) {
     // The built-in kinds write Ċ and |∇C|² with their row; only user rows take the general
     // pass over their blocks at the end.
-    const ParticleSystem& s = *owner;
     std::uint32_t row = 0;
     bool any_user = false;
-    for (const auto& r : s.constraints_) {
+    for (const auto& r : view.constraints) {
         const std::uint32_t b = row_begin[row];
         switch (r.kind) {
-        case ParticleSystem::ConstraintKind::distance: {
+        case ConstraintKind::distance: {
             const Vec2 d = x[r.b] - x[r.a];
             const Vec2 w = v[r.b] - v[r.a];
             c[row] = 0.5 * (dot(d, d) - r.length * r.length);
@@ -178,7 +180,7 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             gradient_norm2[row] = 2.0 * dot(d, d);
             break;
         }
-        case ParticleSystem::ConstraintKind::anchor: {
+        case ConstraintKind::anchor: {
             const Vec2 d = x[r.a] - r.point;
             c[row] = 0.5 * (dot(d, d) - r.length * r.length);
             jacobian[b] = d;
@@ -187,7 +189,7 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             gradient_norm2[row] = dot(d, d);
             break;
         }
-        case ParticleSystem::ConstraintKind::fixed_point:
+        case ConstraintKind::fixed_point:
             c[row] = x[r.a].x - r.point.x;
             jacobian[b] = {1.0, 0.0};
             jdot_v[row] = 0.0;
@@ -200,8 +202,8 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             c_dot[row] = v[r.a].y;
             gradient_norm2[row] = 1.0;
             break;
-        case ParticleSystem::ConstraintKind::curve: {
-            const CurveSample sample = s.curves_[r.extra](x[r.a]);
+        case ConstraintKind::curve: {
+            const CurveSample sample = view.curves[r.extra](x[r.a]);
             const Vec2 u = v[r.a];
             c[row] = sample.value;
             jacobian[b] = sample.gradient;
@@ -210,8 +212,8 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             gradient_norm2[row] = length_squared(sample.gradient);
             break;
         }
-        case ParticleSystem::ConstraintKind::user: {
-            const auto& user = s.users_[r.extra];
+        case ConstraintKind::user: {
+            const auto& user = view.users[r.extra];
             const std::size_t k = user.particles.size();
             user_x.resize(k);
             user_v.resize(k);
@@ -232,7 +234,7 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
     }
     if (!any_user) return;
     for (std::uint32_t r = 0; r < rows; ++r) {
-        if (s.constraints_[row_constraint[r]].kind != ParticleSystem::ConstraintKind::user) continue;
+        if (view.constraints[row_constraint[r]].kind != ConstraintKind::user) continue;
         double cd = 0.0, g2 = 0.0;
         for (std::uint32_t b = row_begin[r]; b < row_begin[r + 1]; ++b) {
             cd += dot(jacobian[b], v[block_particle[b]]);
@@ -245,12 +247,11 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
 
 double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const Vec2> v) {
     // Rods, anchors and fixed points in one light pass; any other kind takes evaluate_rows.
-    const ParticleSystem& s = *owner;
     std::uint32_t row = 0;
     double worst2 = 0.0;  // max C²/|∇C|²
-    for (const auto& r : s.constraints_) {
+    for (const auto& r : view.constraints) {
         switch (r.kind) {
-        case ParticleSystem::ConstraintKind::distance: {
+        case ConstraintKind::distance: {
             const Vec2 d = x[r.b] - x[r.a];
             const double d2 = dot(d, d);
             const double value = 0.5 * (d2 - r.length * r.length);
@@ -260,7 +261,7 @@ double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const
             worst2 = std::max(worst2, value * value / (2.0 * d2));
             break;
         }
-        case ParticleSystem::ConstraintKind::anchor: {
+        case ConstraintKind::anchor: {
             const Vec2 d = x[r.a] - r.point;
             const double d2 = dot(d, d);
             const double value = 0.5 * (d2 - r.length * r.length);
@@ -270,7 +271,7 @@ double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const
             worst2 = std::max(worst2, value * value / d2);
             break;
         }
-        case ParticleSystem::ConstraintKind::fixed_point:
+        case ConstraintKind::fixed_point:
             c[row] = x[r.a].x - r.point.x;
             rhs(row) = -c[row];
             ++row;
@@ -278,8 +279,8 @@ double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const
             rhs(row) = -c[row];
             worst2 = std::max({worst2, c[row - 1] * c[row - 1], c[row] * c[row]});
             break;
-        case ParticleSystem::ConstraintKind::curve:
-        case ParticleSystem::ConstraintKind::user:
+        case ConstraintKind::curve:
+        case ConstraintKind::user:
             evaluate_rows(x, v);
             for (std::uint32_t k = 0; k < rows; ++k) rhs(k) = -c[k];
             return worst_distance();
@@ -291,7 +292,7 @@ double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const
 }
 
 void SolverWorkspace::assemble() {
-    const auto& w = owner->inverse_masses_;
+    const auto& w = view.inverse_masses;
     double* values = skyline ? sky_matrix.data() : sparse_matrix.valuePtr();
     const std::size_t count = skyline ? sky_matrix.size() : static_cast<std::size_t>(sparse_matrix.nonZeros());
     std::fill(values, values + count, 0.0);
@@ -346,7 +347,7 @@ void SolverWorkspace::solve_skyline() noexcept {
 
 SolveStatus SolverWorkspace::solve_skyline_singular() {
     const auto m = static_cast<Eigen::Index>(rows);
-    const SolverDef& def = owner->def_.solver;
+    const SolverDef& def = *view.solver;
     if (rows <= 256) {
         // Redundant rows: the minimum-norm least-squares multipliers.
         Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, m);
@@ -444,7 +445,7 @@ void SolverWorkspace::solve_tridiagonal() noexcept {
 }
 
 void SolverWorkspace::factorize() {
-    const SolverDef& def = owner->def_.solver;
+    const SolverDef& def = *view.solver;
     factor_current = false;
     if (skyline && rows == 1) {
         factor = sky_matrix[0] > 0.0 ? Factor::ok : Factor::singular;
@@ -471,7 +472,7 @@ SolveStatus SolverWorkspace::solve() {
 }
 
 SolveStatus SolverWorkspace::solve_factored() {
-    const SolverDef& def = owner->def_.solver;
+    const SolverDef& def = *view.solver;
     SolveStatus status = SolveStatus::ok;
     if (skyline && rows == 1) {  // one row (a bead on a curve, a pendulum): a division
         const double a = sky_matrix[0];
@@ -509,17 +510,16 @@ void SolverWorkspace::note(SolveStatus status) noexcept {
     if (static_cast<int>(status) > static_cast<int>(worst)) worst = status;
 }
 
-std::size_t SolverWorkspace::size() const noexcept { return 2 * owner->size(); }
+std::size_t SolverWorkspace::size() const noexcept { return 2 * view.particles; }
 
 void SolverWorkspace::acceleration(double t, std::span<const double> q, std::span<const double> v,
                                    std::span<double> a) noexcept {
-    ParticleSystem& s = *owner;
     const auto x = as_vec2(q);
     const auto u = as_vec2(v);
-    s.apply_forces(t, x, u);
-    auto& f = s.forces_;
-    auto& fc = s.constraint_forces_;
-    const auto& w = s.inverse_masses_;
+    view.apply_forces(view.system, t, x, u, forces);
+    auto& f = forces;
+    auto& fc = constraint_forces;
+    const auto& w = view.inverse_masses;
     std::fill(fc.begin(), fc.end(), Vec2{});
     if (rows > 0) {
         evaluate_rows(x, u);
@@ -557,8 +557,8 @@ double SolverWorkspace::worst_distance() const noexcept {
 
 int SolverWorkspace::project(std::span<Vec2> x, std::span<Vec2> v) {
     if (rows == 0) return 0;
-    const auto& w = owner->inverse_masses_;
-    const DriftDef& drift = owner->def_.drift;
+    const auto& w = view.inverse_masses;
+    const DriftDef& drift = *view.drift;
     // Positions: Newton on C(x + W Jᵀ δ) = 0 (mass-weighted, so pinned particles stay put).
     // Round-off floor of the distance |C|/|∇C| at the scene's coordinate scale: no Newton
     // iteration can go below it, so reaching it ends the projection.

@@ -2,7 +2,7 @@
 // public header).
 #pragma once
 
-#include <grape/dynamics.hpp>
+#include "particle_model.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
@@ -18,7 +18,10 @@ namespace grape::detail {
 // system for the integrators. Rows: one per scalar constraint (a fixed point has two).
 // Blocks: one per (row, particle) with the 2-vector ∂C_row/∂x_particle.
 struct SolverWorkspace final : SecondOrderSystem {
-    ParticleSystem* owner = nullptr;
+    // The system as this step sees it (set by prepare() or view_of() callers each time).
+    SystemView view{};
+    // Forces and constraint forces Jᵀλ of the last evaluation, per particle.
+    std::vector<Vec2> forces, constraint_forces;
 
     // -- topology, rebuilt when particles or constraints are added --
     bool dirty = true;
@@ -78,8 +81,10 @@ struct SolverWorkspace final : SecondOrderSystem {
     int evaluations = 0;
     int cg_iterations = 0;
 
-    // Sets the owner (it may have moved), rebuilds the topology if needed, sets the gains for dt.
-    void prepare(ParticleSystem& system, double dt);
+    // Takes the step's view, rebuilds the topology if needed, sets the gains for dt.
+    void prepare(const SystemView& system, double dt);
+    // Takes a view for a diagnostic (no gains, no statistics reset).
+    void look_at(const SystemView& system);
     void build_topology();
 
     // C, J, Ċ, J̇q̇ for every row at (x, v).
