@@ -1,9 +1,15 @@
 // Dynamics benchmarks. Steps per second of one bead (parametric) and one constrained
-// particle (implicit), and 10 s of a chain of 10, 100 and 1,000 unit-mass particles 1 m
-// apart, released horizontally from a pin, against the same chain in Box2D 2.4 (small
-// circles joined by revolute joints at the previous body's centre, default 8 velocity and
-// 3 position iterations, 60 Hz). Each chain run reports its speed (frames of 1/60 s per
-// second) and its worst link-length error over the run; a summary prints the ratios.
+// particle (implicit) (Google Benchmark), then 10 s of a chain of 10, 100 and 1,000
+// unit-mass particles 1 m apart, released horizontally from a pin, against the same chain
+// in Box2D 2.4 (small circles joined by revolute joints at the previous body's centre,
+// default 8 velocity and 3 position iterations, 60 Hz) and, built with
+// -DGRAPE_BOX2D3_DIR=<source tree>, Box2D v3 (point masses joined by rigid distance joints,
+// its soft step with 4 sub-steps). The chains run round-robin, `--rounds R` (default 5)
+// fresh runs of each contender at each size; each row gives the median speed (frames of
+// 1/60 s per CPU second), its min–max, the worst link-length error over every run and the
+// ratio to the last peer.
+//
+//   bench_dynamics [--rounds R] [--benchmark_filter=...]   (--rounds 0: no chains)
 #include <grape/dynamics.hpp>
 
 #include <seed_dynamics.hpp>
@@ -11,11 +17,19 @@
 #include <benchmark/benchmark.h>
 #include <box2d/box2d.h>
 
+#if GRAPE_BENCH_BOX2D3
+#include "bench_dynamics_box2d3.hpp"
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -52,110 +66,135 @@ void BM_particle_implicit_projection(benchmark::State& state) { particle_implici
 BENCHMARK(BM_particle_implicit_baumgarte);
 BENCHMARK(BM_particle_implicit_projection);
 
-// Sub-steps per 1/60 s frame for explicit RK4 to stay stable: the chain's fastest mode
+// ---- chains: contenders round-robin, a fresh chain per run ----
+
+double thread_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+struct ChainRun {
+    double seconds = 0.0;     // thread CPU time of the steps only
+    double link_error = 0.0;  // worst over the run, m
+};
+
+// Sub-steps per 1/60 s frame that explicit RK4 needs on the old path: the chain's fastest mode
 // grows like √(n·g/L) (≈ 99 rad/s at n = 1000); at 1/60 s the 1000-link chain blows up after
 // ~7 s, at 1/120 s it holds its links at round-off for the whole run.
-int substeps_for(std::int64_t links) { return links >= 1000 ? 2 : 1; }
+int rk4_substeps_for(std::size_t links) { return links >= 1000 ? 2 : 1; }
 
-void BM_grape_chain(benchmark::State& state) {
-    const auto links = static_cast<std::size_t>(state.range(0));
-    const int substeps = substeps_for(state.range(0));
-    double worst = 0.0;
-    for (auto _ : state) {
-        state.PauseTiming();
-        auto system = scenes::chain(links, link, g, {.drift = {.method = DriftControl::projection}});
-        worst = 0.0;
-        state.ResumeTiming();
-        for (int f = 0; f < frames; ++f) {
-            for (int s = 0; s < substeps; ++s) system.step(frame / substeps);
-            worst = std::max(worst, scenes::chain_link_error(system, link));
-        }
+ChainRun grape_chain(std::size_t links, const ParticleSystemDef& def, int substeps) {
+    auto system = scenes::chain(links, link, g, def);
+    ChainRun run;
+    for (int f = 0; f < frames; ++f) {
+        const double start = thread_seconds();
+        for (int s = 0; s < substeps; ++s) system.step(frame / substeps);
+        run.seconds += thread_seconds() - start;
+        run.link_error = std::max(run.link_error, scenes::chain_link_error(system, link));
     }
-    state.counters["frames/s"] = benchmark::Counter(static_cast<double>(frames * state.iterations()), benchmark::Counter::kIsRate);
-    state.counters["link_error"] = worst;
-    state.counters["substeps"] = substeps;
+    return run;
 }
-BENCHMARK(BM_grape_chain)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 
-void BM_box2d_chain(benchmark::State& state) {
-    const int links = static_cast<int>(state.range(0));
-    double worst = 0.0;
-    for (auto _ : state) {
-        state.PauseTiming();
-        b2World world(b2Vec2(0.0f, static_cast<float>(-g)));
-        b2BodyDef ground_def;
-        b2Body* previous = world.CreateBody(&ground_def);
-        std::vector<b2Body*> bodies{previous};
-        const float radius = 0.05f;
-        b2CircleShape circle;
-        circle.m_radius = radius;
-        b2FixtureDef fixture;
-        fixture.shape = &circle;
-        fixture.density = 1.0f / (b2_pi * radius * radius);  // mass 1 like the particles
-        fixture.filter.groupIndex = -1;                       // links do not collide: joints only
-        for (int k = 1; k <= links; ++k) {
-            b2BodyDef def;
-            def.type = b2_dynamicBody;
-            def.position.Set(static_cast<float>(k * link), 0.0f);
-            b2Body* body = world.CreateBody(&def);
-            body->CreateFixture(&fixture);
-            b2RevoluteJointDef joint;
-            joint.Initialize(previous, body, previous->GetPosition());
-            world.CreateJoint(&joint);
-            bodies.push_back(body);
-            previous = body;
-        }
-        worst = 0.0;
-        state.ResumeTiming();
-        for (int f = 0; f < frames; ++f) {
-            world.Step(static_cast<float>(frame), 8, 3);
-            for (int k = 1; k <= links; ++k) {
-                const b2Vec2 d = bodies[k]->GetPosition() - bodies[k - 1]->GetPosition();
-                worst = std::max(worst, std::abs(static_cast<double>(d.Length()) - link));
-            }
+ChainRun box2d24_chain(std::size_t links) {
+    b2World world(b2Vec2(0.0f, static_cast<float>(-g)));
+    b2BodyDef ground_def;
+    b2Body* previous = world.CreateBody(&ground_def);
+    std::vector<b2Body*> bodies{previous};
+    const float radius = 0.05f;
+    b2CircleShape circle;
+    circle.m_radius = radius;
+    b2FixtureDef fixture;
+    fixture.shape = &circle;
+    fixture.density = 1.0f / (b2_pi * radius * radius);  // mass 1 like the particles
+    fixture.filter.groupIndex = -1;                       // links do not collide: joints only
+    for (std::size_t k = 1; k <= links; ++k) {
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(static_cast<float>(static_cast<double>(k) * link), 0.0f);
+        b2Body* body = world.CreateBody(&def);
+        body->CreateFixture(&fixture);
+        b2RevoluteJointDef joint;
+        joint.Initialize(previous, body, previous->GetPosition());
+        world.CreateJoint(&joint);
+        bodies.push_back(body);
+        previous = body;
+    }
+    ChainRun run;
+    for (int f = 0; f < frames; ++f) {
+        const double start = thread_seconds();
+        world.Step(static_cast<float>(frame), 8, 3);
+        run.seconds += thread_seconds() - start;
+        for (std::size_t k = 1; k <= links; ++k) {
+            const b2Vec2 d = bodies[k]->GetPosition() - bodies[k - 1]->GetPosition();
+            run.link_error = std::max(run.link_error, std::abs(static_cast<double>(d.Length()) - link));
         }
     }
-    state.counters["frames/s"] = benchmark::Counter(static_cast<double>(frames * state.iterations()), benchmark::Counter::kIsRate);
-    state.counters["link_error"] = worst;
+    return run;
 }
-BENCHMARK(BM_box2d_chain)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 
-// Prints the runs as usual and keeps the medians for the summary.
-class Summary : public benchmark::ConsoleReporter {
-public:
-    std::map<std::string, std::map<std::string, double>> medians;
-    void ReportRuns(const std::vector<Run>& runs) override {
-        for (const Run& run : runs) {
-            if (run.aggregate_name != "median") continue;
-            auto& m = medians[run.run_name.str()];
-            for (const auto& [name, counter] : run.counters) m[name] = counter.value;
-        }
-        ConsoleReporter::ReportRuns(runs);
-    }
+struct Contender {
+    std::string name;
+    std::function<ChainRun(std::size_t links)> run;
+    std::map<std::size_t, std::vector<ChainRun>> runs{};
 };
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+void run_chains(int rounds) {
+    constexpr std::size_t sizes[] = {10, 100, 1000};
+    std::vector<Contender> all;
+    all.push_back({"grape rk4 + projection", [](std::size_t n) {
+                       return grape_chain(n, {.drift = {.method = DriftControl::projection}}, rk4_substeps_for(n));
+                   }});
+    all.push_back({"grape rattle, automatic sub-steps", [](std::size_t n) {
+                       return grape_chain(n, {.integrator = Integrator::rattle, .substeps = {.automatic = true}}, 1);
+                   }});
+    all.push_back({"box2d 2.4 (8/3 iterations)", box2d24_chain});
+#if GRAPE_BENCH_BOX2D3
+    const std::string v3 = std::string("box2d ") + bench::box2d3_version() + " (4 sub-steps)";
+    all.push_back({v3, [](std::size_t n) {
+                       const auto r = bench::box2d3_chain(n, link, g, frame, frames, 4);
+                       return ChainRun{r.seconds, r.link_error};
+                   }});
+#endif
+    for (int r = 0; r < rounds; ++r)
+        for (std::size_t n : sizes)
+            for (auto& c : all) c.runs[n].push_back(c.run(n));
+    const Contender& peer = all.back();
+    std::printf("\nChains, 10 s at 60 Hz from horizontal, %d rounds round-robin (CPU time of the steps):\n", rounds);
+    std::printf("%6s  %-34s %12s %21s %13s %10s\n", "links", "contender", "frames/s", "min-max", "worst err m",
+                ("/ " + peer.name.substr(0, 9)).c_str());
+    for (std::size_t n : sizes) {
+        std::vector<double> peer_rates;
+        for (const auto& run : peer.runs.at(n)) peer_rates.push_back(frames / run.seconds);
+        const double peer_median = median(peer_rates);
+        for (const auto& c : all) {
+            std::vector<double> rates;
+            double worst = 0.0;
+            for (const auto& run : c.runs.at(n)) {
+                rates.push_back(frames / run.seconds);
+                worst = std::max(worst, run.link_error);
+            }
+            const auto [lo, hi] = std::minmax_element(rates.begin(), rates.end());
+            std::printf("%6zu  %-34s %12.0f %10.0f-%-10.0f %13.3g %10.2f\n", n, c.name.c_str(), median(rates), *lo, *hi,
+                        worst, median(rates) / peer_median);
+        }
+    }
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    int rounds = 5;
+    for (int i = 1; i + 1 < argc; ++i)
+        if (std::strcmp(argv[i], "--rounds") == 0) rounds = std::max(0, std::atoi(argv[i + 1]));
     benchmark::Initialize(&argc, argv);
-    Summary summary;
-    benchmark::RunSpecifiedBenchmarks(&summary);
-    std::printf("\nChains, 10 s at 60 Hz (medians): grape = RK4 + projection, Box2D = 8/3 iterations\n");
-    std::printf("%8s %14s %14s %10s %14s %14s %12s\n", "links", "grape frames/s", "box2d frames/s", "speed x",
-                "grape error m", "box2d error m", "error ratio");
-    for (int links : {10, 100, 1000}) {
-        auto find = [&](const std::string& prefix) {
-            return std::find_if(summary.medians.begin(), summary.medians.end(),
-                                [&](const auto& m) { return m.first.rfind(prefix, 0) == 0; });
-        };
-        const auto a = find("BM_grape_chain/" + std::to_string(links) + "/");
-        const auto b = find("BM_box2d_chain/" + std::to_string(links) + "/");
-        if (a == summary.medians.end() || b == summary.medians.end()) continue;
-        const double fa = a->second["frames/s"], fb = b->second["frames/s"];
-        const double ea = a->second["link_error"], eb = b->second["link_error"];
-        std::printf("%8d %14.0f %14.0f %10.2f %14.3g %14.3g %12.3g\n", links, fa, fb, fa / fb, ea, eb,
-                    eb / std::max(ea, 1e-300));
-    }
+    benchmark::RunSpecifiedBenchmarks();
+    if (rounds > 0) run_chains(rounds);
     benchmark::Shutdown();
     return 0;
 }

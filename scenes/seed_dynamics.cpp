@@ -3,7 +3,9 @@
 #include <grape/error.hpp>
 
 #include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 namespace grape::scenes {
 
@@ -147,14 +149,40 @@ ParticleSystem double_pendulum(double length1, double length2, double g, const P
     return system;
 }
 
-ParticleSystem chain(std::size_t links, double link_length, double g, const ParticleSystemDef& def) {
+ParticleSystemDef chain_def() { return {.integrator = Integrator::rattle, .substeps = {.automatic = true}}; }
+
+ParticleSystem chain(std::size_t links, double link_length, double g, const ParticleSystemDef& def, double release_angle) {
     ParticleSystem system(def);
+    // Exactly along +x for the horizontal release (cos(π/2) is 6e-17, not 0).
+    const Vec2 direction = release_angle == pi / 2 ? Vec2{1.0, 0.0} : Vec2{std::sin(release_angle), std::cos(release_angle)};
     ParticleId previous = system.add_particle({.position = {0.0, 0.0}, .mass = std::numeric_limits<double>::infinity()});
     for (std::size_t k = 1; k <= links; ++k) {
-        const ParticleId next = system.add_particle({.position = {static_cast<double>(k) * link_length, 0.0}});
+        const ParticleId next = system.add_particle({.position = direction * (static_cast<double>(k) * link_length)});
         system.add_distance(previous, next, link_length);
         previous = next;
     }
+    system.add_gravity({0.0, g});
+    return system;
+}
+
+ParticleSystem cloth_strip(int columns, int rows, double spacing, double g, const ParticleSystemDef& def, double release_angle) {
+    if (columns < 2 || rows < 2)
+        throw Error("cloth_strip: columns and rows must be at least 2 (got " + std::to_string(columns) + " × " +
+                    std::to_string(rows) + ")");
+    ParticleSystem system(def);
+    std::vector<ParticleId> ids;
+    const double x0 = -0.5 * spacing * (columns - 1);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < columns; ++c)
+            ids.push_back(system.add_particle({.position = {x0 + (c + r * std::sin(release_angle)) * spacing,
+                                                            r * std::cos(release_angle) * spacing},
+                                               .mass = r == 0 ? std::numeric_limits<double>::infinity() : 1.0}));
+    auto at = [&](int c, int r) { return ids[static_cast<std::size_t>(r * columns + c)]; };
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < columns; ++c) {
+            if (c + 1 < columns && r > 0) system.add_distance(at(c, r), at(c + 1, r), spacing);
+            if (r + 1 < rows) system.add_distance(at(c, r), at(c, r + 1), spacing);
+        }
     system.add_gravity({0.0, g});
     return system;
 }

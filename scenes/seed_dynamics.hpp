@@ -104,10 +104,24 @@ ParticleSystem simple_pendulum(double length, double theta0, double g, const Par
 /// (L1 + L2, 0)), from rest: rod 1 an anchor constraint, rod 2 a distance constraint.
 ParticleSystem double_pendulum(double length1, double length2, double g, const ParticleSystemDef& def);
 
+/// The catalogue chain's settings: RATTLE (links held at round-off every step) with
+/// sub-steps chosen from the chain's stiffest mode, so a chain of any length runs at any
+/// frame rate as given, with no sub-step count to pick.
+ParticleSystemDef chain_def();
+
 /// A chain of `links` unit-mass particles, `link_length` apart, hanging from a pinned particle
-/// at the origin and starting horizontal (along +x): particle 0 is the pin, link k joins
+/// at the origin, straight and at rest, `release_angle` radians from the downward vertical
+/// (π/2, the default: horizontal along +x; 0: hanging): particle 0 is the pin, link k joins
 /// particles k−1 and k.
-ParticleSystem chain(std::size_t links, double link_length, double g, const ParticleSystemDef& def);
+ParticleSystem chain(std::size_t links, double link_length, double g, const ParticleSystemDef& def = chain_def(),
+                     double release_angle = pi / 2);
+
+/// A strip of cloth: columns × rows unit masses `spacing` apart, the top row pinned, held by
+/// distance constraints along the rows (below the top) and the columns, released sheared by
+/// `release_angle` radians (every link keeps its length) so it starts swinging; centred on
+/// x = 0, rows going down (+y). Particle (c, r) is number r·columns + c.
+ParticleSystem cloth_strip(int columns, int rows, double spacing, double g, const ParticleSystemDef& def = chain_def(),
+                           double release_angle = 0.5);
 
 /// The largest | |x_k − x_{k−1}| − L | over a chain's links.
 double chain_link_error(const ParticleSystem& chain, double link_length) noexcept;

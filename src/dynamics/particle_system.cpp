@@ -1,6 +1,8 @@
-// ParticleSystem: particles, force generators, constraints and the step.
-#include "witkin.hpp"
+// ParticleSystem: particles, force generators, constraints and the step. About 500 lines:
+// the validation of every add_* is most of it, and it reads best beside the records it checks.
+#include "particle_state.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -9,6 +11,14 @@ namespace grape {
 
 namespace {
 
+using detail::ConstraintKind;
+using detail::ConstraintRecord;
+using detail::Generator;
+using detail::GeneratorKind;
+using detail::Gravity;
+using detail::Grab;
+using detail::Spring;
+using detail::UserForce;
 using detail::number_text;
 
 bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
@@ -38,8 +48,13 @@ std::string_view to_string(DriftControl drift) noexcept {
     return "unknown";
 }
 
+std::span<const DriftControl> all_drift_controls() noexcept {
+    static constexpr DriftControl all[] = {DriftControl::none, DriftControl::baumgarte, DriftControl::projection};
+    return all;
+}
+
 DriftControl drift_control_from_string(std::string_view name) {
-    for (DriftControl d : {DriftControl::none, DriftControl::baumgarte, DriftControl::projection})
+    for (DriftControl d : all_drift_controls())
         if (name == to_string(d)) return d;
     throw Error("drift control: unknown name '" + std::string(name) + "' (expected none, baumgarte or projection)");
 }
@@ -58,16 +73,31 @@ ImplicitCurve::ImplicitCurve(std::function<CurveSample(Vec2)> evaluate) : evalua
     if (!evaluate_) throw Error("ImplicitCurve: evaluate must be a callable (got an empty function)");
 }
 
-ParticleSystem::ParticleSystem(ParticleSystemDef def)
-    : def_(def), stepper_(def.integrator, def.rk45), solver_(std::make_unique<detail::SolverWorkspace>()) {
+ParticleSystem::ParticleSystem(ParticleSystemDef def) : state_(std::make_unique<detail::ParticleState>()) {
+    state_->def = def;
+    state_->stepper = Stepper(def.integrator, def.rk45);
     validate(def.drift);
     if (!(def.solver.cg_tolerance > 0.0) || !std::isfinite(def.solver.cg_tolerance))
         throw Error("SolverDef: cg_tolerance must be positive and finite (got " + number_text(def.solver.cg_tolerance) + ")");
+    if (!(def.substeps.omega_h > 0.0) || !std::isfinite(def.substeps.omega_h))
+        throw Error("SubstepDef: omega_h must be positive and finite (got " + number_text(def.substeps.omega_h) + ")");
+    if (def.substeps.max < 1)
+        throw Error("SubstepDef: max must be at least 1 (got " + std::to_string(def.substeps.max) + ")");
     if (def.solver.cg_max_iterations < 0)
         throw Error("SolverDef: cg_max_iterations must be ≥ 0 (got " + std::to_string(def.solver.cg_max_iterations) + ")");
 }
 
 ParticleSystem::~ParticleSystem() = default;
+
+std::size_t ParticleSystem::size() const noexcept { return state_->positions.size(); }
+std::span<const Vec2> ParticleSystem::positions() const noexcept { return state_->positions; }
+std::span<const Vec2> ParticleSystem::velocities() const noexcept { return state_->velocities; }
+std::span<const double> ParticleSystem::inverse_masses() const noexcept { return state_->inverse_masses; }
+std::span<const Vec2> ParticleSystem::forces() const noexcept { return state_->solver.forces; }
+std::span<const Vec2> ParticleSystem::constraint_forces() const noexcept { return state_->solver.constraint_forces; }
+std::size_t ParticleSystem::constraint_count() const noexcept { return state_->constraints.size(); }
+const ParticleSystemDef& ParticleSystem::def() const noexcept { return state_->def; }
+double ParticleSystem::time() const noexcept { return state_->time; }
 ParticleSystem::ParticleSystem(ParticleSystem&&) noexcept = default;
 ParticleSystem& ParticleSystem::operator=(ParticleSystem&&) noexcept = default;
 
@@ -83,58 +113,59 @@ ParticleId ParticleSystem::add_particle(const ParticleDef& def) {
         throw Error("add_particle: mass must be at least " + number_text(1.0 / std::numeric_limits<double>::max()) +
                     " (its inverse overflows; got " + number_text(def.mass) + ")");
     const bool pinned = std::isinf(def.mass);
-    positions_.push_back(def.position);
-    velocities_.push_back(pinned ? Vec2{} : def.velocity);
-    inverse_masses_.push_back(pinned ? 0.0 : 1.0 / def.mass);
-    forces_.push_back({});
-    exerted_.push_back({});
-    constraint_forces_.push_back({});
-    solver_->dirty = true;
-    return {static_cast<std::uint32_t>(positions_.size() - 1)};
+    state_->positions.push_back(def.position);
+    state_->velocities.push_back(pinned ? Vec2{} : def.velocity);
+    state_->inverse_masses.push_back(pinned ? 0.0 : 1.0 / def.mass);
+    state_->solver.forces.push_back({});
+    state_->exerted.push_back({});
+    state_->solver.constraint_forces.push_back({});
+    state_->solver.dirty = true;
+    return {static_cast<std::uint32_t>(state_->positions.size() - 1)};
 }
 
 std::uint32_t ParticleSystem::checked(ParticleId id, std::string_view where) const {
-    if (id.index >= positions_.size())
+    if (id.index >= state_->positions.size())
         throw Error(std::string(where) + ": particle " + std::to_string(id.index) + " does not exist (" +
-                    std::to_string(positions_.size()) + " particles)");
+                    std::to_string(state_->positions.size()) + " particles)");
     return id.index;
 }
 
-Vec2 ParticleSystem::position(ParticleId id) const { return positions_[checked(id, "position")]; }
-Vec2 ParticleSystem::velocity(ParticleId id) const { return velocities_[checked(id, "velocity")]; }
+Vec2 ParticleSystem::position(ParticleId id) const { return state_->positions[checked(id, "position")]; }
+Vec2 ParticleSystem::velocity(ParticleId id) const { return state_->velocities[checked(id, "velocity")]; }
 double ParticleSystem::mass(ParticleId id) const {
-    const double w = inverse_masses_[checked(id, "mass")];
+    const double w = state_->inverse_masses[checked(id, "mass")];
     return w > 0.0 ? 1.0 / w : std::numeric_limits<double>::infinity();
 }
 
 void ParticleSystem::set_position(ParticleId id, Vec2 position) {
     const auto i = checked(id, "set_position");
     if (!finite(position)) throw Error("set_position: position must be finite");
-    positions_[i] = position;
+    state_->positions[i] = position;
+    state_->solver.factor_current = false;
 }
 
 void ParticleSystem::set_velocity(ParticleId id, Vec2 velocity) {
     const auto i = checked(id, "set_velocity");
     if (!finite(velocity)) throw Error("set_velocity: velocity must be finite");
-    if (inverse_masses_[i] > 0.0) velocities_[i] = velocity;
+    if (state_->inverse_masses[i] > 0.0) state_->velocities[i] = velocity;
 }
 
 void ParticleSystem::exert_force(ParticleId id, Vec2 force) {
     const auto i = checked(id, "exert_force");
     if (!finite(force)) throw Error("exert_force: force must be finite (got " + number_text(force.x) + ", " + number_text(force.y) + ")");
-    exerted_[i] += force;
+    state_->exerted[i] += force;
 }
 
 void ParticleSystem::add_gravity(Vec2 g) {
     if (!finite(g)) throw Error("add_gravity: g must be finite (got " + number_text(g.x) + ", " + number_text(g.y) + ")");
-    generators_.push_back({GeneratorKind::gravity, static_cast<std::uint32_t>(gravities_.size())});
-    gravities_.push_back({g});
+    state_->generators.push_back({GeneratorKind::gravity, static_cast<std::uint32_t>(state_->gravities.size())});
+    state_->gravities.push_back({g});
 }
 
 void ParticleSystem::add_drag(double k) {
     if (!(k >= 0.0) || !std::isfinite(k)) throw Error("add_drag: k must be finite and ≥ 0 (got " + number_text(k) + ")");
-    generators_.push_back({GeneratorKind::drag, static_cast<std::uint32_t>(drags_.size())});
-    drags_.push_back({k});
+    state_->generators.push_back({GeneratorKind::drag, static_cast<std::uint32_t>(state_->drags.size())});
+    state_->drags.push_back({k});
 }
 
 void ParticleSystem::add_spring(ParticleId a, ParticleId b, const SpringDef& def) {
@@ -146,36 +177,38 @@ void ParticleSystem::add_spring(ParticleId a, ParticleId b, const SpringDef& def
         throw Error("add_spring: stiffness must be finite and ≥ 0 (got " + number_text(def.stiffness) + ")");
     if (!(def.damping >= 0.0) || !std::isfinite(def.damping))
         throw Error("add_spring: damping must be finite and ≥ 0 (got " + number_text(def.damping) + ")");
-    generators_.push_back({GeneratorKind::spring, static_cast<std::uint32_t>(springs_.size())});
-    springs_.push_back({ia, ib, def});
+    state_->generators.push_back({GeneratorKind::spring, static_cast<std::uint32_t>(state_->springs.size())});
+    state_->springs.push_back({ia, ib, def});
 }
 
 void ParticleSystem::add_force(ForceFunction force, PotentialFunction potential) {
     if (!force) throw Error("add_force: force must be a callable (got an empty function)");
-    generators_.push_back({GeneratorKind::user, static_cast<std::uint32_t>(user_forces_.size())});
-    user_forces_.push_back({std::move(force), std::move(potential)});
+    state_->generators.push_back({GeneratorKind::user, static_cast<std::uint32_t>(state_->user_forces.size())});
+    state_->user_forces.push_back({std::move(force), std::move(potential)});
 }
 
-ConstraintId ParticleSystem::push_constraint(const ConstraintRecord& record) {
-    constraints_.push_back(record);
-    solver_->dirty = true;
-    return {static_cast<std::uint32_t>(constraints_.size() - 1)};
+namespace {
+ConstraintId push_constraint(detail::ParticleState& state, const detail::ConstraintRecord& record) {
+    state.constraints.push_back(record);
+    state.solver.dirty = true;
+    return {static_cast<std::uint32_t>(state.constraints.size() - 1)};
 }
+}  // namespace
 
 ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b, double length) {
     const auto ia = checked(a, "add_distance"), ib = checked(b, "add_distance");
     if (ia == ib) throw Error("add_distance: a and b must be different particles (both " + std::to_string(ia) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
         throw Error("add_distance: length must be positive and finite (got " + number_text(length) + ")");
-    if (positions_[ia] == positions_[ib])
+    if (state_->positions[ia] == state_->positions[ib])
         throw Error("add_distance: particles " + std::to_string(ia) + " and " + std::to_string(ib) +
                     " are at the same point, where the rod has no direction; start them apart");
-    return push_constraint({ConstraintKind::distance, ia, ib, {}, length, 0});
+    return push_constraint(*state_, {ConstraintKind::distance, ia, ib, {}, length, 0});
 }
 
 ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b) {
     const auto ia = checked(a, "add_distance"), ib = checked(b, "add_distance");
-    return add_distance(a, b, distance(positions_[ia], positions_[ib]));
+    return add_distance(a, b, distance(state_->positions[ia], state_->positions[ib]));
 }
 
 ConstraintId ParticleSystem::add_anchor(ParticleId a, Vec2 anchor, double length) {
@@ -183,79 +216,105 @@ ConstraintId ParticleSystem::add_anchor(ParticleId a, Vec2 anchor, double length
     if (!finite(anchor)) throw Error("add_anchor: anchor must be finite (got " + number_text(anchor.x) + ", " + number_text(anchor.y) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
         throw Error("add_anchor: length must be positive and finite (got " + number_text(length) + ")");
-    if (positions_[ia] == anchor)
+    if (state_->positions[ia] == anchor)
         throw Error("add_anchor: particle " + std::to_string(ia) +
                     " sits at the anchor, where the rod has no direction; start it at a distance");
-    return push_constraint({ConstraintKind::anchor, ia, 0, anchor, length, 0});
+    return push_constraint(*state_, {ConstraintKind::anchor, ia, 0, anchor, length, 0});
 }
 
 ConstraintId ParticleSystem::add_fixed_point(ParticleId a, Vec2 point) {
     const auto ia = checked(a, "add_fixed_point");
     if (!finite(point)) throw Error("add_fixed_point: point must be finite (got " + number_text(point.x) + ", " + number_text(point.y) + ")");
-    return push_constraint({ConstraintKind::fixed_point, ia, 0, point, 0.0, 0});
+    return push_constraint(*state_, {ConstraintKind::fixed_point, ia, 0, point, 0.0, 0});
 }
 
 ConstraintId ParticleSystem::add_curve(ParticleId a, ImplicitCurve curve) {
     const auto ia = checked(a, "add_curve");
-    const CurveSample at = curve(positions_[ia]);
+    const CurveSample at = curve(state_->positions[ia]);
     if (at.gradient == Vec2{} && at.value != 0.0)
         throw Error("add_curve: the curve's gradient is zero at particle " + std::to_string(ia) +
                     " (C = " + number_text(at.value) + ", as at the centre of a circle), so its force has no direction; "
                     "start the particle elsewhere");
-    curves_.push_back(std::move(curve));
-    return push_constraint({ConstraintKind::curve, ia, 0, {}, 0.0, static_cast<std::uint32_t>(curves_.size() - 1)});
+    state_->curves.push_back(std::move(curve));
+    return push_constraint(*state_, {ConstraintKind::curve, ia, 0, {}, 0.0, static_cast<std::uint32_t>(state_->curves.size() - 1)});
 }
 
 ConstraintId ParticleSystem::add_constraint(UserConstraint constraint) {
     if (constraint.particles.empty()) throw Error("add_constraint: particles must not be empty");
     for (ParticleId p : constraint.particles) checked(p, "add_constraint");
     if (!constraint.evaluate) throw Error("add_constraint: evaluate must be a callable (got an empty function)");
-    users_.push_back(std::move(constraint));
-    return push_constraint({ConstraintKind::user, 0, 0, {}, 0.0, static_cast<std::uint32_t>(users_.size() - 1)});
+    state_->users.push_back(std::move(constraint));
+    return push_constraint(*state_, {ConstraintKind::user, 0, 0, {}, 0.0, static_cast<std::uint32_t>(state_->users.size() - 1)});
 }
 
 void ParticleSystem::set_drift(const DriftDef& drift) {
     validate(drift);
-    def_.drift = drift;
+    state_->def.drift = drift;
 }
 
 void ParticleSystem::set_integrator(Integrator integrator) {
-    def_.integrator = integrator;
-    stepper_ = Stepper(integrator, def_.rk45);
+    state_->def.integrator = integrator;
+    state_->stepper = Stepper(integrator, state_->def.rk45);
 }
 
-void ParticleSystem::apply_forces(double t, std::span<const Vec2> x, std::span<const Vec2> v) noexcept {
-    std::copy(exerted_.begin(), exerted_.end(), forces_.begin());
-    for (const Generator& g : generators_) {
+void detail::ParticleState::apply_forces(double t, std::span<const Vec2> x, std::span<const Vec2> v,
+                                        std::span<Vec2> out) const noexcept {
+    std::copy(exerted.begin(), exerted.end(), out.begin());
+    for (const Generator& g : generators) {
         switch (g.kind) {
         case GeneratorKind::gravity: {
-            const Vec2 acc = gravities_[g.index].g;
-            for (std::size_t p = 0; p < forces_.size(); ++p)
-                if (inverse_masses_[p] > 0.0) forces_[p] += acc / inverse_masses_[p];
+            const Vec2 acc = gravities[g.index].g;
+            for (std::size_t p = 0; p < out.size(); ++p)
+                if (inverse_masses[p] > 0.0) out[p] += acc / inverse_masses[p];
             break;
         }
         case GeneratorKind::drag: {
-            const double k = drags_[g.index].k;
-            for (std::size_t p = 0; p < forces_.size(); ++p) forces_[p] -= k * v[p];
+            const double k = drags[g.index].k;
+            for (std::size_t p = 0; p < out.size(); ++p) out[p] -= k * v[p];
             break;
         }
         case GeneratorKind::spring: {
-            const Spring& s = springs_[g.index];
+            const Spring& s = springs[g.index];
             const Vec2 d = x[s.b] - x[s.a];
             const double len = length(d);
             if (len > 0.0) {
                 const Vec2 n = d / len;
                 const double f = s.def.stiffness * (len - s.def.rest_length) + s.def.damping * dot(v[s.b] - v[s.a], n);
-                forces_[s.a] += f * n;
-                forces_[s.b] -= f * n;
+                out[s.a] += f * n;
+                out[s.b] -= f * n;
             }
             break;
         }
         case GeneratorKind::user:
-            user_forces_[g.index].force(ForceContext{t, x, v, inverse_masses_, forces_});
+            user_forces[g.index].force(ForceContext{t, x, v, inverse_masses, out});
             break;
         }
     }
+    if (grab) {
+        const Grab& g = *grab;
+        Vec2 force = g.k * (g.target - x[g.particle]) - g.c * v[g.particle];
+        const double size = length(force);
+        if (size > g.max_force) force = force * (g.max_force / size);
+        out[g.particle] += force;
+    }
+}
+
+detail::SystemView detail::ParticleState::view() const noexcept {
+    return {.particles = positions.size(),
+            .positions = positions,
+            .inverse_masses = inverse_masses,
+            .constraints = constraints,
+            .curves = curves,
+            .users = users,
+            .springs = springs,
+            .grab = grab ? &*grab : nullptr,
+            .solver = &def.solver,
+            .drift = &def.drift,
+            .apply_forces = [](const void* system, double t, std::span<const Vec2> x, std::span<const Vec2> v,
+                               std::span<Vec2> out) noexcept {
+                static_cast<const ParticleState*>(system)->apply_forces(t, x, v, out);
+            },
+            .system = this};
 }
 
 namespace {
@@ -268,14 +327,25 @@ bool all_finite(std::span<const Vec2> points) noexcept {
 
 }  // namespace
 
-void ParticleSystem::refuse_degenerate_rows() {
-    if (constraints_.empty()) return;
-    auto& s = evaluated_rows();
+namespace {
+// The solver workspace (scratch, not the state) with C, Ċ, J̇v and |∇C|² evaluated at the
+// current state.
+detail::SolverWorkspace& evaluated_rows(detail::ParticleState& state) {
+    auto& s = state.solver;
+    s.look_at(state.view());
+    s.evaluate_rows(state.positions, state.velocities);
+    return s;
+}
+}  // namespace
+
+void ParticleSystem::refuse_degenerate_rows(bool evaluated) {
+    if (state_->constraints.empty()) return;
+    auto& s = evaluated ? state_->solver : evaluated_rows(*state_);
     for (std::size_t r = 0; r < s.rows; ++r) {
         // C = 0 with no gradient (a user constraint at rest) asks for no force: let it be.
         if (s.gradient_norm2[r] > 0.0 || s.c[r] == 0.0) continue;
         const auto index = s.row_constraint[r];
-        const ConstraintRecord& c = constraints_[index];
+        const ConstraintRecord& c = state_->constraints[index];
         static constexpr const char* kinds[] = {"distance", "anchor", "fixed point", "curve", "user"};
         throw Error("step: constraint " + std::to_string(index) + " (" + kinds[static_cast<int>(c.kind)] +
                     ") has a zero gradient at the current positions (C = " + number_text(s.c[r]) +
@@ -285,13 +355,59 @@ void ParticleSystem::refuse_degenerate_rows() {
 
 StepReport ParticleSystem::step(double dt) {
     if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("step: dt must be positive and finite (got " + number_text(dt) + ")");
-    auto& s = *solver_;
-    s.prepare(*this, dt);
-    refuse_degenerate_rows();
-    const std::span<double> q(reinterpret_cast<double*>(positions_.data()), 2 * positions_.size());
-    const std::span<double> v(reinterpret_cast<double*>(velocities_.data()), 2 * velocities_.size());
-    const StepStats stats = stepper_.step(s, time_, q, v, dt);
+    if (!state_->def.substeps.automatic) return single_step(dt);
+    // Equal sub-steps over what is left of dt, re-chosen after each from the latest forces.
+    auto& s = state_->solver;
     StepReport report;
+    double done = 0.0;
+    int taken = 0;
+    const SubstepDef& rule = state_->def.substeps;
+    while (done < dt) {
+        const double left = dt - done;
+        s.look_at(state_->view());  // the system may have moved since the last step
+        const double omega = s.stiffest_mode();
+        const double wanted = std::ceil(omega * left / rule.omega_h);
+        const int count = std::clamp(static_cast<int>(std::min(wanted, 1e9)), 1, std::max(1, rule.max - taken));
+        const bool last = count == 1;
+        const double h = last ? left : left / count;
+        const StepReport r = single_step(h);
+        ++taken;
+        report.evaluations += r.evaluations;
+        report.rejected += r.rejected;
+        report.projection_iterations += r.projection_iterations;
+        report.cg_iterations += r.cg_iterations;
+        if (static_cast<int>(r.status) > static_cast<int>(report.status)) report.status = r.status;
+        if (r.status == SolveStatus::non_finite) break;
+        done = last ? dt : done + h;
+    }
+    report.substeps = taken;
+    return report;
+}
+
+StepReport ParticleSystem::single_step(double dt) {
+    auto& s = state_->solver;
+    s.prepare(state_->view(), dt);
+    StepReport report;
+    if (state_->def.integrator == Integrator::rattle) {
+        if (s.rows > 0) s.evaluate_rows(state_->positions, state_->velocities);  // the step's start, as rattle_step reads it
+        refuse_degenerate_rows(true);
+        const bool ok = s.rattle_step(state_->time, state_->positions, state_->velocities, dt, report.projection_iterations);
+        report.evaluations = s.evaluations;
+        report.substeps = 1;
+        report.cg_iterations = s.cg_iterations;
+        std::fill(state_->exerted.begin(), state_->exerted.end(), Vec2{});
+        if (!ok) {
+            report.status = SolveStatus::non_finite;
+            return report;
+        }
+        state_->time += dt;
+        report.status = s.worst;
+        return report;
+    }
+    refuse_degenerate_rows(false);
+    const std::span<double> q(reinterpret_cast<double*>(state_->positions.data()), 2 * state_->positions.size());
+    const std::span<double> v(reinterpret_cast<double*>(state_->velocities.data()), 2 * state_->velocities.size());
+    const StepStats stats = state_->stepper.step(s, state_->time, q, v, dt);
     report.evaluations = s.evaluations;
     report.substeps = stats.substeps;
     report.rejected = stats.rejected;
@@ -299,71 +415,72 @@ StepReport ParticleSystem::step(double dt) {
         // The stepper left q and v as they were: say so, and do not advance the clock.
         report.status = SolveStatus::non_finite;
         report.cg_iterations = s.cg_iterations;
-        std::fill(exerted_.begin(), exerted_.end(), Vec2{});
+        std::fill(state_->exerted.begin(), state_->exerted.end(), Vec2{});
         return report;
     }
-    time_ += dt;
-    if (def_.drift.method == DriftControl::projection) {
-        const std::vector<Vec2> x0 = positions_, v0 = velocities_;
-        report.projection_iterations = s.project(positions_, velocities_);
-        if (!all_finite(positions_) || !all_finite(velocities_)) {
-            positions_ = x0;
-            velocities_ = v0;
+    state_->time += dt;
+    if (state_->def.drift.method == DriftControl::projection) {
+        const std::vector<Vec2> x0 = state_->positions, v0 = state_->velocities;
+        report.projection_iterations = s.project(state_->positions, state_->velocities);
+        if (!all_finite(state_->positions) || !all_finite(state_->velocities)) {
+            state_->positions = x0;
+            state_->velocities = v0;
             s.note(SolveStatus::non_finite);
         }
     }
     report.status = s.worst;
     report.cg_iterations = s.cg_iterations;
-    std::fill(exerted_.begin(), exerted_.end(), Vec2{});
+    std::fill(state_->exerted.begin(), state_->exerted.end(), Vec2{});
     return report;
 }
 
+double ParticleSystem::stiffest_mode() const noexcept {
+    auto& s = state_->solver;
+    if (s.dirty) return 0.0;
+    s.look_at(state_->view());
+    return s.stiffest_mode();
+}
+
 SolveStatus ParticleSystem::evaluate(std::span<Vec2> accelerations) {
-    auto& s = *solver_;
-    s.prepare(*this, 0.0);
-    if (accelerations.size() < positions_.size())
+    auto& s = state_->solver;
+    s.prepare(state_->view(), 0.0);
+    if (accelerations.size() < state_->positions.size())
         throw Error("evaluate: accelerations must hold one entry per particle (got " +
-                    std::to_string(accelerations.size()) + " for " + std::to_string(positions_.size()) + ")");
-    const std::span<const double> q(reinterpret_cast<const double*>(positions_.data()), 2 * positions_.size());
-    const std::span<const double> v(reinterpret_cast<const double*>(velocities_.data()), 2 * velocities_.size());
-    s.acceleration(time_, q, v, {reinterpret_cast<double*>(accelerations.data()), 2 * positions_.size()});
+                    std::to_string(accelerations.size()) + " for " + std::to_string(state_->positions.size()) + ")");
+    const std::span<const double> q(reinterpret_cast<const double*>(state_->positions.data()), 2 * state_->positions.size());
+    const std::span<const double> v(reinterpret_cast<const double*>(state_->velocities.data()), 2 * state_->velocities.size());
+    s.acceleration(state_->time, q, v, {reinterpret_cast<double*>(accelerations.data()), 2 * state_->positions.size()});
     return s.worst;
 }
 
 double ParticleSystem::kinetic_energy() const noexcept {
     double e = 0.0;
-    for (std::size_t p = 0; p < positions_.size(); ++p)
-        if (inverse_masses_[p] > 0.0) e += 0.5 * length_squared(velocities_[p]) / inverse_masses_[p];
+    for (std::size_t p = 0; p < state_->positions.size(); ++p)
+        if (state_->inverse_masses[p] > 0.0) e += 0.5 * length_squared(state_->velocities[p]) / state_->inverse_masses[p];
     return e;
 }
 
 double ParticleSystem::potential_energy() const {
     double e = 0.0;
-    for (const Gravity& g : gravities_)
-        for (std::size_t p = 0; p < positions_.size(); ++p)
-            if (inverse_masses_[p] > 0.0) e -= dot(g.g, positions_[p]) / inverse_masses_[p];
-    for (const Spring& s : springs_) {
-        const double stretch = distance(positions_[s.a], positions_[s.b]) - s.def.rest_length;
+    for (const Gravity& g : state_->gravities)
+        for (std::size_t p = 0; p < state_->positions.size(); ++p)
+            if (state_->inverse_masses[p] > 0.0) e -= dot(g.g, state_->positions[p]) / state_->inverse_masses[p];
+    for (const Spring& s : state_->springs) {
+        const double stretch = distance(state_->positions[s.a], state_->positions[s.b]) - s.def.rest_length;
         e += 0.5 * s.def.stiffness * stretch * stretch;
     }
-    for (const UserForce& u : user_forces_)
-        if (u.potential) e += u.potential(positions_);
+    for (const UserForce& u : state_->user_forces)
+        if (u.potential) e += u.potential(state_->positions);
+    if (state_->grab) e += 0.5 * state_->grab->k * length_squared(state_->grab->target - state_->positions[state_->grab->particle]);
     return e;
 }
 
 // The solver workspace with C, Ċ, J̇v and |∇C|² evaluated at the current state. The
 // workspace is scratch; the state is not touched.
-detail::SolverWorkspace& ParticleSystem::evaluated_rows() const {
-    auto& s = *solver_;
-    s.owner = const_cast<ParticleSystem*>(this);
-    if (s.dirty) s.build_topology();
-    s.evaluate_rows(positions_, velocities_);
-    return s;
-}
 
 std::vector<ConstraintResidual> ParticleSystem::residuals() const {
-    auto& s = evaluated_rows();
-    std::vector<ConstraintResidual> out(constraints_.size());
+    auto& s = evaluated_rows(*state_);
+    std::vector<ConstraintResidual> out(state_->constraints.size());
     for (std::uint32_t r = 0; r < s.rows; ++r) {
         auto& o = out[s.row_constraint[r]];
         const double value = std::abs(s.c[r]);
@@ -377,7 +494,7 @@ std::vector<ConstraintResidual> ParticleSystem::residuals() const {
 }
 
 std::vector<ConstraintRow> ParticleSystem::constraint_rows() const {
-    auto& s = evaluated_rows();
+    auto& s = evaluated_rows(*state_);
     std::vector<ConstraintRow> out(s.rows);
     for (std::uint32_t r = 0; r < s.rows; ++r)
         out[r] = {{s.row_constraint[r]}, s.c[r], s.c_dot[r], s.jdot_v[r], std::sqrt(s.gradient_norm2[r])};

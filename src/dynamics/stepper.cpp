@@ -15,19 +15,25 @@ std::string_view to_string(Integrator integrator) noexcept {
     case Integrator::rk4: return "rk4";
     case Integrator::velocity_verlet: return "velocity_verlet";
     case Integrator::rk45: return "rk45";
+    case Integrator::rattle: return "rattle";
     }
     return "unknown";
 }
 
 Integrator integrator_from_string(std::string_view name) {
-    for (Integrator i : {Integrator::euler, Integrator::semi_implicit_euler, Integrator::midpoint,
-                         Integrator::rk4, Integrator::velocity_verlet, Integrator::rk45}) {
+    for (Integrator i : all_integrators())
         if (name == to_string(i)) return i;
-    }
     if (name == "symplectic" || name == "symplectic_euler") return Integrator::semi_implicit_euler;
     if (name == "verlet") return Integrator::velocity_verlet;
     throw Error("integrator: unknown name '" + std::string(name) +
-                "' (expected euler, symplectic, midpoint, rk4, verlet or rk45)");
+                "' (expected euler, symplectic, midpoint, rk4, verlet, rk45 or rattle)");
+}
+
+std::span<const Integrator> all_integrators() noexcept {
+    static constexpr Integrator all[] = {Integrator::euler, Integrator::semi_implicit_euler, Integrator::midpoint,
+                                         Integrator::rk4,   Integrator::velocity_verlet,     Integrator::rk45,
+                                         Integrator::rattle};
+    return all;
 }
 
 int order(Integrator integrator) noexcept {
@@ -35,7 +41,8 @@ int order(Integrator integrator) noexcept {
     case Integrator::euler:
     case Integrator::semi_implicit_euler: return 1;
     case Integrator::midpoint:
-    case Integrator::velocity_verlet: return 2;
+    case Integrator::velocity_verlet:
+    case Integrator::rattle: return 2;
     case Integrator::rk4: return 4;
     case Integrator::rk45: return 5;
     }
@@ -132,7 +139,8 @@ StepStats Stepper::step(SecondOrderSystem& system, double t, std::span<double> q
         f(t + dt, tmp, k4);
         for (std::size_t i = 0; i < N; ++i) y[i] += dt / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
         break;
-    case Integrator::velocity_verlet: {
+    case Integrator::velocity_verlet:
+    case Integrator::rattle: {  // without constraints RATTLE is velocity Verlet
         // a depends on v here (curvature terms), so the new acceleration is taken at a
         // predicted velocity v + a·dt: still second order, no longer symplectic.
         f(t, y, k1);

@@ -1,4 +1,6 @@
 // Witkin's constrained dynamics: J W Jᵀ λ = −J̇q̇ − J W Q − ks·C − kd·Ċ, force Jᵀλ.
+// About 600 lines: the row evaluation, the assembly and the three factorizations (envelope,
+// tridiagonal, sparse) share one row and block layout that would otherwise be exposed.
 #include "witkin.hpp"
 
 #include <algorithm>
@@ -21,10 +23,14 @@ std::span<Vec2> as_vec2(std::span<double> values) noexcept {
 }
 }  // namespace
 
-void SolverWorkspace::prepare(ParticleSystem& system, double dt) {
-    owner = &system;
+void SolverWorkspace::look_at(const SystemView& system) {
+    view = system;
     if (dirty) build_topology();
-    const DriftDef& drift = system.def_.drift;
+}
+
+void SolverWorkspace::prepare(const SystemView& system, double dt) {
+    look_at(system);
+    const DriftDef& drift = *view.drift;
     if (drift.method == DriftControl::baumgarte) {
         if (drift.stiffness) {
             ks = *drift.stiffness;
@@ -43,28 +49,27 @@ void SolverWorkspace::prepare(ParticleSystem& system, double dt) {
 }
 
 void SolverWorkspace::build_topology() {
-    const ParticleSystem& s = *owner;
     row_constraint.clear();
     row_begin.assign(1, 0);
     block_particle.clear();
-    for (std::uint32_t k = 0; k < s.constraints_.size(); ++k) {
-        const auto& r = s.constraints_[k];
+    for (std::uint32_t k = 0; k < view.constraints.size(); ++k) {
+        const auto& r = view.constraints[k];
         auto add_row = [&](std::initializer_list<std::uint32_t> particles) {
             row_constraint.push_back(k);
             for (auto p : particles) block_particle.push_back(p);
             row_begin.push_back(static_cast<std::uint32_t>(block_particle.size()));
         };
         switch (r.kind) {
-        case ParticleSystem::ConstraintKind::distance: add_row({r.a, r.b}); break;
-        case ParticleSystem::ConstraintKind::anchor:
-        case ParticleSystem::ConstraintKind::curve: add_row({r.a}); break;
-        case ParticleSystem::ConstraintKind::fixed_point:
+        case ConstraintKind::distance: add_row({r.a, r.b}); break;
+        case ConstraintKind::anchor:
+        case ConstraintKind::curve: add_row({r.a}); break;
+        case ConstraintKind::fixed_point:
             add_row({r.a});
             add_row({r.a});
             break;
-        case ParticleSystem::ConstraintKind::user: {
+        case ConstraintKind::user: {
             row_constraint.push_back(k);
-            for (ParticleId p : s.users_[r.extra].particles) block_particle.push_back(p.index);
+            for (ParticleId p : view.users[r.extra].particles) block_particle.push_back(p.index);
             row_begin.push_back(static_cast<std::uint32_t>(block_particle.size()));
             break;
         }
@@ -85,10 +90,10 @@ void SolverWorkspace::build_topology() {
     std::vector<std::uint32_t> block_row(blocks);
     for (std::uint32_t r = 0; r < rows; ++r)
         for (std::uint32_t b = row_begin[r]; b < row_begin[r + 1]; ++b) block_row[b] = r;
-    std::vector<std::vector<std::uint32_t>> blocks_of(s.size());
+    std::vector<std::vector<std::uint32_t>> blocks_of(view.particles);
     for (std::uint32_t b = 0; b < blocks; ++b) blocks_of[block_particle[b]].push_back(b);
 
-    const SolverDef& solver = s.def_.solver;
+    const SolverDef& solver = *view.solver;
     // Envelope of the lower triangle: the first column each row couples to.
     first.resize(rows);
     for (std::uint32_t r = 0; r < rows; ++r) first[r] = r;
@@ -107,6 +112,13 @@ void SolverWorkspace::build_topology() {
     skyline = solver.method == LinearSolver::dense ||
               (solver.method == LinearSolver::automatic &&
                (rows <= solver.dense_limit || envelope <= 16 * static_cast<std::size_t>(rows)));
+    tridiagonal = skyline && rows > 1 && solver.method != LinearSolver::dense;
+    for (std::uint32_t r = 1; r < rows && tridiagonal; ++r) tridiagonal = first[r] + 1 >= r;
+    two_block_rows = true;
+    for (std::uint32_t r = 0; r < rows && two_block_rows; ++r) two_block_rows = row_begin[r] == 2 * r && row_begin[r + 1] == 2 * r + 2;
+    factor_current = false;
+    have_witkin_lambda = false;
+    witkin_lambda.assign(rows, 0.0);
     contributions.clear();
     const auto m = static_cast<Eigen::Index>(rows);
     if (skyline) {
@@ -117,6 +129,7 @@ void SolverWorkspace::build_topology() {
         sky_factor.assign(envelope, 0.0);
         sky_work.assign(rows, 0.0);
         sky_inverse_diagonal.assign(rows, 0.0);
+        tri_multiplier.assign(rows, 0.0);
         for (std::uint32_t p = 0; p < blocks_of.size(); ++p)
             for (auto bi : blocks_of[p])
                 for (auto bj : blocks_of[p]) {
@@ -151,46 +164,58 @@ void SolverWorkspace::build_topology() {
 }
 
 void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec2> v) {
-    const ParticleSystem& s = *owner;
+    // The built-in kinds write Ċ and |∇C|² with their row; only user rows take the general
+    // pass over their blocks at the end.
     std::uint32_t row = 0;
-    for (const auto& r : s.constraints_) {
+    bool any_user = false;
+    for (const auto& r : view.constraints) {
         const std::uint32_t b = row_begin[row];
         switch (r.kind) {
-        case ParticleSystem::ConstraintKind::distance: {
+        case ConstraintKind::distance: {
             const Vec2 d = x[r.b] - x[r.a];
             const Vec2 w = v[r.b] - v[r.a];
             c[row] = 0.5 * (dot(d, d) - r.length * r.length);
             jacobian[b] = -d;
             jacobian[b + 1] = d;
             jdot_v[row] = dot(w, w);
+            c_dot[row] = dot(d, w);
+            gradient_norm2[row] = 2.0 * dot(d, d);
             break;
         }
-        case ParticleSystem::ConstraintKind::anchor: {
+        case ConstraintKind::anchor: {
             const Vec2 d = x[r.a] - r.point;
             c[row] = 0.5 * (dot(d, d) - r.length * r.length);
             jacobian[b] = d;
             jdot_v[row] = dot(v[r.a], v[r.a]);
+            c_dot[row] = dot(d, v[r.a]);
+            gradient_norm2[row] = dot(d, d);
             break;
         }
-        case ParticleSystem::ConstraintKind::fixed_point:
+        case ConstraintKind::fixed_point:
             c[row] = x[r.a].x - r.point.x;
             jacobian[b] = {1.0, 0.0};
             jdot_v[row] = 0.0;
+            c_dot[row] = v[r.a].x;
+            gradient_norm2[row] = 1.0;
             ++row;
             c[row] = x[r.a].y - r.point.y;
             jacobian[row_begin[row]] = {0.0, 1.0};
             jdot_v[row] = 0.0;
+            c_dot[row] = v[r.a].y;
+            gradient_norm2[row] = 1.0;
             break;
-        case ParticleSystem::ConstraintKind::curve: {
-            const CurveSample sample = s.curves_[r.extra](x[r.a]);
+        case ConstraintKind::curve: {
+            const CurveSample sample = view.curves[r.extra](x[r.a]);
             const Vec2 u = v[r.a];
             c[row] = sample.value;
             jacobian[b] = sample.gradient;
             jdot_v[row] = sample.hxx * u.x * u.x + 2.0 * sample.hxy * u.x * u.y + sample.hyy * u.y * u.y;
+            c_dot[row] = dot(sample.gradient, u);
+            gradient_norm2[row] = length_squared(sample.gradient);
             break;
         }
-        case ParticleSystem::ConstraintKind::user: {
-            const auto& user = s.users_[r.extra];
+        case ConstraintKind::user: {
+            const auto& user = view.users[r.extra];
             const std::size_t k = user.particles.size();
             user_x.resize(k);
             user_v.resize(k);
@@ -203,12 +228,15 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             user.evaluate(user_x, user_v, out);
             c[row] = out.value;
             jdot_v[row] = out.jdot_v;
+            any_user = true;
             break;
         }
         }
         ++row;
     }
+    if (!any_user) return;
     for (std::uint32_t r = 0; r < rows; ++r) {
+        if (view.constraints[row_constraint[r]].kind != ConstraintKind::user) continue;
         double cd = 0.0, g2 = 0.0;
         for (std::uint32_t b = row_begin[r]; b < row_begin[r + 1]; ++b) {
             cd += dot(jacobian[b], v[block_particle[b]]);
@@ -219,8 +247,54 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
     }
 }
 
+double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const Vec2> v) {
+    // Rods, anchors and fixed points in one light pass; any other kind takes evaluate_rows.
+    std::uint32_t row = 0;
+    double worst2 = 0.0;  // max C²/|∇C|²
+    for (const auto& r : view.constraints) {
+        switch (r.kind) {
+        case ConstraintKind::distance: {
+            const Vec2 d = x[r.b] - x[r.a];
+            const double d2 = dot(d, d);
+            const double value = 0.5 * (d2 - r.length * r.length);
+            c[row] = value;
+            rhs(row) = -value;
+            gradient_norm2[row] = 2.0 * d2;
+            worst2 = std::max(worst2, value * value / (2.0 * d2));
+            break;
+        }
+        case ConstraintKind::anchor: {
+            const Vec2 d = x[r.a] - r.point;
+            const double d2 = dot(d, d);
+            const double value = 0.5 * (d2 - r.length * r.length);
+            c[row] = value;
+            rhs(row) = -value;
+            gradient_norm2[row] = d2;
+            worst2 = std::max(worst2, value * value / d2);
+            break;
+        }
+        case ConstraintKind::fixed_point:
+            c[row] = x[r.a].x - r.point.x;
+            rhs(row) = -c[row];
+            ++row;
+            c[row] = x[r.a].y - r.point.y;
+            rhs(row) = -c[row];
+            worst2 = std::max({worst2, c[row - 1] * c[row - 1], c[row] * c[row]});
+            break;
+        case ConstraintKind::curve:
+        case ConstraintKind::user:
+            evaluate_rows(x, v);
+            for (std::uint32_t k = 0; k < rows; ++k) rhs(k) = -c[k];
+            return worst_distance();
+        }
+        ++row;
+    }
+    // A zero |∇C| with C ≠ 0 gave inf or NaN above: report it as worst_distance does.
+    return std::isnan(worst2) ? std::numeric_limits<double>::infinity() : std::sqrt(worst2);
+}
+
 void SolverWorkspace::assemble() {
-    const auto& w = owner->inverse_masses_;
+    const auto& w = view.inverse_masses;
     double* values = skyline ? sky_matrix.data() : sparse_matrix.valuePtr();
     const std::size_t count = skyline ? sky_matrix.size() : static_cast<std::size_t>(sparse_matrix.nonZeros());
     std::fill(values, values + count, 0.0);
@@ -275,7 +349,7 @@ void SolverWorkspace::solve_skyline() noexcept {
 
 SolveStatus SolverWorkspace::solve_skyline_singular() {
     const auto m = static_cast<Eigen::Index>(rows);
-    const SolverDef& def = owner->def_.solver;
+    const SolverDef& def = *view.solver;
     if (rows <= 256) {
         // Redundant rows: the minimum-norm least-squares multipliers.
         Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, m);
@@ -329,42 +403,101 @@ SolveStatus SolverWorkspace::solve_skyline_singular() {
     return r.squaredNorm() > target ? SolveStatus::not_converged : SolveStatus::singular;
 }
 
+bool SolverWorkspace::factor_tridiagonal() noexcept {
+    // LDLᵀ of the tridiagonal envelope: d_i = a_ii − a_{i,i−1}²/d_{i−1}, with the multipliers
+    // m_i = a_{i,i−1}/d_{i−1} (0 for a row that couples to nothing before it) and 1/d_i in
+    // their own arrays, so the solves are two branch-free recurrences. The pivot test is the
+    // Cholesky one (d_i is L_ii²).
+    const double* a = sky_matrix.data();
+    double* m = tri_multiplier.data();
+    double* inverse = sky_inverse_diagonal.data();
+    double d = a[0];
+    if (!(d > 0.0)) return false;
+    m[0] = 0.0;
+    inverse[0] = 1.0 / d;
+    for (std::size_t i = 1; i < rows; ++i) {
+        const std::size_t at = offset[i];
+        const double diagonal = a[offset[i + 1] - 1];
+        const double below = first[i] == i ? 0.0 : a[at];
+        m[i] = below * inverse[i - 1];
+        d = diagonal - m[i] * below;
+        if (!(d > singular_pivot_ratio * diagonal)) return false;
+        inverse[i] = 1.0 / d;
+    }
+    return true;
+}
+
+void SolverWorkspace::solve_tridiagonal() noexcept {
+    const double* m = tri_multiplier.data();
+    const double* inverse = sky_inverse_diagonal.data();
+    const double* b = rhs.data();
+    double* y = lambda.data();
+    double previous = b[0];
+    y[0] = previous;
+    for (std::size_t i = 1; i < rows; ++i) {  // L y = rhs (unit lower bidiagonal)
+        previous = b[i] - m[i] * previous;
+        y[i] = previous;
+    }
+    double next = y[rows - 1] * inverse[rows - 1];  // D Lᵀ λ = y
+    y[rows - 1] = next;
+    for (std::size_t i = rows - 1; i-- > 0;) {
+        next = y[i] * inverse[i] - m[i + 1] * next;
+        y[i] = next;
+    }
+}
+
+void SolverWorkspace::factorize() {
+    const SolverDef& def = *view.solver;
+    factor_current = false;
+    if (skyline && rows == 1) {
+        factor = sky_matrix[0] > 0.0 ? Factor::ok : Factor::singular;
+    } else if (skyline) {
+        factor = (tridiagonal ? factor_tridiagonal() : factor_skyline()) ? Factor::ok : Factor::singular;
+    } else if (def.method == LinearSolver::conjugate_gradient) {
+        factor = Factor::iterative;
+    } else {
+        sparse_ldlt.factorize(sparse_matrix);
+        bool ok = sparse_ldlt.info() == Eigen::Success;
+        if (ok) {
+            // The same test on the pivots D_ii against the diagonal (vectorD() returns a copy).
+            const Eigen::VectorXd d = sparse_ldlt.vectorD();
+            const Eigen::VectorXd a = sparse_matrix.diagonal();
+            ok = (d.array() > singular_pivot_ratio * a.array()).all();
+        }
+        factor = ok ? Factor::ok : Factor::singular;
+    }
+}
+
 SolveStatus SolverWorkspace::solve() {
-    const SolverDef& def = owner->def_.solver;
+    factorize();
+    return solve_factored();
+}
+
+SolveStatus SolverWorkspace::solve_factored() {
+    const SolverDef& def = *view.solver;
     SolveStatus status = SolveStatus::ok;
     if (skyline && rows == 1) {  // one row (a bead on a curve, a pendulum): a division
         const double a = sky_matrix[0];
-        lambda(0) = a > 0.0 ? rhs(0) / a : 0.0;
-        if (!(a > 0.0)) status = SolveStatus::singular;
+        lambda(0) = factor == Factor::ok ? rhs(0) / a : 0.0;
+        if (factor != Factor::ok) status = SolveStatus::singular;
     } else if (skyline) {
-        if (factor_skyline()) solve_skyline();
-        else status = solve_skyline_singular();
+        if (factor == Factor::ok) {
+            if (tridiagonal) solve_tridiagonal();
+            else solve_skyline();
+        } else {
+            status = solve_skyline_singular();
+        }
+    } else if (factor == Factor::ok) {
+        lambda = sparse_ldlt.solve(rhs);
     } else {
-        bool use_cg = def.method == LinearSolver::conjugate_gradient;
-        if (!use_cg) {
-            sparse_ldlt.factorize(sparse_matrix);
-            bool ok = sparse_ldlt.info() == Eigen::Success;
-            if (ok) {
-                // The same test on the pivots D_ii against the diagonal (vectorD() returns a copy).
-                const Eigen::VectorXd d = sparse_ldlt.vectorD();
-                const Eigen::VectorXd a = sparse_matrix.diagonal();
-                ok = (d.array() > singular_pivot_ratio * a.array()).all();
-            }
-            if (ok) {
-                lambda = sparse_ldlt.solve(rhs);
-            } else {
-                use_cg = true;  // CG copes with a consistent semi-definite system
-                status = SolveStatus::singular;
-            }
-        }
-        if (use_cg) {
-            cg.setTolerance(def.cg_tolerance);
-            cg.setMaxIterations(def.cg_max_iterations > 0 ? def.cg_max_iterations : static_cast<int>(4 * rows));
-            cg.compute(sparse_matrix);
-            lambda = cg.solveWithGuess(rhs, lambda_previous);
-            cg_iterations += static_cast<int>(cg.iterations());
-            if (cg.info() != Eigen::Success && status == SolveStatus::ok) status = SolveStatus::not_converged;
-        }
+        // CG by choice, or because the LDLT failed (CG copes with a consistent semi-definite system).
+        if (factor == Factor::singular) status = SolveStatus::singular;
+        cg.setTolerance(def.cg_tolerance);
+        cg.setMaxIterations(def.cg_max_iterations > 0 ? def.cg_max_iterations : static_cast<int>(4 * rows));
+        cg.compute(sparse_matrix);
+        lambda = cg.solveWithGuess(rhs, lambda_previous);
+        cg_iterations += static_cast<int>(cg.iterations());
+        if (cg.info() != Eigen::Success && status == SolveStatus::ok) status = SolveStatus::not_converged;
     }
     if (!lambda.allFinite()) {
         lambda.setZero();
@@ -379,17 +512,16 @@ void SolverWorkspace::note(SolveStatus status) noexcept {
     if (static_cast<int>(status) > static_cast<int>(worst)) worst = status;
 }
 
-std::size_t SolverWorkspace::size() const noexcept { return 2 * owner->size(); }
+std::size_t SolverWorkspace::size() const noexcept { return 2 * view.particles; }
 
 void SolverWorkspace::acceleration(double t, std::span<const double> q, std::span<const double> v,
                                    std::span<double> a) noexcept {
-    ParticleSystem& s = *owner;
     const auto x = as_vec2(q);
     const auto u = as_vec2(v);
-    s.apply_forces(t, x, u);
-    auto& f = s.forces_;
-    auto& fc = s.constraint_forces_;
-    const auto& w = s.inverse_masses_;
+    view.apply_forces(view.system, t, x, u, forces);
+    auto& f = forces;
+    auto& fc = constraint_forces;
+    const auto& w = view.inverse_masses;
     std::fill(fc.begin(), fc.end(), Vec2{});
     if (rows > 0) {
         evaluate_rows(x, u);
@@ -404,6 +536,8 @@ void SolverWorkspace::acceleration(double t, std::span<const double> q, std::spa
         }
         solve();
         ++evaluations;
+        for (std::uint32_t r = 0; r < rows; ++r) witkin_lambda[r] = lambda(r);
+        have_witkin_lambda = true;
         for (std::uint32_t r = 0; r < rows; ++r)
             for (std::uint32_t b = row_begin[r]; b < row_begin[r + 1]; ++b)
                 fc[block_particle[b]] += lambda(r) * jacobian[b];
@@ -413,19 +547,20 @@ void SolverWorkspace::acceleration(double t, std::span<const double> q, std::spa
     for (std::size_t p = 0; p < f.size(); ++p) acc[p] = w[p] * f[p];
 }
 
+double SolverWorkspace::worst_distance() const noexcept {
+    double worst_d = 0.0;
+    for (std::uint32_t r = 0; r < rows; ++r) {
+        const double d = gradient_norm2[r] > 0.0 ? std::abs(c[r]) / std::sqrt(gradient_norm2[r])
+                                                 : (c[r] == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+        worst_d = std::max(worst_d, d);
+    }
+    return worst_d;
+}
+
 int SolverWorkspace::project(std::span<Vec2> x, std::span<Vec2> v) {
     if (rows == 0) return 0;
-    const auto& w = owner->inverse_masses_;
-    const DriftDef& drift = owner->def_.drift;
-    auto worst_distance = [&] {
-        double worst_d = 0.0;
-        for (std::uint32_t r = 0; r < rows; ++r) {
-            const double d = gradient_norm2[r] > 0.0 ? std::abs(c[r]) / std::sqrt(gradient_norm2[r])
-                                                     : (c[r] == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
-            worst_d = std::max(worst_d, d);
-        }
-        return worst_d;
-    };
+    const auto& w = view.inverse_masses;
+    const DriftDef& drift = *view.drift;
     // Positions: Newton on C(x + W Jᵀ δ) = 0 (mass-weighted, so pinned particles stay put).
     // Round-off floor of the distance |C|/|∇C| at the scene's coordinate scale: no Newton
     // iteration can go below it, so reaching it ends the projection.

@@ -2,7 +2,7 @@
 // public header).
 #pragma once
 
-#include <grape/dynamics.hpp>
+#include "particle_model.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
@@ -18,7 +18,10 @@ namespace grape::detail {
 // system for the integrators. Rows: one per scalar constraint (a fixed point has two).
 // Blocks: one per (row, particle) with the 2-vector ∂C_row/∂x_particle.
 struct SolverWorkspace final : SecondOrderSystem {
-    ParticleSystem* owner = nullptr;
+    // The system as this step sees it (set by prepare() or view_of() callers each time).
+    SystemView view{};
+    // Forces and constraint forces Jᵀλ of the last evaluation, per particle.
+    std::vector<Vec2> forces, constraint_forces;
 
     // -- topology, rebuilt when particles or constraints are added --
     bool dirty = true;
@@ -40,6 +43,21 @@ struct SolverWorkspace final : SecondOrderSystem {
     std::vector<std::uint32_t> first;    // per row: first stored column
     std::vector<std::size_t> offset;     // per row: index of (i, first[i]) in the arrays below
     std::vector<double> sky_matrix, sky_factor, sky_inverse_diagonal, sky_work;
+    // Every row couples only to the one before it (a chain in creation order): the envelope
+    // is tridiagonal and the factor and solves take the short loops of tridiagonal LDLᵀ.
+    bool tridiagonal = false;
+    bool two_block_rows = false;  // every row has two blocks (rods between particles)
+    template <class Visit>
+    void each_block(Visit visit) const;
+    std::vector<double> tri_multiplier;  // tridiagonal LDLᵀ: L(i, i−1)
+
+    // The factorization of the last assemble(): ok, failed (singular, the least-squares or
+    // CG fallback solves), or conjugate gradient by choice.
+    enum class Factor : std::uint8_t { ok, singular, iterative };
+    Factor factor = Factor::singular;
+    // RATTLE keeps the factor of J W Jᵀ at the positions it ended on for its next step;
+    // anything that moves particles or changes the topology makes it stale.
+    bool factor_current = false;
 
     // -- per evaluation --
     std::vector<Vec2> jacobian;  // per block
@@ -50,6 +68,12 @@ struct SolverWorkspace final : SecondOrderSystem {
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> sparse_ldlt;
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
     Eigen::VectorXd rhs, lambda, lambda_previous;
+    // Witkin multipliers of the last acceleration solve (constraint forces Jᵀλ): the
+    // stiffness estimate of SubstepDef::automatic reads them.
+    std::vector<double> witkin_lambda;
+    bool have_witkin_lambda = false;
+    // RATTLE scratch: the Jacobian at the step's start and the state before the step.
+    std::vector<Vec2> jacobian_start, x_start, v_start;
 
     // -- gains and statistics of the current step --
     double ks = 0.0, kd = 0.0;
@@ -57,20 +81,32 @@ struct SolverWorkspace final : SecondOrderSystem {
     int evaluations = 0;
     int cg_iterations = 0;
 
-    // Sets the owner (it may have moved), rebuilds the topology if needed, sets the gains for dt.
-    void prepare(ParticleSystem& system, double dt);
+    // Takes the step's view, rebuilds the topology if needed, sets the gains for dt.
+    void prepare(const SystemView& system, double dt);
+    // Takes a view for a diagnostic (no gains, no statistics reset).
+    void look_at(const SystemView& system);
     void build_topology();
 
     // C, J, Ċ, J̇q̇ for every row at (x, v).
     void evaluate_rows(std::span<const Vec2> x, std::span<const Vec2> v);
+    // C, rhs = −C and |∇C|² only (what a Newton iteration on positions needs); returns the largest
+    // |C|/|∇C|. Jacobians and rates are left as they were unless a curve or user row forces
+    // the full evaluation.
+    double evaluate_values(std::span<const Vec2> x, std::span<const Vec2> v);
     // J W Jᵀ from the current J and inverse masses.
     void assemble();
     // Skyline Cholesky of sky_matrix into sky_factor; false when a pivot is (numerically) zero.
     bool factor_skyline() noexcept;
     void solve_skyline() noexcept;                 // lambda = A⁻¹ rhs with the factor
+    bool factor_tridiagonal() noexcept;            // the same for a tridiagonal envelope
+    void solve_tridiagonal() noexcept;
     SolveStatus solve_skyline_singular();          // least squares (small) or CG (large)
-    // Solves J W Jᵀ λ = rhs into `lambda`.
+    // Solves J W Jᵀ λ = rhs into `lambda`: factorize() then solve_factored().
     SolveStatus solve();
+    // Factors the assembled J W Jᵀ (sets `factor`).
+    void factorize();
+    // Solves with the factor of the last factorize() (or the fallbacks when it failed).
+    SolveStatus solve_factored();
     void note(SolveStatus status) noexcept;
 
     // SecondOrderSystem: q = positions (2n), v = velocities (2n).
@@ -81,6 +117,16 @@ struct SolverWorkspace final : SecondOrderSystem {
     // Newton projection of positions onto C = 0, then of velocities onto Ċ = 0; returns the
     // number of Newton iterations.
     int project(std::span<Vec2> x, std::span<Vec2> v);
+
+    // One RATTLE step of h from t (src/dynamics/rattle.cpp): x, v advanced in place; false
+    // when the state left the finite range (then x, v are as before). `iterations` gets the
+    // Newton iterations of the position stage.
+    bool rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v, double h, int& iterations);
+    // The largest |C|/|∇C| over the rows evaluated last.
+    double worst_distance() const noexcept;
+    // The bound on the stiffest mode's ω (rad/s) from witkin_lambda and the springs.
+    double stiffest_mode() noexcept;
+    std::vector<double> stiffness_sum;  // per particle, scratch of stiffest_mode
 };
 
 }  // namespace grape::detail

@@ -1,0 +1,95 @@
+// grape — dynamics: integrators of second-order systems q̈ = a(t, q, q̇) behind one
+// interface (SecondOrderSystem + Stepper), usable for any model of your own, not only
+// particles. Included by <grape/dynamics.hpp>.
+#pragma once
+
+#include <grape/error.hpp>
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace grape {
+
+// ---------------------------------------------------------------------------------------
+// Integrators: one interface, state (q, q̇) and derivative (q̇, q̈)
+// ---------------------------------------------------------------------------------------
+
+/// The numerical integrators. Constraint forces are recomputed at every stage of each.
+/// With velocity-dependent accelerations (every curved constraint has one) semi-implicit
+/// Euler and velocity Verlet are not symplectic: do not expect bounded energy from them.
+enum class Integrator {
+    euler,                ///< explicit Euler, order 1, 1 evaluation
+    semi_implicit_euler,  ///< v += a·dt then q += v·dt, order 1, 1 evaluation
+    midpoint,             ///< explicit midpoint, order 2, 2 evaluations
+    rk4,                  ///< classical Runge–Kutta, order 4, 4 evaluations
+    velocity_verlet,      ///< Verlet with a predicted velocity for a(q, v), order 2, 2 evaluations
+    rk45,                 ///< Dormand–Prince 5(4), adaptive sub-steps with error control
+    /// RATTLE (ParticleSystem): velocity Verlet whose positions are held on C = 0 (Newton,
+    /// along the constraint gradients at the step's start) and velocities on Ċ = 0 at the
+    /// end of every step. Symplectic and time-reversible with velocity-independent forces,
+    /// order 2, one force evaluation and one factorization of J W Jᵀ per step (reused by
+    /// the next step); DriftDef's method does not apply. A Stepper or Bead (no
+    /// constraints) runs it as velocity_verlet.
+    rattle,
+};
+
+/// The integrator's name in snake_case ("velocity_verlet").
+std::string_view to_string(Integrator integrator) noexcept;
+/// The integrator named `name` (as to_string gives it, or the short forms "symplectic" and
+/// "verlet"); throws grape::Error naming the unknown value.
+Integrator integrator_from_string(std::string_view name);
+/// Every integrator, in declaration order (for menus and name lists).
+std::span<const Integrator> all_integrators() noexcept;
+/// The formal order of accuracy (rk45: 5 at a fixed step).
+int order(Integrator integrator) noexcept;
+
+/// Settings of the adaptive Dormand–Prince integrator.
+struct Rk45Def {
+    double tolerance = 1e-10;  ///< per sub-step error bound, relative and absolute (0: no control, fixed step)
+    double min_step = 1e-12;   ///< seconds; below it a sub-step is accepted anyway (and counted)
+    int max_substeps = 100000; ///< per step(), a guard against stiffness
+};
+
+/// A system q̈ = a(t, q, q̇) of n coordinates: the only view integrators have of a model.
+class SecondOrderSystem {
+public:
+    virtual ~SecondOrderSystem() = default;
+    /// Number of coordinates n.
+    virtual std::size_t size() const noexcept = 0;
+    /// Writes q̈ (n values) for time t, coordinates q and velocities v (n each).
+    virtual void acceleration(double t, std::span<const double> q, std::span<const double> v,
+                              std::span<double> a) noexcept = 0;
+};
+
+/// What one Stepper::step did.
+struct StepStats {
+    int evaluations = 0;  ///< calls of acceleration()
+    int substeps = 0;     ///< accepted sub-steps (1 for fixed-step integrators)
+    int rejected = 0;     ///< rk45 sub-steps rejected by error control
+    int forced = 0;       ///< rk45 sub-steps accepted at min_step despite the error
+    /// False when the state or rk45's error estimate left the finite range: the step stopped
+    /// there (rk45 at once, without rejecting sub-steps to max_substeps) and q, v are as before.
+    bool finite = true;
+};
+
+/// Advances any SecondOrderSystem by one step of the chosen integrator. Holds its scratch
+/// buffers (allocated when the system size first grows), so steps do not allocate.
+class Stepper {
+public:
+    explicit Stepper(Integrator integrator = Integrator::rk4, Rk45Def rk45 = {});
+    /// Advances (q, v) from t to t + dt in place. rk45 takes as many sub-steps as its
+    /// tolerance needs and remembers its last step size. dt must be positive.
+    StepStats step(SecondOrderSystem& system, double t, std::span<double> q, std::span<double> v, double dt);
+    Integrator integrator() const noexcept { return integrator_; }
+    const Rk45Def& rk45() const noexcept { return rk45_; }
+
+private:
+    Integrator integrator_{};
+    Rk45Def rk45_{};
+    double rk45_step_ = 0.0;  // last accepted rk45 step, 0 before the first
+    std::vector<double> buffer_{};
+};
+
+}  // namespace grape
