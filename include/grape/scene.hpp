@@ -49,6 +49,9 @@ struct SceneAnimation {
     int repeat = 0;          ///< plays after the first: 0 plays once, −1 forever
     bool yoyo = false;       ///< every other play runs backwards
     bool reversed = false;   ///< the first play runs from the path's end to its start
+    double range_start = 0.0;  ///< u where a play starts, in [0, 1] ("range": [start, end])
+    double range_end = 1.0;    ///< u where a play ends, in [0, 1] (below range_start: runs backwards)
+    double offset = 0.0;       ///< sideways distance from the path, world units, to the frame's normal side
 
     /// The AnimationDef the anim engine plays this with (curve and timing).
     AnimationDef def() const noexcept;
@@ -56,8 +59,11 @@ struct SceneAnimation {
     /// the anim module's timing model (curve(τ) going forwards, curve(1 − τ) going
     /// backwards; before the delay at its start, after its last play at its end).
     double progress(double t) const noexcept;
-    /// path.point(progress(t)).
-    Vec2 position(double t) const noexcept { return path.point(progress(t)); }
+    /// The path's u at scene time t: range_start + progress(t)·(range_end − range_start).
+    double u(double t) const noexcept;
+    /// Where it is at scene time t: path.point(u(t)), moved `offset` along the path's normal
+    /// there (offset_point).
+    Vec2 position(double t) const noexcept;
     /// Seconds until the last play ends (infinity when repeating forever).
     double end_time() const noexcept;
 };

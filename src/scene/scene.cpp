@@ -3,6 +3,7 @@
 #include <grape/scene.hpp>
 
 #include <grape/error.hpp>
+#include <grape/path_query.hpp>
 
 #include "atomic_file.hpp"
 
@@ -27,6 +28,20 @@ namespace grape {
 namespace {
 
 using namespace scene_io;
+
+// An animation's "range": [u0, u1] (the part of the path a play covers) and "offset".
+void read_range_and_offset(const json& o, const std::string& p, SceneAnimation& a) {
+    if (const auto r = o.find("range"); r != o.end()) {
+        const std::string rp = child(p, "range");
+        if (!r->is_array() || r->size() != 2) fail(rp, "expected [u0, u1] with both in [0, 1], got " + type_of(*r));
+        for (std::size_t k = 0; k < 2; ++k) {
+            const double u = number((*r)[k], child(rp, k));
+            if (!(u >= 0.0 && u <= 1.0)) fail(child(rp, k), "must be in [0, 1] (got " + number_text(u) + ")");
+            (k == 0 ? a.range_start : a.range_end) = u;
+        }
+    }
+    a.offset = number_field(o, p, "offset", 0.0);
+}
 
 Scene read_scene(const json& root) {
     object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations"});
@@ -85,7 +100,8 @@ Scene read_scene(const json& root) {
         PathReader reader{&scene.paths, &scene.warnings};
         for (std::size_t i = 0; i < v->size(); ++i) {
             const std::string p = child("/animations", i);
-            const json& o = object((*v)[i], p, {"name", "path", "curve", "duration", "delay", "repeat", "yoyo", "reversed"});
+            const json& o = object((*v)[i], p, {"name", "path", "curve", "duration", "delay", "repeat", "yoyo", "reversed",
+                                                       "range", "offset"});
             SceneAnimation a;
             a.name = name_field(o, p, nullptr);
             const json& path = required(o, p, "path");
@@ -114,6 +130,7 @@ Scene read_scene(const json& root) {
             }
             a.yoyo = bool_field(o, p, "yoyo", false);
             a.reversed = bool_field(o, p, "reversed", false);
+            read_range_and_offset(o, p, a);
             scene.animations.push_back(std::move(a));
         }
     }
@@ -155,6 +172,8 @@ ordered scene_json(const Scene& scene) {
             o["repeat"] = anim.repeat;
             o["yoyo"] = anim.yoyo;
             o["reversed"] = anim.reversed;
+            if (anim.range_start != 0.0 || anim.range_end != 1.0) o["range"] = {anim.range_start, anim.range_end};
+            if (anim.offset != 0.0) o["offset"] = anim.offset;
             a.push_back(std::move(o));
         }
         j["animations"] = std::move(a);
@@ -178,6 +197,13 @@ AnimationDef SceneAnimation::def() const noexcept {
 double SceneAnimation::progress(double t) const noexcept {
     if (!(duration > 0.0)) return curve(reversed ? 1.0 : 0.0);  // not playable: its start
     return progress_at(def(), duration, t);
+}
+
+double SceneAnimation::u(double t) const noexcept { return range_start + progress(t) * (range_end - range_start); }
+
+Vec2 SceneAnimation::position(double t) const noexcept {
+    const double at = u(t);
+    return offset == 0.0 ? path.point(at) : offset_point(path, at, offset);
 }
 
 double SceneAnimation::end_time() const noexcept { return grape::end_time(def(), duration); }
