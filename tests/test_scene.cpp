@@ -111,6 +111,20 @@ void expect_same_scene(const Scene& a, const Scene& b) {
         EXPECT_EQ(x.range_end, y.range_end);
         EXPECT_EQ(x.offset, y.offset);
     }
+    ASSERT_EQ(a.sprites.size(), b.sprites.size());
+    for (std::size_t i = 0; i < a.sprites.size(); ++i) {
+        const auto& x = a.sprites[i];
+        const auto& y = b.sprites[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.sheet_file, y.sheet_file);
+        EXPECT_EQ(x.clip, y.clip);
+        EXPECT_EQ(x.first_frame, y.first_frame);
+        EXPECT_EQ(x.last_frame, y.last_frame);
+        EXPECT_EQ(x.rate, y.rate);
+        EXPECT_EQ(x.scale, y.scale);
+        EXPECT_EQ(x.animation, y.animation);
+        EXPECT_EQ(x.at, y.at);
+    }
     ASSERT_EQ(a.simulations.size(), b.simulations.size());
     for (std::size_t i = 0; i < a.simulations.size(); ++i) {
         const auto& x = a.simulations[i];
@@ -797,6 +811,117 @@ TEST(SceneAnimation, RangeAndOffsetErrors) {
     expect_error(anim(R"("range": 0.5)"), "/animations/0/range", "expected [u0, u1]");
     expect_error(anim(R"("range": [0, 0.5, 1])"), "/animations/0/range", "expected [u0, u1]");
     expect_error(anim(R"("offset": "left")"), "/animations/0/offset", "expected a number, got a string");
+}
+
+// ------------------------------------------------------------------------------ sprites
+
+const std::filesystem::path sprite_data = std::filesystem::absolute(std::filesystem::path(__FILE__).parent_path() / "data" / "sprites");
+
+// A folder of this test's own (ctest runs tests in parallel).
+std::filesystem::path own_folder() {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     (std::string("grape_test_scene_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// A scene file in the test's folder with the sprites given (they name sheets by absolute path
+// or relative to that folder).
+Scene sprite_scene(const std::string& sprites, const std::string& extra = "") {
+    const auto file = own_folder() / "scene.json";
+    std::ofstream(file) << R"({"animations": [{"name": "walk", "path": {"kind": "linear", "start": [0, 0], "end": [100, 0]},
+        "duration": 2}])" << extra << R"(, "sprites": )" << sprites << "}";
+    return grape::load_scene_file(file);
+}
+
+std::string sheet_json() { return (sprite_data / "grape_sheet.json").string(); }
+
+TEST(SceneSprites, LoadPlayAndSaveBack) {
+    const Scene scene = sprite_scene(R"([
+        {"name": "hero", "sheet": ")" + sheet_json() + R"(", "clip": "bounce", "animation": "walk"},
+        {"sheet": ")" + sheet_json() + R"(", "frames": [4, 7], "rate": 0.5, "scale": 1.5, "at": [30, 40]},
+        {"sheet": ")" + sheet_json() + R"(", "clip": "rewind", "rate": -1, "at": [0, 0]}])");
+    ASSERT_EQ(scene.sprites.size(), 3u);
+    const grape::SceneSprite& hero = scene.sprites[0];
+    ASSERT_NE(hero.sheet, nullptr);
+    EXPECT_EQ(hero.sheet->frame_count(), 8u);
+    EXPECT_EQ(hero.clip_index, 0u);
+    // "bounce" is frames 0–3 forward, 100, 150, 50 and 200 ms (period 500 ms): the frame shown
+    // is the one the elapsed time falls in, looping. Times in the middle of frames, so no
+    // rounding can move a boundary.
+    for (const auto& [t, frame] : std::vector<std::pair<double, std::size_t>>{
+             {0.0, 0}, {0.05, 0}, {0.2, 1}, {0.275, 2}, {0.4, 3}, {0.55, 0}, {0.7, 1}, {10.375, 3}})
+        EXPECT_EQ(hero.frame_at(t), frame) << t;
+    // Frames 4–7 forward (80, 120, 60, 240 ms, period 500) at half speed: 2t seconds of game
+    // time are t of the sheet's.
+    const grape::SceneSprite& flag = scene.sprites[1];
+    EXPECT_TRUE(flag.clip.empty());
+    for (const auto& [t, frame] : std::vector<std::pair<double, std::size_t>>{
+             {0.0, 4}, {0.1, 4}, {0.3, 5}, {0.45, 6}, {0.8, 7}, {1.05, 4}, {1.3, 5}})
+        EXPECT_EQ(flag.frame_at(t), frame) << t;
+    // "rewind" plays 7, 6, 5, 4 (reverse tag); at rate −1 the player starts at the clip's end
+    // and walks back: 4, then 5 after 80 ms, ...
+    const grape::SceneSprite& back = scene.sprites[2];
+    EXPECT_EQ(back.frame_at(0.0), 4u);
+    EXPECT_EQ(back.frame_at(0.1), 5u);
+    EXPECT_THROW((void)back.frame_at(-1.0), grape::Error);
+    // The sheet's own clips are left as they were; the range is one clip more.
+    EXPECT_EQ(flag.sheet->clips().size(), hero.sheet->clips().size() + 1);
+    // Saved and read back (as text: no sheet is read).
+    const std::string text = grape::save_scene(scene);
+    const Scene back_text = grape::load_scene(text);
+    expect_same_scene(scene, back_text);
+    EXPECT_EQ(back_text.sprites[0].sheet, nullptr);
+    EXPECT_THROW((void)back_text.sprites[0].frame_at(0.0), grape::Error);
+    EXPECT_EQ(grape::save_scene(back_text), text);
+    // The sheet is found relative to the scene's folder.
+    Scene relative = grape::load_scene(R"({"sprites": [{"sheet": "grape_sheet.json", "clip": "hop", "at": [0, 0]}]})");
+    grape::load_scene_sprite_sheets(relative, sprite_data);
+    EXPECT_EQ(relative.sprites[0].clip_index, 2u);
+    EXPECT_EQ(relative.sprites[0].sheet_path, sprite_data / "grape_sheet.json");
+}
+
+TEST(SceneSprites, ErrorsNameThePointer) {
+    const std::string sheet = R"("sheet": ")" + sheet_json() + "\"";
+    const auto sprites = [](const std::string& s) {
+        return R"({"animations": [{"name": "walk", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},
+                                  {"name": "twin", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},
+                                  {"name": "twin", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1}],
+                  "sprites": [)" + s + "]}";
+    };
+    expect_error(sprites(R"({"clip": "bounce", "at": [0, 0]})"), "/sprites/0", "missing field \"sheet\"");
+    expect_error(sprites(R"({"sheet": "", "clip": "bounce", "at": [0, 0]})"), "/sprites/0/sheet", "must name a sprite-sheet JSON file");
+    expect_error(sprites("{" + sheet + R"(, "at": [0, 0]})"), "/sprites/0", "give either \"clip\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "frames": [0, 1], "at": [0, 0]})"), "/sprites/0", "give either \"clip\"");
+    expect_error(sprites("{" + sheet + R"(, "frames": [3, 1], "at": [0, 0]})"), "/sprites/0/frames/1", "the last frame comes before the first (1 < 3)");
+    expect_error(sprites("{" + sheet + R"(, "frames": [-1, 1], "at": [0, 0]})"), "/sprites/0/frames/0", "not negative");
+    expect_error(sprites("{" + sheet + R"(, "frames": 2, "at": [0, 0]})"), "/sprites/0/frames", "expected [first, last]");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce"})"), "/sprites/0", "give either \"animation\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "animation": "run"})"), "/sprites/0/animation", "no animation is named \"run\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "animation": "twin"})"), "/sprites/0/animation", "2 animations are named \"twin\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "at": [0, 0], "scale": 0})"), "/sprites/0/scale", "must be positive (got 0)");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "at": [0, 0], "rate": "fast"})"), "/sprites/0/rate", "expected a number");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "at": [0, 0], "speed": 2})"), "/sprites/0/speed", "unknown field \"speed\"");
+    expect_error(R"({"sprites": {}})", "/sprites", "expected an array, got an object");
+    // What only the sheet can tell: load_scene_file (and load_scene_sprite_sheets) read it.
+    const auto file_error = [&](const std::string& s, const std::string& pointer, const std::string& reason) {
+        try {
+            (void)sprite_scene("[" + s + "]");
+            ADD_FAILURE() << "accepted: " << s;
+        } catch (const grape::Error& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("scene: " + pointer + ": "), std::string::npos) << what;
+            EXPECT_NE(what.find(reason), std::string::npos) << what;
+        }
+    };
+    file_error("{" + sheet + R"(, "clip": "moonwalk", "at": [0, 0]})", "/sprites/0/clip", "moonwalk");
+    file_error("{" + sheet + R"(, "frames": [2, 8], "at": [0, 0]})", "/sprites/0/frames/1", "the sheet has 8 frames (0 to 7)");
+    file_error("{" + sheet + R"(, "frames": [8, 9], "at": [0, 0]})", "/sprites/0/frames/0", "the sheet has 8 frames");
+    file_error(R"({"sheet": "nowhere.json", "clip": "bounce", "at": [0, 0]})", "/sprites/0/sheet", "nowhere.json");
+    // A sheet whose own JSON is bad: its error (with its pointer) inside the sprite's.
+    const auto bad = own_folder() / "bad_sheet.json";
+    std::ofstream(bad) << R"({"frames": [], "meta": {}})";
+    file_error(R"({"sheet": "bad_sheet.json", "frames": [0, 0], "at": [0, 0]})", "/sprites/0/sheet", "sprite sheet");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "atomic_file.hpp"
 #include "progress.hpp"
+#include "render_sprites.hpp"
 
 #if GRAPE_HAS_DYNAMICS
 #include <grape/dynamics.hpp>
@@ -117,6 +118,7 @@ Bounds scene_bounds(const Scene& scene, double t_end) {
     Bounds box;
     for (const NamedPath& p : scene.paths) box.add(p.path.bounds());
     for (const SceneAnimation& a : scene.animations) box.add(a.path.bounds());
+    for (const SceneSprite& s : scene.sprites) box.add(sprite_position(scene, s, 0.0));
     if (!scene.simulations.empty()) {
         // The whole run (up to 20000 steps each) sets the box, so every frame shares one view.
         double horizon = t_end;
@@ -155,6 +157,7 @@ void draw_scene(Canvas& canvas, const Scene& scene, const Bounds& world, double 
         canvas.dot(p, 5.0, palette_color(i + 1));
         if (!a.name.empty()) canvas.text(p + Vec2{0, 0}, "  " + a.name, {.size = 11});
     }
+    draw_scene_sprites(canvas, scene, t);
     // Constraint curves are traced over the whole visible area (fit is a uniform scale and a move).
     Bounds region;
     region.add(Vec2{(0.0 - view.x0) / view.xx, (0.0 - view.y0) / view.yy});
@@ -235,6 +238,7 @@ struct RenderOptions {
     bool frames_given = false;
     double fps = 30.0;
     bool force = false;
+    bool strict = false;  // the scene's warnings are errors
 };
 
 // The work `grape render` takes on without --force (stated in --help and the README).
@@ -271,6 +275,8 @@ void run_render(const RenderOptions& o) {
     if (std::filesystem::is_directory(out, ec)) throw Error("cannot write " + o.out + ": it is a folder");
     current_activity() = "reading " + o.scene;
     const Scene scene = load_scene_file(o.scene);
+    report_scene_warnings(scene, o.scene, o.strict);
+    load_sprite_pictures(scene);
     const int frames = o.frames_given ? o.frames : 1;
     // A PNG picture is rasterized twice over (cairo's surface and the image copied out of it).
     const double raster = std::ceil(scene.view.width) * std::ceil(scene.view.height) * 4.0 * 2.0;
@@ -381,6 +387,9 @@ void register_render_command(CLI::App& app) {
                   "Render even when a PNG picture needs more than 1 GiB of raster memory (views up to 32768×32768) or "
                   "the frames look larger than the free disk space (estimated from the first frame) or the paths are "
                   "longer than 1e6 output units on the picture");
+    cmd->add_flag("--strict", options->strict,
+                  "Refuse a scene that loads with warnings (SVG path data with a syntax error, read by SVG's error "
+                  "rule) instead of printing them on stderr and rendering");
     cmd->callback([options] { run_render(*options); });
 }
 

@@ -44,7 +44,7 @@ void read_range_and_offset(const json& o, const std::string& p, SceneAnimation& 
 }
 
 Scene read_scene(const json& root) {
-    object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations"});
+    object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations", "sprites"});
     if (const auto v = root.find("grape_scene"); v != root.end()) {
         if (integer(*v, "/grape_scene") != 1) fail("/grape_scene", "unsupported format version (this reader knows 1)");
     }
@@ -138,6 +138,7 @@ Scene read_scene(const json& root) {
         if (!v->is_array()) fail("/simulations", "expected an array, got " + type_of(*v));
         for (std::size_t i = 0; i < v->size(); ++i) scene.simulations.push_back(read_simulation((*v)[i], child("/simulations", i)));
     }
+    if (const auto v = root.find("sprites"); v != root.end()) read_sprites(*v, scene);
     return scene;
 }
 
@@ -183,6 +184,7 @@ ordered scene_json(const Scene& scene) {
         for (const SceneSimulation& s : scene.simulations) a.push_back(simulation_json(s));
         j["simulations"] = std::move(a);
     }
+    if (!scene.sprites.empty()) j["sprites"] = sprites_json(scene);
     return j;
 }
 
@@ -225,7 +227,9 @@ Scene load_scene(std::string_view text) { return read_scene(parse_text(text, "sc
 Scene load_scene_file(const std::filesystem::path& file) {
     const std::string text = detail::read_file_text(file, "a scene file");
     try {
-        return load_scene(text);
+        Scene scene = load_scene(text);
+        load_scene_sprite_sheets(scene, file.parent_path());
+        return scene;
     } catch (const Error& e) {
         throw Error(file.string() + ": " + e.what());
     }

@@ -79,4 +79,8 @@ ordered path_json(const Path& path);
 SceneSimulation read_simulation(const json& j, const std::string& pointer);
 ordered simulation_json(const SceneSimulation& s);
 
+/// The scene's "sprites" (after its animations, which they may name).
+void read_sprites(const json& j, Scene& scene);
+ordered sprites_json(const Scene& scene);
+
 }  // namespace grape::scene_io
