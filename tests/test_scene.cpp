@@ -467,6 +467,17 @@ TEST(SceneErrors, NameThePointerAndTheReason) {
     expect_error(R"({"view": {"a/b~c": 1}})", "/view/a~1b~0c", "unknown field");
 }
 
+TEST(SceneErrors, AParticleInTooManyConstraints) {
+    // 16 rods to one particle load; a 17th is refused where it is (each couples with the others
+    // in the solve: 20000 of them stalled it).
+    std::string rods;
+    for (int i = 0; i < 17; ++i) rods += std::string(i ? ", " : "") + R"({"kind": "anchor", "a": 0, "point": [0, 0], "length": 5})";
+    const std::string sim = R"({"simulations": [{"particles": [{"position": [3, 4]}], "constraints": [)";
+    const std::string sixteen = rods.substr(0, rods.rfind(", {"));
+    EXPECT_EQ(grape::load_scene(sim + sixteen + "]}]}").simulations[0].constraints.size(), 16u);
+    expect_error(sim + rods + "]}]}", "/simulations/0/constraints/16", "particle 0 is in more than 16 constraints");
+}
+
 TEST(SceneErrors, Simulations) {
     const auto sim = [](const std::string& fields) {
         return R"({"simulations": [{"particles": [{"position": [0, 0]}, {"position": [1, 0]}])" +
@@ -892,6 +903,7 @@ TEST(SceneSprites, ErrorsNameThePointer) {
     expect_error(sprites(R"({"clip": "bounce", "at": [0, 0]})"), "/sprites/0", "missing field \"sheet\"");
     expect_error(sprites(R"({"sheet": "", "clip": "bounce", "at": [0, 0]})"), "/sprites/0/sheet", "must name a sprite-sheet JSON file");
     expect_error(sprites("{" + sheet + R"(, "at": [0, 0]})"), "/sprites/0", "give either \"clip\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "", "at": [0, 0]})"), "/sprites/0/clip", "must name a clip of the sheet");
     expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "frames": [0, 1], "at": [0, 0]})"), "/sprites/0", "give either \"clip\"");
     expect_error(sprites("{" + sheet + R"(, "frames": [3, 1], "at": [0, 0]})"), "/sprites/0/frames/1", "the last frame comes before the first (1 < 3)");
     expect_error(sprites("{" + sheet + R"(, "frames": [-1, 1], "at": [0, 0]})"), "/sprites/0/frames/0", "not negative");

@@ -27,6 +27,8 @@ using ordered = nlohmann::ordered_json;
 inline constexpr int max_depth = 32;
 // More simulation steps than this is a typo (or an attack), not a scene.
 inline constexpr double max_steps = 1e7;
+// Constraints on one particle (scene_simulation.cpp says why).
+inline constexpr std::size_t max_constraints_per_particle = 16;
 
 /// Throws grape::Error "scene: POINTER: WHY".
 [[noreturn]] void fail(const std::string& pointer, const std::string& why);

@@ -42,6 +42,7 @@ void read_sprites(const json& v, Scene& scene) {
         if (has_clip == has_frames) fail(p, "give either \"clip\" (a clip of the sheet) or \"frames\": [first, last]");
         if (has_clip) {
             s.clip = string_value(o["clip"], child(p, "clip"));
+            if (s.clip.empty()) fail(child(p, "clip"), "must name a clip of the sheet");
         } else {
             const json& f = o["frames"];
             const std::string fp = child(p, "frames");
