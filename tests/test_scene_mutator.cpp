@@ -11,7 +11,7 @@
 //
 // The rounds are drawn from a fixed seed and bounded in number and time; GRAPE_MUTATOR_SEED
 // and GRAPE_MUTATOR_ROUNDS (environment) explore further. With GRAPE_MUTANT_DIR set, the
-// scenes that loaded are written there (for `grape render` to draw, see tests/CMakeLists.txt).
+// scenes that loaded (the first 200) are written there, e.g. for `grape render` to draw.
 #include <grape/config.hpp>
 #include <grape/error.hpp>
 #include <grape/scene.hpp>
