@@ -3,6 +3,7 @@
 // to name its JSON pointer and the reason.
 #include <grape/anim.hpp>
 #include <grape/error.hpp>
+#include <grape/path_query.hpp>
 #include <grape/scene.hpp>
 
 #include "seed_paths.hpp"
@@ -106,6 +107,23 @@ void expect_same_scene(const Scene& a, const Scene& b) {
         EXPECT_EQ(x.repeat, y.repeat);
         EXPECT_EQ(x.yoyo, y.yoyo);
         EXPECT_EQ(x.reversed, y.reversed);
+        EXPECT_EQ(x.range_start, y.range_start);
+        EXPECT_EQ(x.range_end, y.range_end);
+        EXPECT_EQ(x.offset, y.offset);
+    }
+    ASSERT_EQ(a.sprites.size(), b.sprites.size());
+    for (std::size_t i = 0; i < a.sprites.size(); ++i) {
+        const auto& x = a.sprites[i];
+        const auto& y = b.sprites[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.sheet_file, y.sheet_file);
+        EXPECT_EQ(x.clip, y.clip);
+        EXPECT_EQ(x.first_frame, y.first_frame);
+        EXPECT_EQ(x.last_frame, y.last_frame);
+        EXPECT_EQ(x.rate, y.rate);
+        EXPECT_EQ(x.scale, y.scale);
+        EXPECT_EQ(x.animation, y.animation);
+        EXPECT_EQ(x.at, y.at);
     }
     ASSERT_EQ(a.simulations.size(), b.simulations.size());
     for (std::size_t i = 0; i < a.simulations.size(); ++i) {
@@ -297,6 +315,8 @@ TEST(SceneRoundTrip, RandomScenes) {
             a.repeat = static_cast<int>(rng() % 4) - 1;
             a.yoyo = rng() % 2 == 0;
             a.reversed = rng() % 2 == 0;
+            if (rng() % 2 == 0) a.range_start = unit(rng), a.range_end = unit(rng);
+            if (rng() % 2 == 0) a.offset = coord(rng) / 10;
             s.animations.push_back(a);
         }
         const std::string text = grape::save_scene(s);
@@ -445,6 +465,17 @@ TEST(SceneErrors, NameThePointerAndTheReason) {
     expect_error(R"([1, 2])", "/", "expected an object, got an array");
     // JSON pointer escaping of odd keys: "~" → "~0", "/" → "~1".
     expect_error(R"({"view": {"a/b~c": 1}})", "/view/a~1b~0c", "unknown field");
+}
+
+TEST(SceneErrors, AParticleInTooManyConstraints) {
+    // 16 rods to one particle load; a 17th is refused where it is (each couples with the others
+    // in the solve: 20000 of them stalled it).
+    std::string rods;
+    for (int i = 0; i < 17; ++i) rods += std::string(i ? ", " : "") + R"({"kind": "anchor", "a": 0, "point": [0, 0], "length": 5})";
+    const std::string sim = R"({"simulations": [{"particles": [{"position": [3, 4]}], "constraints": [)";
+    const std::string sixteen = rods.substr(0, rods.rfind(", {"));
+    EXPECT_EQ(grape::load_scene(sim + sixteen + "]}]}").simulations[0].constraints.size(), 16u);
+    expect_error(sim + rods + "]}]}", "/simulations/0/constraints/16", "particle 0 is in more than 16 constraints");
 }
 
 TEST(SceneErrors, Simulations) {
@@ -652,6 +683,258 @@ TEST(SceneSvg, DataWithASyntaxErrorIsReadBySvgsErrorRuleWithAWarning) {
                       {"name": "c", "path": {"kind": "svg", "data": "M5 7"}}]})");
     EXPECT_TRUE(clean.warnings.empty());
     EXPECT_EQ(clean.paths[2].path.point(0.5), (grape::Vec2{5, 7}));
+}
+
+// ------------------------------------------------ closed splines, slices, ranges, offsets
+
+const Path& only_path(const Scene& scene) { return scene.paths.at(0).path; }
+
+Scene one_path(const std::string& path) { return grape::load_scene(R"({"paths": [{"name": "p", "path": )" + path + "}]}"); }
+
+TEST(SceneLoops, ClosedSplinesAreTheLibrarysLoopsAndSaveBack) {
+    const std::vector<Vec2> pts{{0, 0}, {100, 20}, {120, 90}, {30, 110}};
+    const std::vector<Vec2> tan{{50, -10}, {20, 60}, {-40, 30}, {-30, -50}};
+    const std::string points = "[[0, 0], [100, 20], [120, 90], [30, 110]]";
+    struct Case {
+        std::string json;
+        Path expected;
+        bool saved_closed;  // written back as "closed": true (cosine and Hermite loops)
+    };
+    const std::vector<Case> cases{
+        {R"({"kind": "cosine_spline", "closed": true, "points": )" + points + "}", grape::closed_cosine_spline(pts), true},
+        {R"({"kind": "hermite_spline", "closed": true, "points": )" + points +
+             R"(, "tangents": [[50, -10], [20, 60], [-40, 30], [-30, -50]]})",
+         grape::closed_hermite_spline(pts, tan), true},
+        {R"({"kind": "catmull_rom_spline", "closed": true, "points": )" + points + "}",
+         grape::closed_catmull_rom_spline(pts, grape::CatmullRom::uniform), true},
+        {R"({"kind": "catmull_rom_spline", "closed": true, "type": "centripetal", "points": )" + points + "}",
+         grape::closed_catmull_rom_spline(pts, grape::CatmullRom::centripetal), false},
+        {R"({"kind": "catmull_rom_spline", "closed": true, "type": "chordal", "points": )" + points + "}",
+         grape::closed_catmull_rom_spline(pts, grape::CatmullRom::chordal), false},
+    };
+    for (const Case& c : cases) {
+        const Scene scene = one_path(c.json);
+        expect_same_path(only_path(scene), c.expected, c.json);
+        EXPECT_TRUE(grape::closed(only_path(scene))) << c.json;
+        // The seam is C1 for the cosine and Hermite forms: the derivative leaving u = 0 is the
+        // one arriving at u = 1 (the cosine's is 0 up to sin(π) ≈ 1.2e-16 times n·π/2·chord ≈
+        // 800 per u: 1e-12 is far above that rounding and far below any real mismatch).
+        if (c.saved_closed) {
+            EXPECT_LT(distance(only_path(scene).d1(0.0), only_path(scene).d1(1.0)), 1e-12) << c.json;
+        }
+        const std::string text = grape::save_scene(scene);
+        EXPECT_EQ(text.find("\"closed\": true") != std::string::npos, c.saved_closed) << text;
+        const Scene back = grape::load_scene(text);
+        expect_same_path(only_path(back), c.expected, "saved " + c.json);
+        EXPECT_EQ(grape::save_scene(back), text);
+    }
+    // The same points without "closed" stay open: the path ends at the last point.
+    EXPECT_EQ(only_path(one_path(R"({"kind": "cosine_spline", "points": )" + points + "}")).point(1.0), (Vec2{30, 110}));
+    // An open spline that happens to repeat its first point is written as the loop it is.
+    const Scene repeated = one_path(R"({"kind": "cosine_spline", "points": [[0, 0], [100, 20], [120, 90], [0, 0]]})");
+    EXPECT_NE(grape::save_scene(repeated).find("\"closed\": true"), std::string::npos);
+    expect_same_path(only_path(grape::load_scene(grape::save_scene(repeated))), only_path(repeated), "repeated first point");
+}
+
+TEST(SceneLoops, Errors) {
+    const auto path = [](const std::string& p) { return R"({"paths": [{"name": "p", "path": )" + p + "}]}"; };
+    expect_error(path(R"({"kind": "cosine_spline", "closed": true, "points": [[0, 0], [1, 1]]})"), "/paths/0/path/points",
+                 "too few points: 2 (at least 3)");
+    expect_error(path(R"({"kind": "cosine_spline", "closed": 1, "points": [[0, 0], [1, 1], [2, 0]]})"),
+                 "/paths/0/path/closed", "expected true or false");
+    expect_error(path(R"({"kind": "linear_spline", "closed": true, "points": [[0, 0], [1, 1], [2, 0]]})"),
+                 "/paths/0/path/closed", "unknown field \"closed\"");
+    expect_error(path(R"({"kind": "hermite_spline", "closed": true, "points": [[0, 0], [1, 1], [2, 0]], "tangents": [[1, 0]]})"),
+                 "/paths/0/path/tangents", "one tangent per point");
+}
+
+TEST(SceneSlices, AreTheLibrarysExactSlices) {
+    const std::string bez = R"("kind": "cubic_bezier", "points": [[20, 20], [400, 200], [400, 600], [600, 600]])";
+    const Path whole = grape::CubicBezierPath({20, 20}, {400, 200}, {400, 600}, {600, 600});
+    const Scene scene = one_path("{" + bez + R"(, "slice": [0.25, 0.75]})");
+    const Path& part = only_path(scene);
+    expect_same_path(part, grape::slice(whole, 0.25, 0.75), "sliced Bézier");
+    EXPECT_EQ(part.kind(), grape::PathKind::cubic_bezier);
+    for (int i = 0; i <= 100; ++i) {
+        const double v = i / 100.0;
+        // De Casteljau's control points against the original's evaluation at 0.25 + v/2:
+        // a few ulps of coordinates up to 600 (1e-12 is ~10 ulps of 600).
+        EXPECT_NEAR(distance(part.point(v), whole.point(0.25 + 0.5 * v)), 0.0, 1e-12) << v;
+    }
+    // Saved as what it is: a cubic Bézier, read back bit for bit.
+    const std::string text = grape::save_scene(scene);
+    EXPECT_EQ(text.find("slice"), std::string::npos);
+    expect_same_path(only_path(grape::load_scene(text)), part, "saved slice");
+    // After reparametrize: the reparametrized slice of the source, as grape::slice gives it.
+    const Scene even = one_path("{" + bez + R"(, "reparametrize": true, "slice": [0.5, 1]})");
+    expect_same_path(only_path(even), grape::slice(whole.reparametrized(), 0.5, 1.0), "sliced reparametrized Bézier");
+    // A complex path slices part by part; a named path can be sliced through a complex wrapper.
+    const Scene circle = one_path(R"({"kind": "circle", "centre": [0, 0], "radius": 50, "slice": [0, 0.5]})");
+    EXPECT_NEAR(only_path(circle).length(), grape::pi * 50, 1e-12 * 50);  // half the circle, closed form
+    EXPECT_NEAR(only_path(circle).point(1.0).x, -50.0, 1e-12 * 50);
+}
+
+TEST(SceneSlices, Errors) {
+    const auto path = [](const std::string& p) { return R"({"paths": [{"name": "p", "path": )" + p + "}]}"; };
+    const std::string line = R"("kind": "linear", "start": [0, 0], "end": [1, 0])";
+    expect_error(path("{" + line + R"(, "slice": [0.5, 0.5]})"), "/paths/0/path/slice", "expected 0 ≤ u0 < u1 ≤ 1 (got [0.5, 0.5])");
+    expect_error(path("{" + line + R"(, "slice": [-0.1, 0.5]})"), "/paths/0/path/slice", "expected 0 ≤ u0 < u1 ≤ 1");
+    expect_error(path("{" + line + R"(, "slice": [0.5]})"), "/paths/0/path/slice", "expected [u0, u1]");
+    expect_error(path("{" + line + R"(, "slice": [0.1, "x"]})"), "/paths/0/path/slice/1", "expected a number, got a string");
+    expect_error(path(R"({"kind": "sine_wave", "start": [0, 0], "end": [100, 0], "frequency": 2, "amplitude": 10, "slice": [0, 0.5]})"),
+                 "/paths/0/path/slice", "slice");
+    // A bad field of the sliced path is still named as the path's own.
+    expect_error(path(R"({"kind": "linear", "start": [0, 0], "slice": [0, 0.5]})"), "/paths/0/path", "missing field \"end\"");
+}
+
+TEST(SceneAnimation, RangeAndOffset) {
+    const Scene scene = grape::load_scene(R"({"animations": [
+        {"path": {"kind": "linear", "start": [0, 0], "end": [100, 0]}, "duration": 2, "range": [0.8, 0.2], "offset": 5},
+        {"path": {"kind": "circle", "centre": [0, 0], "radius": 50}, "duration": 1, "repeat": -1, "offset": 10}]})");
+    const grape::SceneAnimation& lane = scene.animations[0];
+    // Linear curve on a straight line: u = 0.8 − 0.6·t/2, the normal of +x is +y (y down).
+    EXPECT_EQ(lane.position(0.0), (Vec2{80, 5}));
+    EXPECT_EQ(lane.position(1.0), (Vec2{50, 5}));
+    EXPECT_NEAR(lane.u(1.5), 0.35, 1e-15);
+    EXPECT_NEAR(lane.position(2.0).x, 20.0, 1e-13);  // 0.8 − 0.6 in doubles: a few ulps of 100
+    EXPECT_EQ(lane.position(2.0).y, 5.0);
+    // A circle whose angle increases turns towards its normal (curvature 1/r > 0): an offset of
+    // 10 rides 10 inside, at radius 40 all the way round.
+    const grape::SceneAnimation& ring = scene.animations[1];
+    for (int i = 0; i <= 40; ++i) {
+        const double t = i / 16.0;
+        EXPECT_NEAR(grape::length(ring.position(t)), 40.0, 1e-12 * 50) << t;
+        EXPECT_NEAR(distance(ring.position(t), ring.path.point(ring.u(t))), 10.0, 1e-12 * 50) << t;
+    }
+    // Saved and read back; defaults are not written.
+    const std::string text = grape::save_scene(scene);
+    EXPECT_NE(text.find("\"range\""), std::string::npos);
+    const Scene back = grape::load_scene(text);
+    expect_same_scene(scene, back);
+    EXPECT_EQ(back.animations[1].range_start, 0.0);
+    EXPECT_EQ(back.animations[1].range_end, 1.0);
+    EXPECT_EQ(grape::save_scene(back), text);
+}
+
+TEST(SceneAnimation, RangeAndOffsetErrors) {
+    const std::string line = R"({"kind": "linear", "start": [0, 0], "end": [1, 0]})";
+    const auto anim = [&](const std::string& fields) { return R"({"animations": [{"path": )" + line + ", \"duration\": 1, " + fields + "}]}"; };
+    expect_error(anim(R"("range": [0.2, 1.5])"), "/animations/0/range/1", "must be in [0, 1] (got 1.5)");
+    expect_error(anim(R"("range": 0.5)"), "/animations/0/range", "expected [u0, u1]");
+    expect_error(anim(R"("range": [0, 0.5, 1])"), "/animations/0/range", "expected [u0, u1]");
+    expect_error(anim(R"("offset": "left")"), "/animations/0/offset", "expected a number, got a string");
+}
+
+// ------------------------------------------------------------------------------ sprites
+
+const std::filesystem::path sprite_data = std::filesystem::absolute(std::filesystem::path(__FILE__).parent_path() / "data" / "sprites");
+
+// A folder of this test's own (ctest runs tests in parallel).
+std::filesystem::path own_folder() {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     (std::string("grape_test_scene_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// A scene file in the test's folder with the sprites given (they name sheets by absolute path
+// or relative to that folder).
+Scene sprite_scene(const std::string& sprites, const std::string& extra = "") {
+    const auto file = own_folder() / "scene.json";
+    std::ofstream(file) << R"({"animations": [{"name": "walk", "path": {"kind": "linear", "start": [0, 0], "end": [100, 0]},
+        "duration": 2}])" << extra << R"(, "sprites": )" << sprites << "}";
+    return grape::load_scene_file(file);
+}
+
+std::string sheet_json() { return (sprite_data / "grape_sheet.json").string(); }
+
+TEST(SceneSprites, LoadPlayAndSaveBack) {
+    const Scene scene = sprite_scene(R"([
+        {"name": "hero", "sheet": ")" + sheet_json() + R"(", "clip": "bounce", "animation": "walk"},
+        {"sheet": ")" + sheet_json() + R"(", "frames": [4, 7], "rate": 0.5, "scale": 1.5, "at": [30, 40]},
+        {"sheet": ")" + sheet_json() + R"(", "clip": "rewind", "rate": -1, "at": [0, 0]}])");
+    ASSERT_EQ(scene.sprites.size(), 3u);
+    const grape::SceneSprite& hero = scene.sprites[0];
+    ASSERT_NE(hero.sheet, nullptr);
+    EXPECT_EQ(hero.sheet->frame_count(), 8u);
+    EXPECT_EQ(hero.clip_index, 0u);
+    // "bounce" is frames 0–3 forward, 100, 150, 50 and 200 ms (period 500 ms): the frame shown
+    // is the one the elapsed time falls in, looping. Times in the middle of frames, so no
+    // rounding can move a boundary.
+    for (const auto& [t, frame] : std::vector<std::pair<double, std::size_t>>{
+             {0.0, 0}, {0.05, 0}, {0.2, 1}, {0.275, 2}, {0.4, 3}, {0.55, 0}, {0.7, 1}, {10.375, 3}})
+        EXPECT_EQ(hero.frame_at(t), frame) << t;
+    // Frames 4–7 forward (80, 120, 60, 240 ms, period 500) at half speed: 2t seconds of game
+    // time are t of the sheet's.
+    const grape::SceneSprite& flag = scene.sprites[1];
+    EXPECT_TRUE(flag.clip.empty());
+    for (const auto& [t, frame] : std::vector<std::pair<double, std::size_t>>{
+             {0.0, 4}, {0.1, 4}, {0.3, 5}, {0.45, 6}, {0.8, 7}, {1.05, 4}, {1.3, 5}})
+        EXPECT_EQ(flag.frame_at(t), frame) << t;
+    // "rewind" plays 7, 6, 5, 4 (reverse tag); at rate −1 the player starts at the clip's end
+    // and walks back: 4, then 5 after 80 ms, ...
+    const grape::SceneSprite& back = scene.sprites[2];
+    EXPECT_EQ(back.frame_at(0.0), 4u);
+    EXPECT_EQ(back.frame_at(0.1), 5u);
+    EXPECT_THROW((void)back.frame_at(-1.0), grape::Error);
+    // The sheet's own clips are left as they were; the range is one clip more.
+    EXPECT_EQ(flag.sheet->clips().size(), hero.sheet->clips().size() + 1);
+    // Saved and read back (as text: no sheet is read).
+    const std::string text = grape::save_scene(scene);
+    const Scene back_text = grape::load_scene(text);
+    expect_same_scene(scene, back_text);
+    EXPECT_EQ(back_text.sprites[0].sheet, nullptr);
+    EXPECT_THROW((void)back_text.sprites[0].frame_at(0.0), grape::Error);
+    EXPECT_EQ(grape::save_scene(back_text), text);
+    // The sheet is found relative to the scene's folder.
+    Scene relative = grape::load_scene(R"({"sprites": [{"sheet": "grape_sheet.json", "clip": "hop", "at": [0, 0]}]})");
+    grape::load_scene_sprite_sheets(relative, sprite_data);
+    EXPECT_EQ(relative.sprites[0].clip_index, 2u);
+    EXPECT_EQ(relative.sprites[0].sheet_path, sprite_data / "grape_sheet.json");
+}
+
+TEST(SceneSprites, ErrorsNameThePointer) {
+    const std::string sheet = R"("sheet": ")" + sheet_json() + "\"";
+    const auto sprites = [](const std::string& s) {
+        return R"({"animations": [{"name": "walk", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},
+                                  {"name": "twin", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1},
+                                  {"name": "twin", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1}],
+                  "sprites": [)" + s + "]}";
+    };
+    expect_error(sprites(R"({"clip": "bounce", "at": [0, 0]})"), "/sprites/0", "missing field \"sheet\"");
+    expect_error(sprites(R"({"sheet": "", "clip": "bounce", "at": [0, 0]})"), "/sprites/0/sheet", "must name a sprite-sheet JSON file");
+    expect_error(sprites("{" + sheet + R"(, "at": [0, 0]})"), "/sprites/0", "give either \"clip\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "", "at": [0, 0]})"), "/sprites/0/clip", "must name a clip of the sheet");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "frames": [0, 1], "at": [0, 0]})"), "/sprites/0", "give either \"clip\"");
+    expect_error(sprites("{" + sheet + R"(, "frames": [3, 1], "at": [0, 0]})"), "/sprites/0/frames/1", "the last frame comes before the first (1 < 3)");
+    expect_error(sprites("{" + sheet + R"(, "frames": [-1, 1], "at": [0, 0]})"), "/sprites/0/frames/0", "not negative");
+    expect_error(sprites("{" + sheet + R"(, "frames": 2, "at": [0, 0]})"), "/sprites/0/frames", "expected [first, last]");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce"})"), "/sprites/0", "give either \"animation\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "animation": "run"})"), "/sprites/0/animation", "no animation is named \"run\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "animation": "twin"})"), "/sprites/0/animation", "2 animations are named \"twin\"");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "at": [0, 0], "scale": 0})"), "/sprites/0/scale", "must be positive (got 0)");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "at": [0, 0], "rate": "fast"})"), "/sprites/0/rate", "expected a number");
+    expect_error(sprites("{" + sheet + R"(, "clip": "bounce", "at": [0, 0], "speed": 2})"), "/sprites/0/speed", "unknown field \"speed\"");
+    expect_error(R"({"sprites": {}})", "/sprites", "expected an array, got an object");
+    // What only the sheet can tell: load_scene_file (and load_scene_sprite_sheets) read it.
+    const auto file_error = [&](const std::string& s, const std::string& pointer, const std::string& reason) {
+        try {
+            (void)sprite_scene("[" + s + "]");
+            ADD_FAILURE() << "accepted: " << s;
+        } catch (const grape::Error& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("scene: " + pointer + ": "), std::string::npos) << what;
+            EXPECT_NE(what.find(reason), std::string::npos) << what;
+        }
+    };
+    file_error("{" + sheet + R"(, "clip": "moonwalk", "at": [0, 0]})", "/sprites/0/clip", "moonwalk");
+    file_error("{" + sheet + R"(, "frames": [2, 8], "at": [0, 0]})", "/sprites/0/frames/1", "the sheet has 8 frames (0 to 7)");
+    file_error("{" + sheet + R"(, "frames": [8, 9], "at": [0, 0]})", "/sprites/0/frames/0", "the sheet has 8 frames");
+    file_error(R"({"sheet": "nowhere.json", "clip": "bounce", "at": [0, 0]})", "/sprites/0/sheet", "nowhere.json");
+    // A sheet whose own JSON is bad: its error (with its pointer) inside the sprite's.
+    const auto bad = own_folder() / "bad_sheet.json";
+    std::ofstream(bad) << R"({"frames": [], "meta": {}})";
+    file_error(R"({"sheet": "bad_sheet.json", "frames": [0, 0], "at": [0, 0]})", "/sprites/0/sheet", "sprite sheet");
 }
 
 }  // namespace

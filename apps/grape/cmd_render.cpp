@@ -10,6 +10,7 @@
 #include "progress.hpp"
 #include "scene_draw.hpp"
 #include "scene_player.hpp"
+#include "render_sprites.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -43,6 +44,7 @@ struct RenderOptions {
     bool frames_given = false;
     double fps = 30.0;
     bool force = false;
+    bool strict = false;  // the scene's warnings are errors
 };
 
 // The work `grape render` takes on without --force (stated in --help and the README).
@@ -79,6 +81,8 @@ void run_render(const RenderOptions& o) {
     if (std::filesystem::is_directory(out, ec)) throw Error("cannot write " + o.out + ": it is a folder");
     current_activity() = "reading " + o.scene;
     const Scene scene = load_scene_file(o.scene);
+    report_scene_warnings(scene, o.scene, o.strict);
+    load_sprite_pictures(scene);
     const int frames = o.frames_given ? o.frames : 1;
     // A PNG picture is rasterized twice over (cairo's surface and the image copied out of it).
     const double raster = std::ceil(scene.view.width) * std::ceil(scene.view.height) * 4.0 * 2.0;
@@ -168,6 +172,9 @@ void register_render_command(CLI::App& app) {
                   "Render even when a PNG picture needs more than 1 GiB of raster memory (views up to 32768×32768) or "
                   "the frames look larger than the free disk space (estimated from the first frame) or the paths are "
                   "longer than 1e6 output units on the picture");
+    cmd->add_flag("--strict", options->strict,
+                  "Refuse a scene that loads with warnings (SVG path data with a syntax error, read by SVG's error "
+                  "rule) instead of printing them on stderr and rendering");
     cmd->callback([options] { run_render(*options); });
 }
 

@@ -51,7 +51,7 @@ void run_sample(const SampleOptions& o) {
         out += "{\"time\": " + json_number(times[k]) + ", \"animations\": {";
         for (std::size_t n = 0; n < named.size(); ++n) {
             const std::size_t i = named[n];
-            const Vec2 p = scene.animations[i].path.point(timing.progress(i, times[k]));
+            const Vec2 p = scene.animations[i].position_at(timing.progress(i, times[k]));
             out += (n ? ", " : "") + nlohmann::json(scene.animations[i].name).dump() + ": [" + json_number(p.x) + ", " +
                    json_number(p.y) + "]";
         }

@@ -1,5 +1,7 @@
 #include "scene_draw.hpp"
 
+#include "render_sprites.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -82,7 +84,16 @@ std::string format(const char* fmt, double v) {
 Bounds scene_bounds(const Scene& scene, double t_end) {
     Bounds box;
     for (const NamedPath& p : scene.paths) box.add(p.path.bounds());
-    for (const SceneAnimation& a : scene.animations) box.add(a.path.bounds());
+    for (const SceneAnimation& a : scene.animations) {
+        const Bounds b = a.path.bounds();
+        const double o = std::fabs(a.offset);  // a lane beside the path stays within |offset| of it
+        box.add(b.min - Vec2{o, o});
+        box.add(b.max + Vec2{o, o});
+    }
+    if (!scene.sprites.empty()) {
+        const SceneTiming timing(scene);
+        for (const SceneSprite& s : scene.sprites) box.add(sprite_position(scene, timing, s, 0.0));
+    }
     if (!scene.simulations.empty()) {
         // The whole run (up to 20000 steps each) sets the box, so every frame shares one view.
         double horizon = t_end;
@@ -120,6 +131,7 @@ void draw_scene(Canvas& canvas, const Scene& scene, const Bounds& world, const S
         canvas.dot(p, 5.0, palette_color(i + 1));
         if (!a.name.empty()) canvas.text(p + Vec2{0, 0}, "  " + a.name, {.size = 11});
     }
+    draw_scene_sprites(canvas, scene, player.timing(), player.time());
     // Constraint curves are traced over the whole visible area (fit is a uniform scale and a move).
     Bounds region;
     region.add(Vec2{(0.0 - view.x0) / view.xx, (0.0 - view.y0) / view.yy});

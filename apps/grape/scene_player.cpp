@@ -30,7 +30,7 @@ void ScenePlayer::advance_to(double t) {
 }
 
 Vec2 ScenePlayer::animation_position(std::size_t i) const noexcept {
-    return scene_.animations[i].path.point(timing_.progress(i, time_));
+    return scene_.animations[i].position_at(timing_.progress(i, time_));
 }
 
 std::vector<Vec2> ScenePlayer::particle_positions(std::size_t i) const {

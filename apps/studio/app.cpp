@@ -33,8 +33,9 @@ std::vector<std::unique_ptr<Tab>> make_tabs([[maybe_unused]] const Options& opti
 #ifdef GRAPE_STUDIO_DYNAMICS
     tabs.push_back(make_chain_tab(options.particles));
 #endif
-    tabs.push_back(make_sprites_tab());
+    tabs.push_back(make_sprites_tab(options.sheet));
     tabs.push_back(make_keys_tab());
+    tabs.push_back(make_draw_tab());
     return tabs;
 }
 

@@ -25,6 +25,7 @@ void usage(std::FILE* to) {
                  "  --report FILE       write the visible tab's state at exit (key: value lines)\n"
                  "  --path NAME         paths tab: the path selected at start (e.g. seed_bezier)\n"
                  "  --particles N       chain tab: number of particles (2..2000)\n"
+                 "  --sheet FILE        sprites tab: the sheet JSON opened at start (default: grape's own)\n"
                  "  --size WxH          window size in pixels (default 1200x760)\n"
                  "  --fps               no frame cap; print frames per second at exit\n"
                  "  --help              this text\n",
@@ -60,6 +61,7 @@ grape::studio::Options parse(int argc, char** argv) {
         else if (arg == "--script") o.script = value;
         else if (arg == "--report") o.report = value;
         else if (arg == "--path") o.path = value;
+        else if (arg == "--sheet") o.sheet = value;
         else if (arg == "--particles") o.particles = integer_option(arg, value, 2, 2000);
         else if (arg == "--size") {
             const std::size_t x = value.find('x');

@@ -31,6 +31,7 @@ struct Options {
     std::string report;             ///< text file of the tabs' state written at exit
     int particles = 0;              ///< chain tab: particle count (0: the tab's default)
     std::string path;               ///< paths tab: the path selected at start ("" : the default)
+    std::string sheet;              ///< sprites tab: the sheet JSON opened at start ("": grape's own)
     bool fps = false;               ///< no frame cap; print frames per second at exit
     int width = 1200;               ///< window width, pixels
     int height = 760;               ///< window height, pixels
@@ -110,8 +111,9 @@ public:
 };
 
 std::unique_ptr<Tab> make_paths_tab(const std::string& initial_path);
-std::unique_ptr<Tab> make_sprites_tab();
+std::unique_ptr<Tab> make_sprites_tab(const std::string& sheet_file);
 std::unique_ptr<Tab> make_keys_tab();
+std::unique_ptr<Tab> make_draw_tab();
 #ifdef GRAPE_STUDIO_DYNAMICS
 std::unique_ptr<Tab> make_constraint_tab();
 std::unique_ptr<Tab> make_chain_tab(int particles);

@@ -1,7 +1,8 @@
 // Keys: the keyboard's grape::KeyState, live. Keys light up while down; the frame a key goes
 // down or up it flashes (pressed/released edges last exactly one frame), and a log keeps the
 // edges so they can be read. Two masks show combinations: Ctrl+S (all down) and the arrows
-// (any down).
+// (any down). A held key repeats on the state's clock (0.5 s after the press, then 30 times
+// a second), which each frame moves on by the studio's fixed step.
 #include "studio.hpp"
 
 #include <grape/bits.hpp>
@@ -80,7 +81,7 @@ public:
                            "the keys pressed and released this frame. Type anywhere in the window.");
         ImGui::Separator();
         ImGui::Text("keys down: %zu", keys_.down().count());
-        ImGui::Text("presses: %d   releases: %d", presses_, releases_);
+        ImGui::Text("presses: %d   releases: %d   repeats: %ld", presses_, releases_, repeats_);
         ImGui::TextColored(keys_.all_down(save_) ? ImVec4(0.1f, 0.6f, 0.2f, 1) : ImVec4(0.5f, 0.5f, 0.5f, 1),
                            "mask Ctrl+S (all down): %s", keys_.all_down(save_) ? "yes" : "no");
         ImGui::TextColored(keys_.any_down(arrows_) ? ImVec4(0.1f, 0.6f, 0.2f, 1) : ImVec4(0.5f, 0.5f, 0.5f, 1),
@@ -96,7 +97,8 @@ public:
         const float gap = unit * 0.08f;
         const float y0 = min.y + 40.0f;
         dl->AddText({min.x + 20.0f, min.y + 12.0f}, colour::ink,
-                    "down: green   pressed this frame: orange outline   released this frame: red outline");
+                    "down: green   pressed this frame: orange outline   released this frame: red outline   "
+                    "repeated: a bar on top");
         for (std::size_t r = 0; r < layout().size(); ++r) {
             float x = min.x + 20.0f;
             const float y = y0 + float(r) * unit;
@@ -109,6 +111,7 @@ public:
                 dl->AddRect(a, b, colour::faint, 4.0f);
                 if (keys_.pressed_this_frame(code)) dl->AddRect(a, b, colour::handle, 4.0f, 0, 4.0f);
                 if (keys_.released_this_frame(code)) dl->AddRect(a, b, colour::marker, 4.0f, 0, 4.0f);
+                if (keys_.repeated_this_frame(code)) dl->AddRectFilled(a, {b.x, a.y + 4.0f}, colour::path, 2.0f);
                 dl->AddText({a.x + 5.0f, a.y + 4.0f}, down ? IM_COL32_WHITE : colour::ink, cap.label);
                 x += float(cap.width) * unit;
             }
@@ -123,15 +126,21 @@ public:
             dl->AddRectFilled({cx, cy}, {cx + cell - 1.0f, cy + cell - 1.0f},
                               keys_.is_down(i) ? IM_COL32(60, 180, 90, 255) : IM_COL32(225, 222, 215, 255));
         }
-        // The edges have been shown: the frame ends for the key state.
-        keys_.end_frame();
+        // The edges and repeats have been shown: the frame ends for the key state, whose
+        // clock moves on by the frame's step (the repeats due in it are reported next frame).
+        for (const std::size_t code : keys_.repeated_keys()) {
+            repeats_ += static_cast<long>(keys_.repeat_count(code));
+            last_repeated_ = SDL_GetScancodeName(SDL_Scancode(code));
+        }
+        keys_.end_frame(frame_dt);
     }
 
     void report(std::ostream& out) const override {
         out << "keys_down:";
         for (std::size_t i = 0; i < keys_.key_count(); ++i)
             if (keys_.is_down(i)) out << ' ' << SDL_GetScancodeName(SDL_Scancode(i));
-        out << "\npresses: " << presses_ << "\nreleases: " << releases_ << "\n";
+        out << "\npresses: " << presses_ << "\nreleases: " << releases_ << "\nrepeats: " << repeats_
+            << "\nlast_repeated: " << last_repeated_ << "\n";
     }
 
 private:
@@ -141,6 +150,8 @@ private:
     std::deque<std::string> log_;
     int presses_ = 0;
     int releases_ = 0;
+    long repeats_ = 0;           // every repeat reported so far
+    std::string last_repeated_;  // the key of the latest one
     long frame_ = 0;
 };
 

@@ -20,6 +20,7 @@
 #include <SDL.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -51,10 +52,30 @@ SDL_Texture* make_texture(SDL_Renderer* renderer, const std::uint8_t* pixels, in
     return t;
 }
 
+#ifdef GRAPE_STUDIO_SHEETS
+// grape's own sheet, found at run time from where the program is: installed, it is in
+// GRAPE_STUDIO_SHEET_DIR relative to the program's folder (share/grape/sprites beside bin);
+// in a build tree the build copies it into sprites/ next to the program.
+std::string default_sheet_file() {
+    char* base = SDL_GetBasePath();
+    if (!base) return "grape_sheet.json";
+    const std::filesystem::path dir(base);
+    SDL_free(base);
+    const std::filesystem::path candidates[] = {dir / "sprites" / "grape_sheet.json",
+                                                dir / GRAPE_STUDIO_SHEET_DIR / "grape_sheet.json"};
+    for (const auto& file : candidates) {
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(file, ec)) return file.lexically_normal().string();
+    }
+    return candidates[1].lexically_normal().string();  // missing: the field shows it with the error
+}
+#endif
+
 class SpritesTab final : public Tab {
 public:
-    SpritesTab()
-        : image_(draw_sprite_sheet(frame_count, columns, frame_size)),
+    explicit SpritesTab(std::string sheet_file)
+        : sheet_file_option_(std::move(sheet_file)),
+          image_(draw_sprite_sheet(frame_count, columns, frame_size)),
           sheet_({.width = image_.width, .height = image_.height, .columns = columns,
                   .rows = (frame_count + columns - 1) / columns, .frame_count = frame_count}),
           sprite_(sheet_),
@@ -67,6 +88,8 @@ public:
     void attach(SDL_Renderer* renderer) override {
         renderer_ = renderer;
 #ifdef GRAPE_STUDIO_SHEETS
+        const std::string file = sheet_file_option_.empty() ? default_sheet_file() : sheet_file_option_;
+        std::snprintf(sheet_file_, sizeof sheet_file_, "%s", file.c_str());
         open_sheet();
 #endif
         sheet_texture_ = make_texture(renderer, image_.pixels.data(), image_.width, image_.height, image_.stride);
@@ -293,7 +316,7 @@ private:
         return "clip '" + loaded_->clips()[clip_player_->clip()].name + "' from the sheet";
     }
 
-    char sheet_file_[512] = GRAPE_STUDIO_SPRITE_SHEET;
+    char sheet_file_[512] = {};
     std::optional<SpriteSheet> loaded_;
     std::unique_ptr<ClipPlayer> clip_player_;  // points into loaded_
     SDL_Texture* clip_texture_ = nullptr;
@@ -307,6 +330,7 @@ private:
     int mode_ = 0;
     bool per_frame_ = false;
     bool running_ = true;
+    [[maybe_unused]] std::string sheet_file_option_;  // --sheet ("": grape's own sheet)
     SheetImage image_;
     TileSheet sheet_;
     TileSheetSprite sprite_;
@@ -318,6 +342,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Tab> make_sprites_tab() { return std::make_unique<SpritesTab>(); }
+std::unique_ptr<Tab> make_sprites_tab(const std::string& sheet_file) { return std::make_unique<SpritesTab>(sheet_file); }
 
 }  // namespace grape::studio

@@ -19,9 +19,11 @@
 #include <grape/math.hpp>
 #include <grape/path.hpp>
 #include <grape/timeline_layout.hpp>
+#include <grape/sprite.hpp>
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,6 +55,9 @@ struct SceneAnimation {
     bool yoyo = false;       ///< every other play runs backwards
     bool reversed = false;   ///< the first play runs from the path's end to its start
     double repeat_delay = 0.0;  ///< seconds between plays, ≥ 0 (the state holds at the end of the play just finished)
+    double range_start = 0.0;  ///< u where a play starts, in [0, 1] ("range": [start, end])
+    double range_end = 1.0;    ///< u where a play ends, in [0, 1] (below range_start: runs backwards)
+    double offset = 0.0;       ///< sideways distance from the path, world units, to the frame's normal side
 
     /// The AnimationDef the anim engine plays this with (curve and timing).
     AnimationDef def() const noexcept;
@@ -60,8 +65,14 @@ struct SceneAnimation {
     /// the anim module's timing model (curve(τ) going forwards, curve(1 − τ) going
     /// backwards; before the delay at its start, after its last play at its end).
     double progress(double t) const noexcept;
-    /// path.point(progress(t)).
-    Vec2 position(double t) const noexcept { return path.point(progress(t)); }
+    /// The path's u at scene time t: range_start + progress(t)·(range_end − range_start).
+    double u(double t) const noexcept;
+    /// Where it is at scene time t: path.point(u(t)), moved `offset` along the path's normal
+    /// there (offset_point).
+    Vec2 position(double t) const noexcept;
+    /// Where it is at curve progress p (a timeline's SceneTiming::progress, say): the range
+    /// maps p to u, then the offset applies as in position().
+    Vec2 position_at(double p) const noexcept;
     /// Seconds until the last play ends (infinity when repeating forever).
     double end_time() const noexcept;
 };
@@ -143,6 +154,28 @@ struct SceneSimulation {
     std::vector<SceneConstraint> constraints;  ///< solved together
 };
 
+/// A sprite: frames of a sprite sheet (Aseprite or TexturePacker JSON and its picture) played
+/// at a rate from scene time 0, standing at a point or moving along an animation.
+struct SceneSprite {
+    std::string name;               ///< label ("" allowed)
+    std::string sheet_file;         ///< the sheet's JSON as written, relative to the scene file's folder
+    std::string clip;               ///< the clip (tag) played; "" when frames are given
+    std::size_t first_frame = 0;    ///< with no clip: the frames first … last play forward in a loop
+    std::size_t last_frame = 0;     ///< inclusive, ≥ first_frame
+    double rate = 1.0;              ///< 1 normal, 0.5 half, −1 backwards (finite)
+    double scale = 1.0;             ///< world units per sheet pixel, > 0
+    std::string animation;          ///< the animation it moves along (its name); "" stands at `at`
+    Vec2 at;                        ///< where its pivot stands without an animation, world units
+    /// The sheet, once read (load_scene_file, load_scene_sprite_sheets; nullptr before).
+    std::shared_ptr<const SpriteSheet> sheet;
+    std::filesystem::path sheet_path;  ///< the JSON file the sheet was read from
+    std::size_t clip_index = 0;        ///< the clip of `sheet` played (one of its own for a frame range)
+
+    /// The sheet frame shown at scene time t ≥ 0: a ClipPlayer of the clip at the rate advanced
+    /// by t seconds. Throws grape::Error when the sheet is not loaded or t is negative or not finite.
+    std::size_t frame_at(double t) const;
+};
+
 /// How a scene is shown by `grape render`.
 struct SceneView {
     double width = 640.0;       ///< output units, in [1, 32768]
@@ -159,6 +192,7 @@ struct Scene {
     std::vector<SceneAnimation> animations;   ///< animations (their paths are drawn too)
     std::vector<SceneSimulation> simulations; ///< particle simulations
     std::vector<SceneTimeline> timelines;     ///< timelines driving some of the animations
+    std::vector<SceneSprite> sprites;         ///< sprites from sprite sheets
     /// What loading forgave, one message each: SVG path data with a syntax error is read by
     /// SVG's error rule (the path before the command holding the error). Not saved.
     std::vector<std::string> warnings;
@@ -229,8 +263,12 @@ private:
 /// Parses scene JSON text. Throws grape::Error naming the JSON pointer and the reason
 /// (or the byte offset of a syntax error).
 Scene load_scene(std::string_view json);
-/// Reads and parses a scene file; errors also name the file.
+/// Reads and parses a scene file and the sprite sheets it names (relative to its folder);
+/// errors also name the file.
 Scene load_scene_file(const std::filesystem::path& file);
+/// Reads the sheets of the scene's sprites (sheet_file relative to `folder`) and finds their
+/// clips; throws grape::Error naming the sprite's JSON pointer ("scene: /sprites/0/clip: ...").
+void load_scene_sprite_sheets(Scene& scene, const std::filesystem::path& folder);
 /// The scene as JSON text (indented, 17 significant digits). Paths built in code save too.
 std::string save_scene(const Scene& scene);
 /// Writes the scene to a file (through a temporary: a failure leaves no partial file).

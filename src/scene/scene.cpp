@@ -3,6 +3,7 @@
 #include <grape/scene.hpp>
 
 #include <grape/error.hpp>
+#include <grape/path_query.hpp>
 
 #include "atomic_file.hpp"
 
@@ -28,8 +29,22 @@ namespace {
 
 using namespace scene_io;
 
+// An animation's "range": [u0, u1] (the part of the path a play covers) and "offset".
+void read_range_and_offset(const json& o, const std::string& p, SceneAnimation& a) {
+    if (const auto r = o.find("range"); r != o.end()) {
+        const std::string rp = child(p, "range");
+        if (!r->is_array() || r->size() != 2) fail(rp, "expected [u0, u1] with both in [0, 1], got " + type_of(*r));
+        for (std::size_t k = 0; k < 2; ++k) {
+            const double u = number((*r)[k], child(rp, k));
+            if (!(u >= 0.0 && u <= 1.0)) fail(child(rp, k), "must be in [0, 1] (got " + number_text(u) + ")");
+            (k == 0 ? a.range_start : a.range_end) = u;
+        }
+    }
+    a.offset = number_field(o, p, "offset", 0.0);
+}
+
 Scene read_scene(const json& root) {
-    object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations", "timelines"});
+    object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations", "timelines", "sprites"});
     if (const auto v = root.find("grape_scene"); v != root.end()) {
         if (integer(*v, "/grape_scene") != 1) fail("/grape_scene", "unsupported format version (this reader knows 1)");
     }
@@ -85,7 +100,8 @@ Scene read_scene(const json& root) {
         PathReader reader{&scene.paths, &scene.warnings};
         for (std::size_t i = 0; i < v->size(); ++i) {
             const std::string p = child("/animations", i);
-            const json& o = object((*v)[i], p, {"name", "path", "curve", "duration", "delay", "repeat", "yoyo", "reversed", "repeat_delay"});
+            const json& o = object((*v)[i], p, {"name", "path", "curve", "duration", "delay", "repeat", "yoyo", "reversed",
+                                                       "repeat_delay", "range", "offset"});
             SceneAnimation a;
             a.name = name_field(o, p, nullptr);
             const json& path = required(o, p, "path");
@@ -115,6 +131,7 @@ Scene read_scene(const json& root) {
             a.yoyo = bool_field(o, p, "yoyo", false);
             a.reversed = bool_field(o, p, "reversed", false);
             a.repeat_delay = non_negative_field(o, p, "repeat_delay", 0.0);
+            read_range_and_offset(o, p, a);
             scene.animations.push_back(std::move(a));
         }
     }
@@ -126,6 +143,7 @@ Scene read_scene(const json& root) {
         scene.timelines = read_timelines(*v, "/timelines");
         (void)SceneTiming(scene);  // names, cycles and positions resolve, or the error names where
     }
+    if (const auto v = root.find("sprites"); v != root.end()) read_sprites(*v, scene);
     return scene;
 }
 
@@ -161,6 +179,8 @@ ordered scene_json(const Scene& scene) {
             o["yoyo"] = anim.yoyo;
             o["reversed"] = anim.reversed;
             if (anim.repeat_delay != 0.0) o["repeat_delay"] = anim.repeat_delay;
+            if (anim.range_start != 0.0 || anim.range_end != 1.0) o["range"] = {anim.range_start, anim.range_end};
+            if (anim.offset != 0.0) o["offset"] = anim.offset;
             a.push_back(std::move(o));
         }
         j["animations"] = std::move(a);
@@ -171,6 +191,7 @@ ordered scene_json(const Scene& scene) {
         j["simulations"] = std::move(a);
     }
     if (!scene.timelines.empty()) j["timelines"] = timelines_json(scene.timelines);
+    if (!scene.sprites.empty()) j["sprites"] = sprites_json(scene);
     return j;
 }
 
@@ -187,6 +208,15 @@ AnimationDef SceneAnimation::def() const noexcept {
 double SceneAnimation::progress(double t) const noexcept {
     if (!(duration > 0.0)) return curve(reversed ? 1.0 : 0.0);  // not playable: its start
     return progress_at(def(), duration, t);
+}
+
+double SceneAnimation::u(double t) const noexcept { return range_start + progress(t) * (range_end - range_start); }
+
+Vec2 SceneAnimation::position(double t) const noexcept { return position_at(progress(t)); }
+
+Vec2 SceneAnimation::position_at(double p) const noexcept {
+    const double at = range_start + p * (range_end - range_start);
+    return offset == 0.0 ? path.point(at) : offset_point(path, at, offset);
 }
 
 double SceneAnimation::end_time() const noexcept { return grape::end_time(def(), duration); }
@@ -208,7 +238,9 @@ Scene load_scene(std::string_view text) { return read_scene(parse_text(text, "sc
 Scene load_scene_file(const std::filesystem::path& file) {
     const std::string text = detail::read_file_text(file, "a scene file");
     try {
-        return load_scene(text);
+        Scene scene = load_scene(text);
+        load_scene_sprite_sheets(scene, file.parent_path());
+        return scene;
     } catch (const Error& e) {
         throw Error(file.string() + ": " + e.what());
     }

@@ -27,6 +27,8 @@ using ordered = nlohmann::ordered_json;
 inline constexpr int max_depth = 32;
 // More simulation steps than this is a typo (or an attack), not a scene.
 inline constexpr double max_steps = 1e7;
+// Constraints on one particle (scene_simulation.cpp says why).
+inline constexpr std::size_t max_constraints_per_particle = 16;
 
 /// Throws grape::Error "scene: POINTER: WHY".
 [[noreturn]] void fail(const std::string& pointer, const std::string& why);
@@ -82,5 +84,8 @@ ordered simulation_json(const SceneSimulation& s);
 /// The "timelines" array (names, fields and positions; references resolve in SceneTiming).
 std::vector<SceneTimeline> read_timelines(const json& j, const std::string& pointer);
 ordered timelines_json(const std::vector<SceneTimeline>& timelines);
+/// The scene's "sprites" (after its animations, which they may name).
+void read_sprites(const json& j, Scene& scene);
+ordered sprites_json(const Scene& scene);
 
 }  // namespace grape::scene_io

@@ -2,8 +2,11 @@
 #include "scene_json.hpp"
 
 #include <grape/error.hpp>
+#include <grape/path_query.hpp>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -25,7 +28,22 @@ Path PathReader::read(const json& j, const std::string& pointer, int depth) cons
     if (!j.is_object()) fail(pointer, "expected a path object or a path name, got " + type_of(j));
     const std::string kind = string_value(required(j, pointer, "kind"), child(pointer, "kind"));
     try {
-        return read_kind(j, pointer, kind, depth);
+        const auto s = j.find("slice");
+        if (s == j.end()) return read_kind(j, pointer, kind, depth);
+        // Any kind may be sliced: the rest of the object is the path, "slice" the u range kept.
+        const std::string sp = child(pointer, "slice");
+        if (!s->is_array() || s->size() != 2) fail(sp, "expected [u0, u1] with 0 ≤ u0 < u1 ≤ 1, got " + type_of(*s));
+        const double u0 = number((*s)[0], child(sp, 0)), u1 = number((*s)[1], child(sp, 1));
+        if (!(0.0 <= u0 && u0 < u1 && u1 <= 1.0))
+            fail(sp, "expected 0 ≤ u0 < u1 ≤ 1 (got [" + number_text(u0) + ", " + number_text(u1) + "])");
+        json rest = j;
+        rest.erase("slice");
+        const Path whole = read_kind(rest, pointer, kind, depth);
+        try {
+            return slice(whole, u0, u1);
+        } catch (const Error& e) {
+            fail(sp, e.what());
+        }
     } catch (const Error& e) {
         const std::string what = e.what();
         if (what.rfind("scene: ", 0) == 0) throw;
@@ -74,30 +92,42 @@ Path PathReader::read_kind(const json& j, const std::string& pointer, const std:
         if (n == 3) return QuadraticBezierPath(pts[0], pts[1], pts[2], reparam);
         return CubicBezierPath(pts[0], pts[1], pts[2], pts[3], reparam);
     }
-    if (kind == "linear_spline" || kind == "cosine_spline") {
+    // Splines that may be loops: "closed": true joins the last point to the first (at least 3).
+    const auto is_closed = [&] { return bool_field(j, pointer, "closed", false); };
+    const auto spline_points = [&](bool loop) { return points_field(j, pointer, "points", loop ? 3 : 2); };
+    if (kind == "linear_spline") {
         object(j, pointer, {"kind", "points", "reparametrize"});
-        const auto pts = points_field(j, pointer, "points", 2);
-        if (kind == "linear_spline") return done(LinearSplinePath(std::span<const Vec2>(pts)));
+        return done(LinearSplinePath(std::span<const Vec2>(spline_points(false))));
+    }
+    if (kind == "cosine_spline") {
+        object(j, pointer, {"kind", "points", "closed", "reparametrize"});
+        const bool loop = is_closed();
+        const auto pts = spline_points(loop);
+        if (loop) return done(closed_cosine_spline(pts));
         return done(CosineSplinePath(std::span<const Vec2>(pts)));
     }
     if (kind == "hermite_spline") {
-        object(j, pointer, {"kind", "points", "tangents", "reparametrize"});
-        const auto pts = points_field(j, pointer, "points", 2);
+        object(j, pointer, {"kind", "points", "tangents", "closed", "reparametrize"});
+        const bool loop = is_closed();
+        const auto pts = spline_points(loop);
         const auto tangents = points_field(j, pointer, "tangents", 0);
         if (tangents.size() != pts.size())
             fail(child(pointer, "tangents"), "one tangent per point: " + std::to_string(pts.size()) +
                                                  " points but " + std::to_string(tangents.size()) + " tangents");
+        if (loop) return done(closed_hermite_spline(pts, tangents));
         return done(HermiteSplinePath(std::span<const Vec2>(pts), std::span<const Vec2>(tangents)));
     }
     if (kind == "catmull_rom_spline") {
-        object(j, pointer, {"kind", "points", "type", "reparametrize"});
-        const auto pts = points_field(j, pointer, "points", 2);
+        object(j, pointer, {"kind", "points", "type", "closed", "reparametrize"});
+        const bool loop = is_closed();
+        const auto pts = spline_points(loop);
         const std::string type = string_field(j, pointer, "type", "uniform");
         CatmullRom t = CatmullRom::uniform;
         if (type == "centripetal") t = CatmullRom::centripetal;
         else if (type == "chordal") t = CatmullRom::chordal;
         else if (type != "uniform")
             fail(child(pointer, "type"), "unknown Catmull-Rom type \"" + type + "\" (uniform, centripetal, chordal)");
+        if (loop) return done(closed_catmull_rom_spline(pts, t));
         return done(CatmullRomSplinePath(std::span<const Vec2>(pts), t));
     }
     if (kind == "physics") {
@@ -186,10 +216,23 @@ struct SpecJson {
     ordered operator()(const LinearSplineSpec& s) const {
         return {{"kind", "linear_spline"}, {"points", points_json(s.points)}};
     }
+    // A spline whose last point (and tangent) repeats its first is the loop "closed": true
+    // builds from the others, bit for bit: written that way.
+    static bool same(Vec2 a, Vec2 b) {  // bits, so a −0 is never written as 0
+        return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+               std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
+    }
+    static bool loop(const std::vector<Vec2>& v) { return v.size() >= 4 && same(v.front(), v.back()); }
+    static std::span<const Vec2> open_part(const std::vector<Vec2>& v) { return {v.data(), v.size() - 1}; }
     ordered operator()(const CosineSplineSpec& s) const {
+        if (loop(s.points))
+            return {{"kind", "cosine_spline"}, {"points", points_json(open_part(s.points))}, {"closed", true}};
         return {{"kind", "cosine_spline"}, {"points", points_json(s.points)}};
     }
     ordered operator()(const HermiteSplineSpec& s) const {
+        if (loop(s.points) && s.tangents.size() == s.points.size() && same(s.tangents.front(), s.tangents.back()))
+            return {{"kind", "hermite_spline"}, {"points", points_json(open_part(s.points))},
+                    {"tangents", points_json(open_part(s.tangents))}, {"closed", true}};
         return {{"kind", "hermite_spline"}, {"points", points_json(s.points)}, {"tangents", points_json(s.tangents)}};
     }
     ordered operator()(const CatmullRomSplineSpec& s) const {

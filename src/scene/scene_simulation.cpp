@@ -83,6 +83,15 @@ SceneSimulation read_simulation(const json& j, const std::string& pointer) {
     if (const auto constraints = j.find("constraints"); constraints != j.end()) {
         const std::string cp = child(pointer, "constraints");
         if (!constraints->is_array()) fail(cp, "expected an array, got " + type_of(*constraints));
+        // Constraints sharing a particle couple in the solve (a dense block per particle, the
+        // square of its count): a particle has two degrees of freedom, a cloth's hold about a
+        // dozen rods; more than this is a mistake that would stall the solver.
+        std::vector<std::size_t> per_particle(n, 0);
+        const auto hold = [&](std::size_t particle, const std::string& at) {
+            if (++per_particle[particle] > max_constraints_per_particle)
+                fail(at, "particle " + std::to_string(particle) + " is in more than " +
+                             std::to_string(max_constraints_per_particle) + " constraints");
+        };
         for (std::size_t i = 0; i < constraints->size(); ++i) {
             const std::string p = child(cp, i);
             const json& o = (*constraints)[i];
@@ -123,6 +132,8 @@ SceneSimulation read_simulation(const json& j, const std::string& pointer) {
             } else {
                 fail(child(p, "kind"), "unknown constraint kind \"" + kind + "\" (distance, anchor, fixed_point, conic)");
             }
+            hold(c.a, p);
+            if (c.kind == SceneConstraintKind::distance) hold(c.b, p);
             s.constraints.push_back(c);
         }
     }
