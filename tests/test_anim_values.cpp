@@ -5,6 +5,7 @@
 // a float rotation beside double x/y).
 #include <grape/anim.hpp>
 #include <grape/color.hpp>
+#include <grape/timeline.hpp>
 
 #include "error_text.hpp"
 
@@ -197,6 +198,31 @@ TEST(TypedValues, FromCurrentInASequenceStartsWhereThePreviousOneLeft) {
     for (int k = 0; k < 60; ++k) engine.tick(0.05);  // 3 s
     EXPECT_NEAR(t.value, 20.0, 1e-12);
     EXPECT_EQ(engine.size(), 0u);
+}
+
+TEST(TypedValues, FromCurrentAndRelativeInATimelineStartWhereThePreviousChildLeft) {
+    // A sequence in a timeline: to(10) from 0, then by(+5), then to(-1); each placed at the
+    // previous end (">"), so each captures the member the previous child left: 10, 15, then
+    // back to -1. Exact values at play boundaries: linear curves, durations of 1 s and 0.5 s
+    // and ticks of 1/8 s are all dyadic, so every product and sum here is exact.
+    Engine engine;
+    Thing t;
+    t.value = 0.0;
+    grape::Timeline line = engine.create_timeline();
+    line.add(engine.animate(t, &Thing::value, grape::to(10.0), 1.0))
+        .add(engine.animate(t, &Thing::value, grape::by(5.0), 1.0), ">")
+        .add(engine.animate(t, &Thing::value, grape::to(-1.0), 0.5), ">");
+    EXPECT_EQ(line.duration(), 2.5);
+    for (int k = 0; k < 8; ++k) engine.tick(0.125);  // 1 s: the first child has ended at 10
+    EXPECT_EQ(t.value, 10.0);
+    for (int k = 0; k < 4; ++k) engine.tick(0.125);  // halfway through by(5)
+    EXPECT_EQ(t.value, 12.5);
+    for (int k = 0; k < 4; ++k) engine.tick(0.125);  // 2 s: by(5) ended at 15
+    EXPECT_EQ(t.value, 15.0);
+    engine.tick(0.25);                                // halfway from 15 to -1
+    EXPECT_EQ(t.value, 7.0);
+    engine.tick(0.25);
+    EXPECT_EQ(t.value, -1.0);
 }
 
 TEST(TypedValues, BadArgumentsAreNamed) {

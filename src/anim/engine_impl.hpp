@@ -152,6 +152,7 @@ public:
     const Cold& cold(std::uint32_t dense) const noexcept { return cold_[dense]; }
     Hot& hot(std::uint32_t dense) noexcept { return hot_[dense]; }
     const Extra* extra(std::uint32_t slot) const noexcept;
+    Extra* extra_mut(std::uint32_t slot) noexcept;  // null when it has none
     Extra& extra_for(std::uint32_t slot);
     Vec2 value_of(std::uint32_t dense) const noexcept;
     double heading_of(std::uint32_t dense) const noexcept;

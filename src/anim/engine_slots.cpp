@@ -23,6 +23,11 @@ const Extra* EngineImpl::extra(std::uint32_t slot) const noexcept {
     return it == extras_.end() ? nullptr : &it->second;
 }
 
+Extra* EngineImpl::extra_mut(std::uint32_t slot) noexcept {
+    const auto it = extras_.find(slot);
+    return it == extras_.end() ? nullptr : &it->second;
+}
+
 Extra& EngineImpl::extra_for(std::uint32_t slot) { return extras_[slot]; }
 
 void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {

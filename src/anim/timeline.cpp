@@ -193,6 +193,10 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
         engine_.write_state(dense);
     }
     engine_.hot_[engine_.dense_of(a.slot_)].phase = c.p0;
+    // Its first play begins when the timeline reaches it, not at creation or placement: a
+    // from-current or relative start is read then (where the previous child left the member),
+    // and overwrite applies then.
+    if (Extra* e = engine_.extra_mut(a.slot_)) e->started = false;
 }
 
 void TimelineStore::add_timeline(std::uint32_t slot, std::uint32_t child, const TimelinePosition& at) {

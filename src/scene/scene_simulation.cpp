@@ -12,7 +12,7 @@ namespace grape::scene_io {
 
 namespace {
 
-const std::vector<std::string_view> integrators = {"euler", "semi_implicit_euler", "midpoint", "rk4", "velocity_verlet", "rk45"};
+const std::vector<std::string_view> integrators = {"euler", "semi_implicit_euler", "midpoint", "rk4", "velocity_verlet", "rk45", "rattle"};
 const std::vector<std::string_view> drifts = {"none", "baumgarte", "projection"};
 
 }  // namespace
