@@ -207,6 +207,12 @@ public:
         if (!scene_message_.empty()) ImGui::TextWrapped("%s", scene_message_.c_str());
 #endif
         if (!edit_error_.empty()) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1.0f}, "%s", edit_error_.c_str());
+        // Last in the panel, so the controls above keep their places.
+        ImGui::Separator();
+        ImGui::TextUnformatted("Part of the path and a lane beside it");
+        bool placed = ImGui::SliderFloat2("range (u)", range_, 0.0f, 1.0f, "%.2f");
+        placed |= ImGui::SliderFloat("offset (sideways)", &offset_, -60.0f, 60.0f, "%.1f");
+        if (placed) restart(true);
     }
 
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
@@ -250,10 +256,11 @@ public:
         double h = anim_.heading();
 #ifdef GRAPE_STUDIO_SCENE
         if (const auto i = timeline_animation()) {  // played by the scene's timelines
-            const double u = timing_.progress(*i, scene_time_);
-            const Vec2 d = shown_.d1(u);
-            p = shown_.point(u);
-            h = std::atan2(d.y, d.x);
+            const SceneAnimation& a = scene_.animations[*i];
+            const double progress = timing_.progress(*i, scene_time_);
+            const Vec2 d = shown_.d1(a.range_start + progress * (a.range_end - a.range_start));
+            p = a.position_at(progress);
+            h = std::atan2(d.y, d.x) + (a.range_end < a.range_start ? pi : 0.0);
         }
         marker_ = p;
         if (!timeline_.empty()) seeking_ = timeline_.draw(dl, {min.x, canvas_max.y}, max, scene_time_);
@@ -323,7 +330,13 @@ private:
     void restart(bool keep_time) {
         const double t = keep_time && anim_ ? anim_.time() : 0.0;
         engine_.kill_all();
-        const AnimationDef def{.curve = curve_, .repeat = repeat_, .reversed = reversed_, .yoyo = yoyo_};
+        const AnimationDef def{.curve = curve_,
+                               .repeat = repeat_,
+                               .reversed = reversed_,
+                               .yoyo = yoyo_,
+                               .range_start = range_[0],
+                               .range_end = range_[1],
+                               .offset = offset_};
         anim_ = engine_.create_animation(shown_, duration_, def);
         ghost_ = engine_.create_animation(other_, duration_, def);
         if (t > 0.0) {
@@ -447,6 +460,9 @@ private:
             a.repeat = repeat_;
             a.yoyo = yoyo_;
             a.reversed = reversed_;
+            a.range_start = range_[0];
+            a.range_end = range_[1];
+            a.offset = offset_;
             scene.animations.push_back(a);
             save_scene_file(scene, scene_file_);
             scene_message_ = std::string("saved ") + scene_file_;
@@ -475,6 +491,9 @@ private:
                 repeat_ = a.repeat;
                 yoyo_ = a.yoyo;
                 reversed_ = a.reversed;
+                range_[0] = float(a.range_start);
+                range_[1] = float(a.range_end);
+                offset_ = float(a.offset);
             }
             arc_length_ = false;
             scene_ = scene;
@@ -522,6 +541,8 @@ private:
     int repeat_ = -1;
     bool reversed_ = false;
     bool yoyo_ = true;
+    float range_[2] = {0.0f, 1.0f};  // the part of the path a play covers (AnimationDef::range_*)
+    float offset_ = 0.0f;            // sideways from the path (AnimationDef::offset)
     bool arc_length_ = false;
     bool compare_ = false;
     bool playing_ = true;
