@@ -20,6 +20,11 @@
 
 namespace grape::studio {
 
+std::vector<std::pair<std::string, Path>>& handed_paths() {
+    static std::vector<std::pair<std::string, Path>> paths;
+    return paths;
+}
+
 namespace {
 
 constexpr float panel_width = 330.0f;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <grape/math.hpp>
+#include <grape/path.hpp>
 
 #include <imgui.h>
 
@@ -118,6 +119,10 @@ std::unique_ptr<Tab> make_draw_tab();
 std::unique_ptr<Tab> make_constraint_tab();
 std::unique_ptr<Tab> make_chain_tab(int particles);
 #endif
+
+/// Paths one tab hands to another (the Draw tab's "Animate in Paths"): the Paths tab takes
+/// them into its list, selecting the last, the next time it is shown.
+std::vector<std::pair<std::string, Path>>& handed_paths();
 
 /// Colours shared by the tabs (ImGui's ABGR packing).
 namespace colour {

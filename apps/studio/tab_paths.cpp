@@ -137,6 +137,11 @@ public:
     }
 
     void controls() override {
+        if (!handed_paths().empty()) {  // drawn in the Draw tab: played here
+            for (auto& [name, path] : handed_paths()) entries_.push_back(entry_from_path(name, path));
+            handed_paths().clear();
+            select(entries_.size() - 1);
+        }
         ImGui::TextUnformatted("Path");
         if (ImGui::BeginListBox("##paths", {-1.0f, 170.0f})) {
             for (std::size_t i = 0; i < entries_.size(); ++i) {
