@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     CLI::App app{"grape: paths, curves, animation and constrained dynamics"};
     app.require_subcommand(1);
     grape::tool::register_demo_command(app);
+    grape::tool::register_list_command(app);
     grape::tool::register_path_commands(app);
     grape::tool::register_ease_command(app);
     grape::tool::register_sprite_commands(app);

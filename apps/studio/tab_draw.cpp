@@ -34,6 +34,8 @@ public:
     const char* name() const noexcept override { return "draw"; }
     const char* title() const noexcept override { return "Draw"; }
 
+    bool pausable() const noexcept override { return false; }  // the marker always runs
+
     void advance(double dt) override {
         if (!fitted_) return;
         time_ = std::fmod(time_ + dt, lap_seconds);

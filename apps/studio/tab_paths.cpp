@@ -7,7 +7,7 @@
 // its animations then play by the scene's time, which the view's playhead seeks.
 #include "studio.hpp"
 
-#include <seed_paths.hpp>
+#include <catalogue.hpp>
 
 #include <grape/anim.hpp>
 #include <grape/curve.hpp>
@@ -72,10 +72,10 @@ Entry entry_from_path(std::string name, const Path& path) {
     return e;
 }
 
+// Every path of the scene catalogue, in its order (the original's, then one of every kind).
 std::vector<Entry> catalogue() {
     std::vector<Entry> entries;
-    for (auto& [name, path] : scenes::seed_paths()) entries.push_back(entry_from_path("seed_" + name, path));
-    for (auto& [name, path] : scenes::path_gallery()) entries.push_back(entry_from_path("gallery_" + name, path));
+    for (const scenes::Entry* e : scenes::entries_of(scenes::Category::path)) entries.push_back(entry_from_path(e->name, e->path()));
     return entries;
 }
 
@@ -119,17 +119,11 @@ public:
     }
 #endif
 
-    void on_event(const SDL_Event& e) override {
-        // Space runs and pauses, unless a text field has the keyboard.
-        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
-            playing_ = !playing_;
-    }
-
     void advance(double dt) override {
-        if (playing_) engine_.tick(dt);
+        engine_.tick(dt);
 #ifdef GRAPE_STUDIO_SCENE
         // The scene's time runs round the view's axis (unless the playhead is held).
-        if (playing_ && !timeline_.empty() && !seeking_) {
+        if (!timeline_.empty() && !seeking_) {
             scene_time_ += dt;
             if (scene_time_ > timeline_.span()) scene_time_ = 0.0;
         }
@@ -195,7 +189,7 @@ public:
         }
         changed |= ImGui::Checkbox("compare with the other parametrization", &compare_);
         if (changed) restart(true);
-        if (ImGui::Button(playing_ ? "Pause" : "Play")) playing_ = !playing_;
+        run_button(true);
         ImGui::SameLine();
         if (ImGui::Button("Restart")) restart(false);
         ImGui::SameLine();
@@ -550,7 +544,6 @@ private:
     float offset_ = 0.0f;            // sideways from the path (AnimationDef::offset)
     bool arc_length_ = false;
     bool compare_ = false;
-    bool playing_ = true;
     bool debug_ = true;
     Path shown_;
     Path other_;
