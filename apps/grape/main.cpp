@@ -18,7 +18,6 @@ int main(int argc, char** argv) {
     CLI::App app{"grape: paths, curves, animation and constrained dynamics"};
     app.require_subcommand(1);
     grape::tool::register_demo_command(app);
-    grape::tool::register_list_command(app);
     grape::tool::register_path_commands(app);
     grape::tool::register_ease_command(app);
     grape::tool::register_sprite_commands(app);
@@ -31,6 +30,7 @@ int main(int argc, char** argv) {
 #ifdef GRAPE_TOOL_SAMPLE
     grape::tool::register_sample_command(app);
 #endif
+    grape::tool::register_list_command(app);
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     if (argc > 1 && argv[1][0] != '-') {
         std::string names;

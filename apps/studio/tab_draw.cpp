@@ -127,12 +127,7 @@ private:
     }
 
     void fit() {
-        fitted_.reset();
-        even_.reset();
-        segments_ = corners_ = 0;
-        max_deviation_ = 0.0;
-        svg_.clear();
-        message_.clear();
+        forget_fit();
         if (points_.empty()) return;
         try {
             const ComplexPath path = fit_path(points_, {.tolerance = tolerance_, .corner_angle = corner_degrees_ * pi / 180.0});
@@ -153,14 +148,18 @@ private:
         }
     }
 
-    void clear() {
-        points_.clear();
+    void forget_fit() {
         fitted_.reset();
         even_.reset();
         segments_ = corners_ = 0;
         max_deviation_ = 0.0;
         svg_.clear();
         message_.clear();
+    }
+
+    void clear() {
+        points_.clear();
+        forget_fit();
     }
 
     std::vector<Vec2> points_;      // the drag, world units
