@@ -21,15 +21,16 @@ int main() {
     const grape::PathFrame f = grape::frame(track, near.u);
     std::printf("tangent (%.3f, %.3f), curvature %.5f /px\n", f.tangent.x, f.tangent.y, f.curvature);
 
-    // A car 12 px beside the centre line, over the middle 60% of the track.
+    // A car 12 px beside the centre line, over the middle 60% of the track, facing its way.
     grape::Engine engine;
-    const grape::Path lane = grape::slice(track, 0.2, 0.8);
-    grape::Vec2 car;
-    engine.create_animation(lane, 3.0, {}, [&car](grape::Vec2 p, double heading) {
-        car = p + grape::perpendicular({std::cos(heading), std::sin(heading)}) * 12.0;
-    });
+    struct Car {
+        double x = 0, y = 0, rotation = 0;
+    } car;
+    engine.create_2d_animation(car, track, 3.0, {.heading = true, .range_start = 0.2, .range_end = 0.8, .offset = 12.0});
     for (int frame = 0; frame < 90; ++frame) engine.tick(1.0 / 60.0);
-    std::printf("car at (%.3f, %.3f), %.3f px from the track\n", car.x, car.y, grape::closest_point(track, car).distance);
+    const grape::Vec2 at{car.x, car.y};
+    std::printf("car at (%.3f, %.3f) heading %.3f rad, %.3f px from the track\n", car.x, car.y, car.rotation,
+                grape::closest_point(track, at).distance);
 
     // A mouse drag: points in, a few smooth Béziers out.
     std::vector<grape::Vec2> drag;
@@ -39,6 +40,6 @@ int main() {
 
     // The answers check themselves: the snap is on the track, the car beside it.
     const bool ok = grape::distance(near.point, track.point(near.u)) == 0.0 &&
-                    std::abs(grape::closest_point(track, car).distance - 12.0) < 1e-9;
+                    std::abs(grape::closest_point(track, at).distance - 12.0) < 1e-9;
     return ok ? 0 : 1;
 }

@@ -11,12 +11,6 @@
 
 namespace grape::scenes {
 
-/// A path with a stable name (for tables, file names and test labels).
-struct NamedPath {
-    std::string name;
-    Path path;
-};
-
 /// The seed's spiral: centre (100, 100), radius 200 → 0 over one turn.
 SpiralPath seed_spiral();
 

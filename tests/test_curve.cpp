@@ -480,6 +480,60 @@ TEST(CurveNames, RoundTripEveryCurve) {
     EXPECT_EQ(grape::curve_names().size(), 41u);
 }
 
+TEST(CurveNames, EveryNameHasItsFactory) {
+    // Written out by hand (not generated from the names), so a name without a factory, or a
+    // factory giving another curve, fails here.
+    const std::vector<std::pair<std::string_view, Curve (*)()>> factories{
+        {"linear", &Curve::linear},
+        {"quad-in", &Curve::quad_in},
+        {"quad-out", &Curve::quad_out},
+        {"quad-in-out", &Curve::quad_in_out},
+        {"quad-out-in", &Curve::quad_out_in},
+        {"cubic-in", &Curve::cubic_in},
+        {"cubic-out", &Curve::cubic_out},
+        {"cubic-in-out", &Curve::cubic_in_out},
+        {"cubic-out-in", &Curve::cubic_out_in},
+        {"quart-in", &Curve::quart_in},
+        {"quart-out", &Curve::quart_out},
+        {"quart-in-out", &Curve::quart_in_out},
+        {"quart-out-in", &Curve::quart_out_in},
+        {"quint-in", &Curve::quint_in},
+        {"quint-out", &Curve::quint_out},
+        {"quint-in-out", &Curve::quint_in_out},
+        {"quint-out-in", &Curve::quint_out_in},
+        {"sine-in", &Curve::sine_in},
+        {"sine-out", &Curve::sine_out},
+        {"sine-in-out", &Curve::sine_in_out},
+        {"sine-out-in", &Curve::sine_out_in},
+        {"expo-in", &Curve::expo_in},
+        {"expo-out", &Curve::expo_out},
+        {"expo-in-out", &Curve::expo_in_out},
+        {"expo-out-in", &Curve::expo_out_in},
+        {"circ-in", &Curve::circ_in},
+        {"circ-out", &Curve::circ_out},
+        {"circ-in-out", &Curve::circ_in_out},
+        {"circ-out-in", &Curve::circ_out_in},
+        {"back-in", &Curve::back_in},
+        {"back-out", &Curve::back_out},
+        {"back-in-out", &Curve::back_in_out},
+        {"back-out-in", &Curve::back_out_in},
+        {"elastic-in", &Curve::elastic_in},
+        {"elastic-out", &Curve::elastic_out},
+        {"elastic-in-out", &Curve::elastic_in_out},
+        {"elastic-out-in", &Curve::elastic_out_in},
+        {"bounce-in", &Curve::bounce_in},
+        {"bounce-out", &Curve::bounce_out},
+        {"bounce-in-out", &Curve::bounce_in_out},
+        {"bounce-out-in", &Curve::bounce_out_in},
+    };
+    ASSERT_EQ(factories.size(), grape::curve_names().size());
+    for (const std::string_view name : grape::curve_names()) {
+        const auto it = std::find_if(factories.begin(), factories.end(), [&](const auto& f) { return f.first == name; });
+        ASSERT_NE(it, factories.end()) << name << " has no factory";
+        EXPECT_EQ(it->second(), grape::parse_curve(name)) << name;
+    }
+}
+
 TEST(CurveNames, UnknownNamesListTheValidOnes) {
     const std::string m = error_text([] { (void)grape::parse_curve("wobble"); });
     EXPECT_NE(m.find("unknown curve name 'wobble'"), std::string::npos) << m;

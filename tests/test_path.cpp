@@ -28,7 +28,7 @@ namespace {
 using grape::Path;
 using grape::Vec2;
 using grape::pi;
-using grape::scenes::NamedPath;
+using grape::NamedPath;
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 

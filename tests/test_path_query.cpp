@@ -33,7 +33,7 @@ using grape::Path;
 using grape::pi;
 using grape::Vec2;
 using grape::lerp;
-using grape::scenes::NamedPath;
+using grape::NamedPath;
 
 // A loop (the cubic crosses itself), SVG data with arcs, separate subpaths and a cusp.
 const char* const svg_loops = "M100 300 C 400 0 -100 0 200 300 L 300 300 A 50 50 0 1 1 300 200 "

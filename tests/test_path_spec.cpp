@@ -19,8 +19,8 @@ using grape::Vec2;
 
 // Every kind (the gallery has one of each), the seed's paths (nested complex ones included),
 // SVG-imported paths, Béziers built by arc length, and the reparametrization of each.
-std::vector<grape::scenes::NamedPath> every_path() {
-    std::vector<grape::scenes::NamedPath> paths = grape::scenes::path_gallery();
+std::vector<grape::NamedPath> every_path() {
+    std::vector<grape::NamedPath> paths = grape::scenes::path_gallery();
     for (auto& p : grape::scenes::seed_paths()) paths.push_back(p);
     paths.push_back({"svg_mixed", grape::parse_svg_path("M10 10 L50 10 Q80 40 50 70 C20 100 0 60 10 40 "
                                                         "A30 20 30 0 1 60 90 H5 V5 Z M100 100 l20 0")});

@@ -124,6 +124,11 @@ export interface AnimationOptions {
   paused?: boolean;
   /** Also track the heading (written to target.rotation by Engine.animate). */
   heading?: boolean;
+  /** The path's u where each play starts and ends, in [0, 1] (default 0 and 1; end < start runs back). */
+  rangeStart?: number;
+  rangeEnd?: number;
+  /** Sideways distance from the path towards its normal, world units (a lane beside a track). */
+  offset?: number;
 }
 
 /** A generation-checked handle: inert once its animation completed or was killed. */

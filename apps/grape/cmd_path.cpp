@@ -142,7 +142,7 @@ void demo_paths(const DemoContext& context) {
     std::snprintf(line, sizeof line, "  %-24s %-18s %12s  %-22s  %-22s\n", "name", "kind", "length", "start",
                   "end");
     out << line;
-    for (const scenes::NamedPath& named : scenes::seed_paths()) {
+    for (const NamedPath& named : scenes::seed_paths()) {
         const Path& path = named.path;
         const Vec2 a = path.point(0.0);
         const Vec2 b = path.point(1.0);

@@ -37,6 +37,7 @@ void register_sample_command(CLI::App& app);  ///< `grape sample SCENE --at T,..
 #endif
 
 void register_demo_command(CLI::App& app);
+void register_list_command(CLI::App& app);  ///< `grape list`: the scene catalogue
 void register_sprite_commands(CLI::App& app);  // empty without the scene module
 
 /// What the running command is doing ("drawing out.png (1920×1080)"), for the message when

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
 #ifdef GRAPE_TOOL_SAMPLE
     grape::tool::register_sample_command(app);
 #endif
+    grape::tool::register_list_command(app);
     // CLI11 would only say "A subcommand is required": name the word it did not know.
     if (argc > 1 && argv[1][0] != '-') {
         std::string names;

@@ -20,6 +20,22 @@
 
 namespace grape::studio {
 
+void Tab::handle_event(const SDL_Event& e) {
+    if (pausable() && e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat &&
+        !ImGui::GetIO().WantTextInput)
+        running_ = !running_;
+    on_event(e);
+}
+
+void Tab::run_button(bool play) {
+    if (ImGui::Button(running_ ? "Pause" : (play ? "Play" : "Run"))) running_ = !running_;
+}
+
+std::vector<std::pair<std::string, Path>>& handed_paths() {
+    static std::vector<std::pair<std::string, Path>> paths;
+    return paths;
+}
+
 namespace {
 
 constexpr float panel_width = 330.0f;
@@ -176,7 +192,7 @@ int run(const Options& options) {
             if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE && e.window.windowID == window_id)
                 running = false;
             event_mouse.see(e);
-            tabs[current]->on_event(e);
+            tabs[current]->handle_event(e);
             ImGui_ImplSDL2_ProcessEvent(&e);
         }
 
@@ -187,7 +203,7 @@ int run(const Options& options) {
         ImGui::NewFrame();
 
         const auto t_advance = clock::now();
-        tabs[current]->advance(frame_dt);
+        tabs[current]->step(frame_dt);
         const auto t_ui = clock::now();
 
         ImGui::SetNextWindowPos({0.0f, 0.0f});

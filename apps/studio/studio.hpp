@@ -4,6 +4,7 @@
 #pragma once
 
 #include <grape/math.hpp>
+#include <grape/path.hpp>
 
 #include <imgui.h>
 
@@ -94,20 +95,37 @@ public:
     virtual const char* name() const noexcept = 0;
     /// Label on the tab bar.
     virtual const char* title() const noexcept = 0;
-    /// Advances the tab's simulation or animations by dt seconds (only the visible tab runs).
+    /// Advances the tab's simulation or animations by dt seconds: called by step() while the
+    /// tab runs (only the visible tab runs).
     virtual void advance(double dt) = 0;
     /// The widgets of the left-hand panel.
     virtual void controls() = 0;
     /// Draws into the canvas and handles the mouse there. `min`/`max`: the canvas rectangle.
     virtual void draw(ImDrawList* draw_list, ImVec2 min, ImVec2 max) = 0;
-    /// Sees every SDL event (keys for the keys tab) before ImGui does.
+    /// Sees every SDL event (keys for the keys tab) before ImGui does, after handle_event.
     virtual void on_event(const SDL_Event&) {}
+    /// Tabs that run and pause (Space, the Run/Pause button); the Keys tab takes Space as a key.
+    virtual bool pausable() const noexcept { return true; }
+
+    /// One frame of the fixed step: advance(dt) while running.
+    void step(double dt) {
+        if (running_ || !pausable()) advance(dt);
+    }
+    /// Space runs and pauses a pausable tab, unless a text field has the keyboard; then on_event.
+    void handle_event(const SDL_Event& e);
+    bool running() const noexcept { return running_; }
+    void set_running(bool running) noexcept { running_ = running; }
+    /// The Run/Pause button ("Play"/"Pause" with play = true) on the tab's panel.
+    void run_button(bool play = false);
     /// Called once after the window's renderer exists (textures).
     virtual void attach(SDL_Renderer*) {}
     /// Called before the renderer goes away.
     virtual void detach() {}
     /// The tab's state as `key: value` lines, for scripted checks.
     virtual void report(std::ostream&) const {}
+
+private:
+    bool running_ = true;
 };
 
 std::unique_ptr<Tab> make_paths_tab(const std::string& initial_path);
@@ -118,6 +136,10 @@ std::unique_ptr<Tab> make_draw_tab();
 std::unique_ptr<Tab> make_constraint_tab();
 std::unique_ptr<Tab> make_chain_tab(int particles);
 #endif
+
+/// Paths one tab hands to another (the Draw tab's "Animate in Paths"): the Paths tab takes
+/// them into its list, selecting the last, the next time it is shown.
+std::vector<std::pair<std::string, Path>>& handed_paths();
 
 /// Colours shared by the tabs (ImGui's ABGR packing).
 namespace colour {

@@ -50,14 +50,7 @@ public:
     const char* name() const noexcept override { return "chain"; }
     const char* title() const noexcept override { return "Chain"; }
 
-    void on_event(const SDL_Event& e) override {
-        // Space runs and pauses, unless a text field has the keyboard.
-        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
-            running_ = !running_;
-    }
-
     void advance(double dt) override {
-        if (!running_) return;
         const auto start = std::chrono::steady_clock::now();
         if (system_->grabbed()) system_->move_grab(mouse_);
         const StepReport r = system_->step(dt);
@@ -81,7 +74,7 @@ public:
         static const std::vector<const char*> drift_names = names(all_drift_controls());
         changed |= ImGui::Combo("drift control", &drift_, drift_names.data(), int(drift_names.size()));
         if (changed) reset();
-        if (ImGui::Button(running_ ? "Pause" : "Run")) running_ = !running_;
+        run_button();
         ImGui::SameLine();
         if (ImGui::Button("Reset")) reset();
         ImGui::Separator();
@@ -175,7 +168,6 @@ private:
     int drift_ = int(DriftControl::projection);  // for the others: long chains yanked by the mouse need it
     double spacing_ = 0.0;
     int substeps_ = 1;
-    bool running_ = true;
     int columns_ = 0;
     int rows_ = 0;
     std::optional<ParticleSystem> system_;

@@ -52,14 +52,8 @@ public:
     const char* name() const noexcept override { return "constraint"; }
     const char* title() const noexcept override { return "Constraint"; }
 
-    void on_event(const SDL_Event& e) override {
-        // Space runs and pauses, unless a text field has the keyboard.
-        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
-            running_ = !running_;
-    }
-
     void advance(double dt) override {
-        if (!running_ || dragging_ >= 0) return;
+        if (dragging_ >= 0) return;
         budget_ += dt * double(speed_);
         const double h = double(step_);
         // Bounded work per frame: a tiny dt at high speed slows down instead of freezing.
@@ -100,7 +94,7 @@ public:
         if (feedback_) changed |= ImGui::SliderFloat("omega*dt", &omega_dt_, 0.01f, 0.5f, "%.2f");
         ImGui::SliderFloat("speed (x real time)", &speed_, 0.25f, 60.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
         if (changed) reset();
-        if (ImGui::Button(running_ ? "Pause" : "Run")) running_ = !running_;
+        run_button();
         ImGui::SameLine();
         if (ImGui::Button("Reset")) reset();
         ImGui::SameLine();
@@ -208,7 +202,6 @@ private:
     bool feedback_ = false;
     float omega_dt_ = 0.05f;
     float speed_ = 1.0f;
-    bool running_ = true;
     double x0_ = 100.0;
     int dragging_ = -1;
     ImVec2 screen_[2];  // where the particles were drawn last frame, for reports

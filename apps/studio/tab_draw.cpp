@@ -34,6 +34,8 @@ public:
     const char* name() const noexcept override { return "draw"; }
     const char* title() const noexcept override { return "Draw"; }
 
+    bool pausable() const noexcept override { return false; }  // the marker always runs
+
     void advance(double dt) override {
         if (!fitted_) return;
         time_ = std::fmod(time_ + dt, lap_seconds);
@@ -49,6 +51,14 @@ public:
         const bool angle_moved = ImGui::SliderFloat("corner angle", &corner_degrees_, 10.0f, 180.0f, "%.0f deg");
         if ((tolerance_moved || angle_moved) && !drawing_) fit();
         if (ImGui::Button("Clear")) clear();
+        if (fitted_) {
+            ImGui::SameLine();
+            if (ImGui::Button("Animate in Paths")) {  // play it there with curves, ranges and offsets
+                const std::string name = "drawn_" + std::to_string(++handed_);
+                handed_paths().emplace_back(name, *fitted_);
+                message_ = "sent to the Paths tab as " + name;
+            }
+        }
         ImGui::Separator();
         ImGui::Text("points recorded: %zu", points_.size());
         if (fitted_) {
@@ -90,9 +100,9 @@ public:
     }
 
     void report(std::ostream& out) const override {
-        out << "points: " << points_.size() << "\nsegments: " << segments_ << "\ncorners: " << corners_
+        out << "handed: " << handed_ << "\npoints: " << points_.size() << "\nsegments: " << segments_ << "\ncorners: " << corners_
             << "\ntolerance: " << tolerance_ << "\nmax_deviation: " << max_deviation_
-            << "\nfitted: " << (fitted_ ? 1 : 0) << "\nsvg: " << svg_ << "\n";
+            << "\nfitted: " << (fitted_ ? 1 : 0) << "\nlength: " << (fitted_ ? fitted_->length() : 0.0) << "\nsvg: " << svg_ << "\n";
         if (fitted_) {
             const Vec2 a = fitted_->point(0.0), b = fitted_->point(1.0);
             out << "start: " << a.x << ' ' << a.y << "\nend: " << b.x << ' ' << b.y << "\n";
@@ -117,12 +127,7 @@ private:
     }
 
     void fit() {
-        fitted_.reset();
-        even_.reset();
-        segments_ = corners_ = 0;
-        max_deviation_ = 0.0;
-        svg_.clear();
-        message_.clear();
+        forget_fit();
         if (points_.empty()) return;
         try {
             const ComplexPath path = fit_path(points_, {.tolerance = tolerance_, .corner_angle = corner_degrees_ * pi / 180.0});
@@ -143,14 +148,18 @@ private:
         }
     }
 
-    void clear() {
-        points_.clear();
+    void forget_fit() {
         fitted_.reset();
         even_.reset();
         segments_ = corners_ = 0;
         max_deviation_ = 0.0;
         svg_.clear();
         message_.clear();
+    }
+
+    void clear() {
+        points_.clear();
+        forget_fit();
     }
 
     std::vector<Vec2> points_;      // the drag, world units
@@ -165,6 +174,7 @@ private:
     std::string svg_;
     std::string message_;
     double time_ = 0.0;             // seconds into the marker's lap
+    int handed_ = 0;                // fits sent to the Paths tab
 };
 
 }  // namespace

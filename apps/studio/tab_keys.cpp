@@ -75,6 +75,7 @@ public:
     }
 
     void advance(double) override { ++frame_; }
+    bool pausable() const noexcept override { return false; }  // Space is a key here
 
     void controls() override {
         ImGui::TextWrapped("grape::KeyState holds the keys down as bits, one per SDL scancode, with "

@@ -7,7 +7,7 @@
 // its animations then play by the scene's time, which the view's playhead seeks.
 #include "studio.hpp"
 
-#include <seed_paths.hpp>
+#include <catalogue.hpp>
 
 #include <grape/anim.hpp>
 #include <grape/curve.hpp>
@@ -72,10 +72,10 @@ Entry entry_from_path(std::string name, const Path& path) {
     return e;
 }
 
+// Every path of the scene catalogue, in its order (the original's, then one of every kind).
 std::vector<Entry> catalogue() {
     std::vector<Entry> entries;
-    for (auto& [name, path] : scenes::seed_paths()) entries.push_back(entry_from_path("seed_" + name, path));
-    for (auto& [name, path] : scenes::path_gallery()) entries.push_back(entry_from_path("gallery_" + name, path));
+    for (const scenes::Entry* e : scenes::entries_of(scenes::Category::path)) entries.push_back(entry_from_path(e->name, e->path()));
     return entries;
 }
 
@@ -119,17 +119,11 @@ public:
     }
 #endif
 
-    void on_event(const SDL_Event& e) override {
-        // Space runs and pauses, unless a text field has the keyboard.
-        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
-            playing_ = !playing_;
-    }
-
     void advance(double dt) override {
-        if (playing_) engine_.tick(dt);
+        engine_.tick(dt);
 #ifdef GRAPE_STUDIO_SCENE
         // The scene's time runs round the view's axis (unless the playhead is held).
-        if (playing_ && !timeline_.empty() && !seeking_) {
+        if (!timeline_.empty() && !seeking_) {
             scene_time_ += dt;
             if (scene_time_ > timeline_.span()) scene_time_ = 0.0;
         }
@@ -137,6 +131,11 @@ public:
     }
 
     void controls() override {
+        if (!handed_paths().empty()) {  // drawn in the Draw tab: played here
+            for (auto& [name, path] : handed_paths()) entries_.push_back(entry_from_path(name, path));
+            handed_paths().clear();
+            select(entries_.size() - 1);
+        }
         ImGui::TextUnformatted("Path");
         if (ImGui::BeginListBox("##paths", {-1.0f, 170.0f})) {
             for (std::size_t i = 0; i < entries_.size(); ++i) {
@@ -190,7 +189,7 @@ public:
         }
         changed |= ImGui::Checkbox("compare with the other parametrization", &compare_);
         if (changed) restart(true);
-        if (ImGui::Button(playing_ ? "Pause" : "Play")) playing_ = !playing_;
+        run_button(true);
         ImGui::SameLine();
         if (ImGui::Button("Restart")) restart(false);
         ImGui::SameLine();
@@ -207,6 +206,12 @@ public:
         if (!scene_message_.empty()) ImGui::TextWrapped("%s", scene_message_.c_str());
 #endif
         if (!edit_error_.empty()) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1.0f}, "%s", edit_error_.c_str());
+        // Last in the panel, so the controls above keep their places.
+        ImGui::Separator();
+        ImGui::TextUnformatted("Part of the path and a lane beside it");
+        bool placed = ImGui::SliderFloat2("range (u)", range_, 0.0f, 1.0f, "%.2f");
+        placed |= ImGui::SliderFloat("offset (sideways)", &offset_, -60.0f, 60.0f, "%.1f");
+        if (placed) restart(true);
     }
 
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
@@ -250,10 +255,11 @@ public:
         double h = anim_.heading();
 #ifdef GRAPE_STUDIO_SCENE
         if (const auto i = timeline_animation()) {  // played by the scene's timelines
-            const double u = timing_.progress(*i, scene_time_);
-            const Vec2 d = shown_.d1(u);
-            p = shown_.point(u);
-            h = std::atan2(d.y, d.x);
+            const SceneAnimation& a = scene_.animations[*i];
+            const double progress = timing_.progress(*i, scene_time_);
+            const Vec2 d = shown_.d1(a.range_start + progress * (a.range_end - a.range_start));
+            p = a.position_at(progress);
+            h = std::atan2(d.y, d.x) + (a.range_end < a.range_start ? pi : 0.0);
         }
         marker_ = p;
         if (!timeline_.empty()) seeking_ = timeline_.draw(dl, {min.x, canvas_max.y}, max, scene_time_);
@@ -323,7 +329,13 @@ private:
     void restart(bool keep_time) {
         const double t = keep_time && anim_ ? anim_.time() : 0.0;
         engine_.kill_all();
-        const AnimationDef def{.curve = curve_, .repeat = repeat_, .reversed = reversed_, .yoyo = yoyo_};
+        const AnimationDef def{.curve = curve_,
+                               .repeat = repeat_,
+                               .reversed = reversed_,
+                               .yoyo = yoyo_,
+                               .range_start = range_[0],
+                               .range_end = range_[1],
+                               .offset = offset_};
         anim_ = engine_.create_animation(shown_, duration_, def);
         ghost_ = engine_.create_animation(other_, duration_, def);
         if (t > 0.0) {
@@ -447,6 +459,9 @@ private:
             a.repeat = repeat_;
             a.yoyo = yoyo_;
             a.reversed = reversed_;
+            a.range_start = range_[0];
+            a.range_end = range_[1];
+            a.offset = offset_;
             scene.animations.push_back(a);
             save_scene_file(scene, scene_file_);
             scene_message_ = std::string("saved ") + scene_file_;
@@ -475,6 +490,9 @@ private:
                 repeat_ = a.repeat;
                 yoyo_ = a.yoyo;
                 reversed_ = a.reversed;
+                range_[0] = float(a.range_start);
+                range_[1] = float(a.range_end);
+                offset_ = float(a.offset);
             }
             arc_length_ = false;
             scene_ = scene;
@@ -522,9 +540,10 @@ private:
     int repeat_ = -1;
     bool reversed_ = false;
     bool yoyo_ = true;
+    float range_[2] = {0.0f, 1.0f};  // the part of the path a play covers (AnimationDef::range_*)
+    float offset_ = 0.0f;            // sideways from the path (AnimationDef::offset)
     bool arc_length_ = false;
     bool compare_ = false;
-    bool playing_ = true;
     bool debug_ = true;
     Path shown_;
     Path other_;

@@ -113,14 +113,7 @@ public:
         renderer_ = nullptr;
     }
 
-    void on_event(const SDL_Event& e) override {
-        // Space runs and pauses, unless a text field has the keyboard.
-        if (e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_SPACE && !e.key.repeat && !ImGui::GetIO().WantTextInput)
-            running_ = !running_;
-    }
-
     void advance(double dt) override {
-        if (!running_) return;
         if (per_frame_) {
             // The seed's way: one advance per game frame, `rate` frames each.
             sheet_player_.advance();
@@ -160,7 +153,7 @@ public:
             sheet_player_.set_mode(m);
             list_player_.set_mode(m);
         }
-        if (ImGui::Button(running_ ? "Pause" : "Run")) running_ = !running_;
+        run_button();
         ImGui::SameLine();
         if (ImGui::Button("Step")) {
             sheet_player_.advance();
@@ -220,7 +213,7 @@ public:
 
     void report(std::ostream& out) const override {
         out << "rate: " << sheet_player_.rate() << "\nsheet_frame: " << sprite_.current_frame()
-            << "\nlist_frame: " << list_.shown << "\nrunning: " << running_ << "\n";
+            << "\nlist_frame: " << list_.shown << "\nrunning: " << running() << "\n";
 #ifdef GRAPE_STUDIO_SHEETS
         if (clip_player_) {
             out << "clip: " << loaded_->clips()[clip_player_->clip()].name << "\nclip_frame: " << clip_player_->frame()
@@ -329,7 +322,6 @@ private:
     float fps_ = 12.0f;
     int mode_ = 0;
     bool per_frame_ = false;
-    bool running_ = true;
     [[maybe_unused]] std::string sheet_file_option_;  // --sheet ("": grape's own sheet)
     SheetImage image_;
     TileSheet sheet_;

@@ -85,6 +85,15 @@ struct AnimationDef {
     bool overwrite = false;   ///< when its first play begins, kill the target's other started
                               ///< animations that write any of the same bytes (GSAP's
                               ///< overwrite "auto"); found through the target index
+    double range_start = 0.0; ///< path animations: the path's u where each play starts, in
+                              ///< [0, 1] (GSAP's motion-path `start`); the play covers
+                              ///< u = range_start + progress·(range_end − range_start)
+    double range_end = 1.0;   ///< the path's u where each play ends, in [0, 1]; below
+                              ///< range_start the part runs backwards (GSAP's `end`)
+    double offset = 0.0;      ///< 2-D path animations: sideways distance from the path, world
+                              ///< units, towards its normal (offset_point: point + d·normal,
+                              ///< a car in a lane; Godot's h_offset); the heading stays the
+                              ///< path's direction of travel
 };
 
 // --- the timing model: pure functions of time ------------------------------------------------

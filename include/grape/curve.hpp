@@ -231,6 +231,8 @@ public:
     /// The Penner curve of a family and direction, canonical constants.
     Curve(EaseFamily family, EaseDirection direction) noexcept;
 
+    /// A factory for every named Penner curve (curve_names(): "quad-in" is quad_in()), canonical
+    /// constants.
     static Curve linear() noexcept { return Curve(); }
     static Curve quad_in() noexcept { return {EaseFamily::quad, EaseDirection::in}; }
     static Curve quad_out() noexcept { return {EaseFamily::quad, EaseDirection::out}; }
@@ -238,8 +240,30 @@ public:
     static Curve cubic_in() noexcept { return {EaseFamily::cubic, EaseDirection::in}; }
     static Curve cubic_out() noexcept { return {EaseFamily::cubic, EaseDirection::out}; }
     static Curve cubic_in_out() noexcept { return {EaseFamily::cubic, EaseDirection::in_out}; }
+    static Curve quart_in() noexcept { return {EaseFamily::quart, EaseDirection::in}; }
+    static Curve quart_out() noexcept { return {EaseFamily::quart, EaseDirection::out}; }
+    static Curve quart_in_out() noexcept { return {EaseFamily::quart, EaseDirection::in_out}; }
+    static Curve quint_in() noexcept { return {EaseFamily::quint, EaseDirection::in}; }
+    static Curve quint_out() noexcept { return {EaseFamily::quint, EaseDirection::out}; }
+    static Curve quint_in_out() noexcept { return {EaseFamily::quint, EaseDirection::in_out}; }
+    static Curve sine_in() noexcept { return {EaseFamily::sine, EaseDirection::in}; }
+    static Curve sine_out() noexcept { return {EaseFamily::sine, EaseDirection::out}; }
     static Curve sine_in_out() noexcept { return {EaseFamily::sine, EaseDirection::in_out}; }
+    static Curve expo_in() noexcept { return {EaseFamily::expo, EaseDirection::in}; }
+    static Curve expo_out() noexcept { return {EaseFamily::expo, EaseDirection::out}; }
+    static Curve expo_in_out() noexcept { return {EaseFamily::expo, EaseDirection::in_out}; }
+    static Curve circ_in() noexcept { return {EaseFamily::circ, EaseDirection::in}; }
+    static Curve circ_out() noexcept { return {EaseFamily::circ, EaseDirection::out}; }
+    static Curve circ_in_out() noexcept { return {EaseFamily::circ, EaseDirection::in_out}; }
+    static Curve back_in() noexcept { return {EaseFamily::back, EaseDirection::in}; }
+    static Curve back_out() noexcept { return {EaseFamily::back, EaseDirection::out}; }
+    static Curve back_in_out() noexcept { return {EaseFamily::back, EaseDirection::in_out}; }
+    static Curve elastic_in() noexcept { return {EaseFamily::elastic, EaseDirection::in}; }
+    static Curve elastic_out() noexcept { return {EaseFamily::elastic, EaseDirection::out}; }
+    static Curve elastic_in_out() noexcept { return {EaseFamily::elastic, EaseDirection::in_out}; }
+    static Curve bounce_in() noexcept { return {EaseFamily::bounce, EaseDirection::in}; }
     static Curve bounce_out() noexcept { return {EaseFamily::bounce, EaseDirection::out}; }
+    static Curve bounce_in_out() noexcept { return {EaseFamily::bounce, EaseDirection::in_out}; }
     /// Out-in of a family: out to ½, then in (canonical constants).
     static Curve out_in(EaseFamily family) noexcept { return {family, EaseDirection::out_in}; }
     static Curve quad_out_in() noexcept { return out_in(EaseFamily::quad); }

@@ -441,6 +441,13 @@ private:
     double to_;
 };
 
+/// A path with a name: a scene's "paths" (referred to by animations), the scene catalogue's
+/// lists, tables and file names.
+struct NamedPath {
+    std::string name;  ///< unique within its list, not empty
+    Path path;         ///< the shape
+};
+
 /// N numbers moving together through keyframes (N ≥ 1, ≥ 2 keyframes, u spread evenly over
 /// the segments, linear between keyframes): the path of a property animation.
 class PathND {

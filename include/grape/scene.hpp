@@ -30,12 +30,6 @@
 
 namespace grape {
 
-/// A path with a name, listed in the scene's "paths" and referred to by animations.
-struct NamedPath {
-    std::string name;  ///< unique within the scene, not empty
-    Path path;         ///< the shape
-};
-
 /// A curve with a name, listed in the scene's "curves" and referred to by animations.
 struct NamedCurve {
     std::string name;  ///< unique within the scene, not empty

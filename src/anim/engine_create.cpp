@@ -47,6 +47,24 @@ void validate(std::string_view where, double duration, const AnimationDef& def) 
                     std::to_string(def.repeat) + ", repeat_delay " + number_text(def.repeat_delay) + ")");
 }
 
+namespace {
+
+bool has_range(const AnimationDef& def) noexcept { return def.range_start != 0.0 || def.range_end != 1.0; }
+
+// The part of the path a play covers and the sideways offset: numbers the point can use.
+void validate_placement(std::string_view where, const AnimationDef& def, bool sideways) {
+    const std::string w(where);
+    for (const auto& [name, u] : {std::pair{"range_start", def.range_start}, std::pair{"range_end", def.range_end}})
+        if (!(u >= 0.0 && u <= 1.0))
+            throw Error(w + ": " + name + " must be in [0, 1] (got " + number_text(u) + ")");
+    if (!std::isfinite(def.offset))
+        throw Error(w + ": offset must be finite (got " + number_text(def.offset) + ")");
+    if (!sideways && def.offset != 0.0)
+        throw Error(w + ": offset applies to 2-D path animations only (got " + number_text(def.offset) + ")");
+}
+
+}  // namespace
+
 Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay,
                           std::optional<Extra> extra) {
     std::uint32_t slot;
@@ -87,7 +105,9 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int rep
 Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
                              std::ptrdiff_t rotation_offset, const Path& path, double duration,
                              const AnimationDef& def, std::function<void(Vec2, double)> on_update, Bind bind) {
-    validate(target ? "create_2d_animation" : "create_animation", duration, def);
+    const char* where = target ? "create_2d_animation" : "create_animation";
+    validate(where, duration, def);
+    validate_placement(where, def, true);
     const auto y_from_x = static_cast<std::ptrdiff_t>(y_offset) - static_cast<std::ptrdiff_t>(x_offset);
     if (y_from_x < -32768 || y_from_x > 32767)
         throw Error("create_2d_animation: target.x and target.y must lie within 32 KiB of each other (got " +
@@ -100,7 +120,7 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
     h.flags = static_cast<std::uint8_t>((is_float ? flag_float : 0) | (def.paused ? flag_paused : 0) |
                                         (def.yoyo ? flag_yoyo : 0) | (def.reversed ? flag_reversed : 0));
     std::optional<Extra> extra;
-    if (def.heading || on_update || bind.ref || def.overwrite) {
+    if (def.heading || on_update || bind.ref || def.overwrite || has_range(def) || def.offset != 0.0) {
         extra.emplace();
         extra->track_heading = def.heading;
         extra->write_rotation = target && rotation_offset >= 0;
@@ -113,6 +133,9 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
         extra->heading_offset = def.heading_offset;
         extra->heading_continuous = def.heading_continuous;
         extra->still = 1e-12 * path.length();  // |d1| ~ length: round-off of d1 at a cusp is far below
+        extra->range_start = def.range_start;
+        extra->range_end = def.range_end;
+        extra->offset = def.offset;
         h.flags |= flag_custom;
     }
     if (def.repeat_delay > 0.0 && def.repeat != 0) {
@@ -131,6 +154,7 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
                                 const AnimationDef& def, std::function<void(std::span<const double>)> on_update) {
     const char* where = target ? "create_property_animation" : "create_animation";
     validate(where, duration, def);
+    validate_placement(where, def, false);
     if (target && members.size() != path.dimension())
         throw Error(std::string(where) + ": members and values must match (" + std::to_string(members.size()) +
                     " members, " + std::to_string(path.dimension()) + " values)");
@@ -141,8 +165,10 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
                                         (def.reversed ? flag_reversed : 0));
     Extra extra;
+    extra.range_start = def.range_start;
+    extra.range_end = def.range_end;
     extra.values.assign(path.dimension(), 0.0);
-    path.point(def.reversed ? 1.0 : 0.0, extra.values);  // the start values, readable while waiting
+    path.point(along_range(extra, def.reversed ? 1.0 : 0.0), extra.values);  // the start values, readable while waiting
     extra.nd.emplace(std::move(path));
     extra.members = std::move(members);
     if (on_update)

@@ -98,9 +98,16 @@ struct Extra {
     double heading_offset = 0.0;
     double still = 0.0;                   // |d1| at or below this: a cusp; the heading stays
     double time_scale = 0.0;              // Cold::scale_ulps == scale_in_extra: the exact scale
+    double range_start = 0.0;             // AnimationDef::range_start, range_end, offset: the
+    double range_end = 1.0;               // path's u = range_start + u·(range_end − range_start),
+    double offset = 0.0;                  // drawn `offset` beside the path
     double repeat_gap = 0.0;              // repeat delay in plays (its record has flag_listens,
                                           // so play ends take the slow path that reads it)
 };
+
+/// The path's u for eased progress u under the record's range (u itself for the default
+/// [0, 1]: 0 + u·1 is u exactly).
+inline double along_range(const Extra& e, double u) noexcept { return e.range_start + u * (e.range_end - e.range_start); }
 
 /// Cold::scale_ulps when the exact scale is kept in Extra::time_scale.
 inline constexpr std::int8_t scale_in_extra = INT8_MIN;

@@ -2,6 +2,7 @@
 #include "engine_impl.hpp"
 
 #include <grape/error.hpp>
+#include <grape/path_query.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,13 +20,24 @@ double EngineImpl::progress_of(std::uint32_t dense) const noexcept {
     return ease(h.kind, cold_[dense].curve, (h.flags & flag_backward) ? 1.0 - phase : phase);
 }
 
-Vec2 EngineImpl::value_of(std::uint32_t dense) const noexcept { return point(hot_[dense].path, progress_of(dense)); }
+Vec2 EngineImpl::value_of(std::uint32_t dense) const noexcept {
+    const Hot& h = hot_[dense];
+    const double u = progress_of(dense);
+    if (const Extra* e = (h.flags & flag_custom) ? extra(cold_[dense].slot) : nullptr) {
+        const double at = along_range(*e, u);
+        return e->offset == 0.0 ? point(h.path, at) : offset_point(paths_[h.path].path, at, e->offset);
+    }
+    return point(h.path, u);
+}
 
 double EngineImpl::heading_of(std::uint32_t dense) const noexcept {
     const Hot& h = hot_[dense];
-    if (const Extra* e = extra(cold_[dense].slot); e && e->track_heading) return e->heading;
-    const double angle = paths_[h.path].path.heading(progress_of(dense));
-    return (h.flags & flag_backward) ? std::remainder(angle + pi, 2.0 * pi) : angle;
+    const Extra* e = extra(cold_[dense].slot);
+    if (e && e->track_heading) return e->heading;
+    const double u = progress_of(dense);
+    const double angle = paths_[h.path].path.heading(e ? along_range(*e, u) : u);
+    const bool backward = ((h.flags & flag_backward) != 0) != (e && e->range_end < e->range_start);
+    return backward ? std::remainder(angle + pi, 2.0 * pi) : angle;
 }
 
 // The state at the record's time, written to wherever it goes. Handlers may run.
@@ -40,7 +52,7 @@ void EngineImpl::write_state(std::uint32_t dense) {
     Extra& e = extras_.find(cold_[dense].slot)->second;  // node-based: stable while handlers run
     if (!begin_write(dense, e, u)) return;  // linked targets, the first play's start, typed values
     if (e.nd) {
-        e.nd->point(u, e.values);
+        e.nd->point(along_range(e, u), e.values);
         char* base = h.target;
         if (base) {
             for (std::size_t k = 0; k < e.members.size(); ++k) {
@@ -61,8 +73,10 @@ void EngineImpl::write_state(std::uint32_t dense) {
         return;
     }
     const Path& path = paths_[h.path].path;
-    const Vec2 p = point(h.path, u);
-    e.heading = next_heading(path, u, (h.flags & flag_backward) != 0, e);
+    const double at = along_range(e, u);
+    const Vec2 p = e.offset == 0.0 ? point(h.path, at) : offset_point(path, at, e.offset);
+    const bool backward = ((h.flags & flag_backward) != 0) != (e.range_end < e.range_start);
+    e.heading = next_heading(path, at, backward, e);
     if (h.target) {
         write_2d(h, p);
         if (e.write_rotation) {

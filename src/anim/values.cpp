@@ -12,6 +12,8 @@ namespace grape::detail {
 Animation EngineImpl::create_value(void* object, std::unique_ptr<TargetRef> ref, std::unique_ptr<ValueTrack> track,
                                    double duration, const AnimationDef& def) {
     validate("animate", duration, def);
+    if (def.range_start != 0.0 || def.range_end != 1.0 || def.offset != 0.0)
+        throw Error("animate: range_start, range_end and offset apply to path animations, not to typed values");
     if (!object) throw Error("animate: the target is null");
     Hot h{};
     h.rate = def.time_scale / duration;

@@ -149,9 +149,10 @@ inline void shift_down_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs)
 }
 #endif
 
-// The whole-word part of a shift is a memmove, the rest a vector loop.
-template <class V>
-GRAPE_INLINE void shift_up_words(Word* w, std::size_t n, std::size_t s) noexcept {
+// The whole-word part of a shift is a memmove, the rest a vector loop; `up` moves bit i to
+// i + s (towards the end of the array), else to i − s.
+template <class V, bool up>
+GRAPE_INLINE void shift_words(Word* w, std::size_t n, std::size_t s) noexcept {
     if (n == 0) return;  // (w may be null: no memset on it)
     const std::size_t ws = s / 64;
     const unsigned bs = static_cast<unsigned>(s % 64);
@@ -159,29 +160,15 @@ GRAPE_INLINE void shift_up_words(Word* w, std::size_t n, std::size_t s) noexcept
         std::memset(w, 0, n * sizeof(Word));
         return;
     }
-    if (bs == 0) {
-        std::memmove(w + ws, w, (n - ws) * sizeof(Word));
-    } else {
-        shift_up_loop<V>(w, n, ws, bs);
-    }
-    std::memset(w, 0, ws * sizeof(Word));
+    if (bs == 0) std::memmove(up ? w + ws : w, up ? w : w + ws, (n - ws) * sizeof(Word));
+    else if constexpr (up) shift_up_loop<V>(w, n, ws, bs);
+    else shift_down_loop<V>(w, n, ws, bs);
+    std::memset(up ? w : w + (n - ws), 0, ws * sizeof(Word));  // the words shifted in
 }
 template <class V>
-GRAPE_INLINE void shift_down_words(Word* w, std::size_t n, std::size_t s) noexcept {
-    if (n == 0) return;  // (w may be null: no memset on it)
-    const std::size_t ws = s / 64;
-    const unsigned bs = static_cast<unsigned>(s % 64);
-    if (ws >= n) {
-        std::memset(w, 0, n * sizeof(Word));
-        return;
-    }
-    if (bs == 0) {
-        std::memmove(w, w + ws, (n - ws) * sizeof(Word));
-    } else {
-        shift_down_loop<V>(w, n, ws, bs);
-    }
-    std::memset(w + (n - ws), 0, ws * sizeof(Word));
-}
+GRAPE_INLINE void shift_up_words(Word* w, std::size_t n, std::size_t s) noexcept { shift_words<V, true>(w, n, s); }
+template <class V>
+GRAPE_INLINE void shift_down_words(Word* w, std::size_t n, std::size_t s) noexcept { shift_words<V, false>(w, n, s); }
 
 // Four accumulators keep the popcnt units busy (one chain would be latency bound).
 GRAPE_INLINE std::size_t count_loop(const Word* w, std::size_t n) noexcept {

@@ -202,6 +202,9 @@ ordered scene_json(const Scene& scene) {
 AnimationDef SceneAnimation::def() const noexcept {
     AnimationDef d{.curve = curve, .delay = delay, .repeat = repeat, .reversed = reversed, .yoyo = yoyo};
     d.repeat_delay = repeat_delay;
+    d.range_start = range_start;
+    d.range_end = range_end;
+    d.offset = offset;
     return d;
 }
 

@@ -33,6 +33,9 @@ AnimationDef animation_def(const val& o) {
     def.time_scale = number_or(o, "timeScale", def.time_scale, where);
     def.paused = bool_or(o, "paused", def.paused);
     def.heading = bool_or(o, "heading", def.heading);
+    def.range_start = number_or(o, "rangeStart", def.range_start, where);
+    def.range_end = number_or(o, "rangeEnd", def.range_end, where);
+    def.offset = number_or(o, "offset", def.offset, where);
     return def;
 }
 

@@ -126,6 +126,15 @@ test('grape-wasm API', async (t) => {
       assert.ok(Math.abs(xy[2 * i] - 100 * u) <= 1e-12 * 100, `slot ${i}: ${xy[2 * i]} vs ${100 * u}`);
       assert.ok(Math.abs(xy[2 * i + 1] - 50 * u) <= 1e-12 * 50);
     }
+    // A part of a path at a sideways offset: u from 0.25 to 0.75 of a +x line, 2 beside it
+    // (the normal of +x is +y); dyadic numbers, so exact.
+    const lane = new g.Engine(2);
+    const straight = g.Path.linear({ x: 0, y: 0 }, { x: 128, y: 0 });
+    lane.add(straight, 1, { rangeStart: 0.25, rangeEnd: 0.75, offset: 2 });
+    lane.tick(0.5);
+    assert.deepStrictEqual(Array.from(lane.positions()), [64, 2]);
+    assert.throws(() => lane.add(straight, 1, { rangeEnd: 2 }), /range_end/);
+    lane.delete(); straight.delete();
     // Writing into JS objects.
     const target = { x: -1, y: -1 };
     const small = new g.Engine(0);
