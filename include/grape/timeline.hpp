@@ -36,8 +36,11 @@
 //
 // Handlers may create, kill, pause, seek or reverse anything, this timeline included. A
 // handler that seeks, pauses, reverses, re-times or kills a timeline ends that timeline's
-// update where the handler ran (the rest of that dt is dropped for it); adding children
-// from a handler applies at once. Nested timelines are driven by their parent: pause,
+// update (the rest of that dt is dropped for it): it keeps the time its update had reached
+// (the point where the handler ran; the end of that tick's step when the handler ran inside
+// a child running across it), and whatever in it had not been brought there yet goes there
+// silently, so its state is the one seek gives for that time. Adding children from a handler
+// applies at once (a longer play moves where the time falls in it, not the time). Nested timelines are driven by their parent: pause,
 // resume, seek, reverse, play and set_time_scale on them are ignored.
 //
 // Cost: a tick walks the top-level timelines; each advances only its children that are

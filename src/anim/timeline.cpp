@@ -216,6 +216,7 @@ void TimelineStore::add_timeline(std::uint32_t slot, std::uint32_t child, const 
     e.start = place(*recs_[slot], at, e.length, false, "add");
     e.end = e.start + e.length;
     insert_child(slot, e);
+    ++recs_[slot]->nested;
     c.parent = slot;
     ++stale_roots_;
     c.paused = false;

@@ -78,6 +78,7 @@ struct TimelineRec {
     double cursor = 0.0;      // local time the window stands at
     bool dirty = false;       // children changed: rebuild the window at the cursor
     bool arrived_forward = false;  // the cursor came forward (points at it are behind it)
+    std::uint32_t nested = 0;      // children that are timelines
     std::uint64_t rebuilds = 0;    // counts window rebuilds (a loop over the window restarts)
     // events
     Handler on_start, on_update, on_complete, on_reverse_complete;
@@ -134,6 +135,10 @@ private:
     void rebuild(TimelineRec& r);
     bool call(const Handler& h);
     bool stack_intact() const noexcept;
+    // after an update a handler ended: the tree goes silently to the state of its time
+    void settle(std::uint32_t slot);
+    bool settle_tree(std::uint32_t slot);
+    struct Base;  // RAII: an update checks only the stack entries pushed since it began
     void set_cursor_tau(TimelineRec& r, double play, double local) noexcept;
 
     EngineImpl& engine_;
@@ -142,6 +147,7 @@ private:
     std::vector<std::uint32_t> roots_;  // top-level timelines, in creation order
     std::unordered_map<std::uint32_t, std::uint32_t> driven_;  // animation slot → timeline slot
     std::vector<std::pair<std::uint32_t, std::uint64_t>> stack_;  // updates in progress: slot, epoch
+    std::size_t base_ = 0;  // stack_[base_, size) belong to the innermost tick, seek or sync
     std::vector<std::uint32_t> dead_slots_;      // killed, freed after the dispatch
     std::vector<std::uint32_t> pending_driven_;  // animation slots to move out of the engine's loop
     std::size_t stale_roots_ = 0;                // roots_ entries killed or nested since the last clean-up
