@@ -796,6 +796,136 @@ TEST(TimelineHandlers, PlacingChildrenKeepsTheTimeAndGivesItsState) {
     }
 }
 
+// The tick's fast case (one animation or none active, no point crossed, no handler) and the
+// general update give the same bits: twin engines tick the same random flat timelines with
+// the same dt, one of them kept on the general path (a command before every tick takes a
+// timeline off the fast case), and every target and time must be equal after every tick, with
+// sequences, overlaps, gaps, delays, repeats, repeat delays, yoyo, time scales, reversed and
+// parametric-curve children, run-time reverses, kills and pauses, and the engine moving its
+// records (animations created, killed and completing beside the timelines).
+TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
+    for (std::uint64_t seed = 700; seed < 760; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> unit(0, 1);
+        Engine fast, slow;
+        std::vector<Point> fast_points(64), slow_points(64);
+        std::vector<Timeline> fast_lines, slow_lines;
+        std::vector<Animation> fast_children, slow_children;
+        std::size_t next = 0;
+        for (int t = 0; t < 4; ++t) {
+            const TimelineDef def{.delay = unit(rng) < 0.5 ? 0.0 : 0.3 * unit(rng),
+                                  .repeat = rng() % 3 == 0 ? -1 : static_cast<int>(rng() % 3),
+                                  .repeat_delay = unit(rng) < 0.5 ? 0.0 : 0.2 * unit(rng),
+                                  .yoyo = rng() % 2 == 0,
+                                  .time_scale = 0.5 + unit(rng)};
+            Timeline a = fast.create_timeline(def), b = slow.create_timeline(def);
+            const int count = 1 + static_cast<int>(rng() % 5);
+            for (int k = 0; k < count; ++k) {
+                const double duration = 0.2 + unit(rng);
+                const AnimationDef child{.curve = rng() % 3 == 0 ? grape::Curve::cubic_bezier(0.3, 0.1, 0.2, 1.0)
+                                                                 : grape::Curve::quad_in_out(),
+                                         .delay = unit(rng) < 0.7 ? 0.0 : 0.2 * unit(rng),
+                                         .repeat = static_cast<int>(rng() % 3),
+                                         .repeat_delay = unit(rng) < 0.7 ? 0.0 : 0.1 * unit(rng),
+                                         .reversed = rng() % 4 == 0,
+                                         .yoyo = rng() % 2 == 0,
+                                         .time_scale = 0.5 + unit(rng)};
+                const auto roll = rng() % 4;
+                const std::string at = roll == 0 ? "<+0.1" : roll == 1 ? "+=0.2" : ">";
+                Animation fa = fast.create_2d_animation(fast_points[next], unit_line, duration, child);
+                Animation sa = slow.create_2d_animation(slow_points[next], unit_line, duration, child);
+                ++next;
+                a.add(fa, at);
+                b.add(sa, at);
+                fast_children.push_back(fa);
+                slow_children.push_back(sa);
+            }
+            fast_lines.push_back(a);
+            slow_lines.push_back(b);
+        }
+        for (int step = 0; step < 400; ++step) {
+            const double dt = unit(rng) < 0.05 ? unit(rng) : 0.02 * unit(rng);
+            const auto event = rng() % 200;
+            const std::size_t which = rng() % fast_lines.size();
+            const std::size_t child = rng() % fast_children.size();
+            if (event == 0) {
+                fast_lines[which].reverse();
+                slow_lines[which].reverse();
+            } else if (event == 1) {
+                fast_lines[which].play();
+                slow_lines[which].play();
+            } else if (event == 2) {
+                fast_children[child].kill();
+                slow_children[child].kill();
+            } else if (event == 3) {
+                fast_lines[which].pause();
+                slow_lines[which].pause();
+            } else if (event == 4) {
+                fast_lines[which].resume();
+                slow_lines[which].resume();
+            } else if (event < 40) {  // the engine moves its records: create, and kill (compaction)
+                for (Engine* engine : {&fast, &slow}) {
+                    Animation a = engine->create_animation(unit_line, 0.5);
+                    if (event % 2 == 0) a.kill();
+                    if (event % 3 == 0) engine->create_animation(unit_line, 0.05);  // completes: removed
+                }
+            }
+            for (const Timeline& b : slow_lines) b.on_start(nullptr);  // a command: the general path
+            fast.tick(dt);
+            slow.tick(dt);
+            for (std::size_t k = 0; k < next; ++k) {
+                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
+                ASSERT_EQ(fast_points[k].y, slow_points[k].y);
+            }
+            for (std::size_t k = 0; k < fast_lines.size(); ++k) ASSERT_EQ(fast_lines[k].time(), slow_lines[k].time());
+            for (std::size_t k = 0; k < fast_children.size(); ++k)
+                ASSERT_EQ(fast_children[k].progress(), slow_children[k].progress());
+        }
+    }
+}
+
+// A child placed behind the playhead goes to its end at once, with many timelines in the
+// store (the window's rebuild is given its timeline, it does not look for it).
+TEST(Timeline, ChildPlacedBehindThePlayheadGoesToItsEnd) {
+    Engine engine;
+    std::vector<Timeline> others;
+    for (int k = 0; k < 200; ++k) others.push_back(engine.create_timeline());
+    Point a, b, late;
+    Timeline tl = engine.create_timeline();
+    tl.add(engine.create_2d_animation(a, unit_line, 4.0));
+    engine.tick(3.0);
+    EXPECT_EQ(a.x, 0.75);
+    tl.add(engine.create_2d_animation(b, unit_line, 1.0), 0.5);   // ended at 1.5
+    tl.add(engine.create_2d_animation(late, unit_line, 2.0), 2.0);  // 1 s in
+    EXPECT_EQ(b.x, 1.0);
+    EXPECT_EQ(late.x, 0.5);
+    EXPECT_EQ(a.x, 0.75);
+    engine.tick(0.5);
+    EXPECT_EQ(late.x, 0.75);
+}
+
+// A nested timeline that grows moves its end in its parent's order of ends: crossing both
+// ends in one tick, the sibling that now ends first completes first.
+TEST(Timeline, GrowingNestedTimelineKeepsTheOrderOfEnds) {
+    Engine engine;
+    std::vector<std::string> events;
+    Timeline parent = engine.create_timeline();
+    Timeline inner = engine.create_timeline();
+    inner.add(engine.create_animation(unit_line, 1.0));
+    Animation sibling = engine.create_animation(unit_line, 1.0);
+    Animation early = engine.create_animation(unit_line, 1.1);
+    sibling.on_complete([&] { events.push_back("sibling"); });
+    early.on_complete([&] { events.push_back("early"); });
+    inner.on_complete([&] { events.push_back("inner"); });
+    parent.add(inner, 0.0).add(sibling, 0.25).add(early, 0.0);  // ends: inner 1, early 1.1, sibling 1.25
+    inner.add(engine.create_animation(unit_line, 0.5));           // inner now ends at 1.5
+    EXPECT_EQ(parent.duration(), 1.5);
+    engine.tick(2.0);
+    EXPECT_EQ(events, (std::vector<std::string>{"early", "sibling", "inner"}));
+    inner.add(engine.create_animation(unit_line, 0.25), 0.0);  // inside its length: no change
+    EXPECT_EQ(parent.duration(), 1.5);
+}
+
 // Playing timelines allocates nothing per tick (the window's storage is reserved when
 // children are placed): sequences, overlaps, nesting, loops, yoyo, reverses, callbacks and
 // child handlers.

@@ -73,14 +73,6 @@ bool TimelineStore::stack_intact() const noexcept {
     return true;
 }
 
-struct TimelineStore::Base {
-    TimelineStore& store;
-    std::size_t saved;
-    explicit Base(TimelineStore& s) noexcept : store(s), saved(s.base_) { store.base_ = store.stack_.size(); }
-    ~Base() { store.base_ = saved; }
-    Base(const Base&) = delete;
-    Base& operator=(const Base&) = delete;
-};
 
 bool TimelineStore::call(const Handler& h) {
     if (!h) return true;
@@ -93,21 +85,6 @@ bool TimelineStore::call(const Handler& h) {
 }
 
 // --- the tick and seek ----------------------------------------------------------------------
-
-void TimelineStore::tick(double dt) {
-    const std::size_t n = roots_.size();  // timelines created by handlers start next tick
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t slot = roots_[i];
-        TimelineRec& r = *recs_[slot];
-        if (!r.alive || r.paused || r.parent != UINT32_MAX) continue;
-        r.elapsed += dt;
-        const double tau = std::clamp(r.base + r.elapsed * r.time_scale * r.direction, 0.0, total(r));
-        if (tau == r.tau && !r.dirty) continue;
-        Depth depth(depth_);
-        Base base(*this);
-        if (!advance(slot, tau, true)) settle(slot);
-    }
-}
 
 void TimelineStore::seek(std::uint32_t slot, double tau, bool fire) {
     ++recs_[slot]->epoch;  // ends an update of this timeline in progress
@@ -193,7 +170,7 @@ bool TimelineStore::advance(std::uint32_t slot, double tau, bool fire) {
         std::vector<std::pair<std::uint32_t, std::uint64_t>>& stack;
         ~Pop() { stack.pop_back(); }
     } pop{stack_};
-    if (r->dirty) rebuild(*r);
+    if (r->dirty) rebuild(slot);
     const double from = r->tau;
     const PlayPoint a = point_of(*r, from);
     // Children placed since the last update may have moved the play structure (a longer play):
@@ -303,7 +280,7 @@ bool TimelineStore::sweep(std::uint32_t slot, double to, bool forward, bool fire
         const std::size_t children = r->children.size(), calls = r->callbacks.size();
         if (!drive_active(slot, t, fire)) return false;
         r = recs_[slot].get();
-        if (r->dirty) rebuild(*r);
+        if (r->dirty) rebuild(slot);
         // Their handlers placed something: look for the next point again.
         if (r->rebuilds != window || r->children.size() != children || r->callbacks.size() != calls) continue;
         bool ok = true;
@@ -342,7 +319,7 @@ bool TimelineStore::sweep(std::uint32_t slot, double to, bool forward, bool fire
         }
         if (!ok) return false;
         r = recs_[slot].get();
-        if (r->dirty) rebuild(*r);
+        if (r->dirty) rebuild(slot);
     }
     r->cursor = to;
     set_cursor_tau(*r, play, to);
@@ -355,7 +332,7 @@ bool TimelineStore::drive_active(std::uint32_t slot, double local, bool fire) {
         const std::uint64_t window = r->rebuilds;
         if (!drive(slot, r->active[j], local, fire)) return false;
         r = recs_[slot].get();
-        if (r->dirty) rebuild(*r);
+        if (r->dirty) rebuild(slot);
         // Children added by a handler: the window again (those driven already do not change).
         if (r->rebuilds != window) j = static_cast<std::size_t>(-1);
     }
@@ -437,7 +414,8 @@ bool TimelineStore::drive_animation(std::uint32_t slot, std::size_t i, double lo
 
 // The window recomputed at the cursor after children were added behind or inside it; children
 // that the window now counts as ended are driven to their end.
-void TimelineStore::rebuild(TimelineRec& r) {
+void TimelineStore::rebuild(std::uint32_t slot) {
+    TimelineRec& r = *recs_[slot];
     r.dirty = false;
     ++r.rebuilds;
     const double x = r.cursor;
@@ -461,12 +439,8 @@ void TimelineStore::rebuild(TimelineRec& r) {
     for (std::uint32_t i = 0; i < r.started; ++i)
         if (!r.children[i].ended) r.active.push_back(i);
     if (newly_ended.empty()) return;
-    // Find this record's slot to drive its children (rare: children placed behind the playhead).
-    for (std::uint32_t s = 0; s < recs_.size(); ++s) {
-        if (recs_[s].get() != &r) continue;
-        for (const std::uint32_t i : newly_ended) drive(s, i, x, false);
-        return;
-    }
+    // Children placed behind the playhead (rare) go to their end.
+    for (const std::uint32_t i : newly_ended) drive(slot, i, x, false);
 }
 
 }  // namespace grape::detail
