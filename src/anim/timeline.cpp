@@ -22,6 +22,25 @@ bool EngineImpl::driven(std::uint32_t slot) const noexcept { return timelines_ &
 
 namespace {
 std::string where_of(const char* what) { return std::string("Timeline::") + what; }
+
+// A record made new for its next timeline; the window's vectors keep their storage when small
+// (creating and killing timelines of a few children allocates nothing for them).
+void recycle(TimelineRec& r) noexcept {
+    const std::uint32_t generation = r.generation;
+    std::vector<TimelineChild> children = std::move(r.children);
+    std::vector<std::uint32_t> by_end = std::move(r.by_end);
+    std::vector<std::uint32_t> active = std::move(r.active);
+    r = TimelineRec();  // frees its callbacks, labels and handlers
+    r.generation = generation;
+    if (children.capacity() <= 64) {
+        children.clear();
+        by_end.clear();
+        active.clear();
+        r.children = std::move(children);
+        r.by_end = std::move(by_end);
+        r.active = std::move(active);
+    }
+}
 }  // namespace
 
 Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
@@ -48,8 +67,7 @@ Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
     roots_.push_back(RootEntry{.slot = slot});
     TimelineRec& r = *recs_[slot];
     const std::uint32_t generation = r.generation;
-    r = TimelineRec();
-    r.generation = generation;
+    recycle(r);
     r.alive = true;
     r.root = static_cast<std::uint32_t>(roots_.size() - 1);
     r.delay = def.delay;
@@ -190,13 +208,9 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
     if (!std::isfinite(c.length)) throw Error(w + ": the animation's length overflows");
     c.start = place(*recs_[slot], at, c.length, false, "add");
     c.end = c.start + c.length;
-    driven_.emplace(a.slot_, slot);
-    try {
-        insert_child(slot, c);
-    } catch (...) {
-        driven_.erase(a.slot_);
-        throw;
-    }
+    if (driven_.size() <= a.slot_) driven_.resize(engine_.slots_.size(), UINT32_MAX);  // as many as the engine's slots
+    insert_child(slot, c);
+    driven_[a.slot_] = slot;
     // Driven from now on: the engine's own loop passes over it; it rests at its start.
     Hot& hot = engine_.hot_[dense];
     hot.flags |= flag_paused;  // skipped by the engine's loop until it moves out of it
@@ -304,7 +318,7 @@ void TimelineStore::kill_rec(std::uint32_t slot) noexcept {
             if (recs_[c.slot]->generation == c.generation) kill_rec(c.slot);
         } else if (const Hot* h = engine_.find(c.slot, c.generation)) {
             (void)h;
-            driven_.erase(c.slot);
+            driven_[c.slot] = UINT32_MAX;
             engine_.mark_dead(engine_.dense_of(c.slot));
         }
     }
@@ -323,10 +337,7 @@ void TimelineStore::finish() noexcept {
     if (engine_.dead_ > 0) moved_ = true;  // the engine compacts next
     if (depth_ > 0) return;
     for (const std::uint32_t s : dead_slots_) {
-        TimelineRec& r = *recs_[s];
-        const std::uint32_t generation = r.generation;
-        r = TimelineRec();  // frees its vectors and handlers
-        r.generation = generation;
+        recycle(*recs_[s]);
         free_.push_back(s);  // capacity reserved at creation
     }
     dead_slots_.clear();

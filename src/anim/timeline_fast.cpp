@@ -85,11 +85,10 @@ void TimelineStore::flush(TimelineRec& r, bool leave) noexcept {
 }
 
 void TimelineStore::forget(std::uint32_t animation_slot) noexcept {
-    const auto it = driven_.find(animation_slot);
-    if (it == driven_.end()) return;
-    TimelineRec& r = *recs_[it->second];
+    if (!drives(animation_slot)) return;
+    TimelineRec& r = *recs_[driven_[animation_slot]];
     if (r.root != UINT32_MAX && roots_[r.root].mode == root_one) flush(r, true);
-    driven_.erase(it);
+    driven_[animation_slot] = UINT32_MAX;
 }
 
 void TimelineStore::tick(double dt) {

@@ -145,7 +145,9 @@ public:
     void kill(std::uint32_t slot) noexcept;
     void kill_all() noexcept;
     void finish() noexcept;  // after a dispatch: frees killed records
-    bool drives(std::uint32_t animation_slot) const noexcept { return driven_.count(animation_slot) != 0; }
+    bool drives(std::uint32_t animation_slot) const noexcept {
+        return animation_slot < driven_.size() && driven_[animation_slot] != UINT32_MAX;
+    }
     void forget(std::uint32_t animation_slot) noexcept;  // killed: its timeline leaves the fast case
 
     double total(const TimelineRec& r) const noexcept;        // own seconds of all plays and delays
@@ -187,7 +189,7 @@ private:
     std::vector<std::unique_ptr<TimelineRec>> recs_;
     std::vector<std::uint32_t> free_;
     std::vector<RootEntry> roots_;      // top-level timelines, in creation order
-    std::unordered_map<std::uint32_t, std::uint32_t> driven_;  // animation slot → timeline slot
+    std::vector<std::uint32_t> driven_;  // animation slot → timeline slot (UINT32_MAX: none)
     std::vector<std::pair<std::uint32_t, std::uint64_t>> stack_;  // updates in progress: slot, epoch
     std::size_t base_ = 0;  // stack_[base_, size) belong to the innermost tick, seek or sync
     // The engine moves records when it creates (the record count grows) and compacts (after
