@@ -20,7 +20,8 @@
 //
 // Events. Timelines: on_start (a play from the start begins, after the delay), on_update
 // (after every change of time), on_loop(play) (a new play begins, after its repeat delay, up
-// to max_loop_events per tick as for animations), on_complete (the end of the last play is
+// to max_loop_events per tick as for animations; going forward only: playing backward crosses
+// plays without loop events, as an animation reversed at run time does), on_complete (the end of the last play is
 // reached going forward), on_reverse_complete (the start is reached going backward). Children
 // and callbacks inside one update fire in time order in the direction of travel: at equal
 // times, children ending first, then callbacks, then children starting (the mirror going
@@ -36,13 +37,21 @@
 //
 // Handlers may create, kill, pause, seek or reverse anything, this timeline included. A
 // handler that seeks, pauses, reverses, re-times or kills a timeline ends that timeline's
-// update where the handler ran (the rest of that dt is dropped for it); adding children
-// from a handler applies at once. Nested timelines are driven by their parent: pause,
+// update (the rest of that dt is dropped for it): it keeps the time its update had reached
+// (the point where the handler ran; the end of that tick's step when the handler ran inside
+// a child running across it), and whatever in it had not been brought there yet goes there
+// silently, so its state is the one seek gives for that time. Adding children from a handler
+// applies at once (a longer play moves where the time falls in it, not the time). Nested timelines are driven by their parent: pause,
 // resume, seek, reverse, play and set_time_scale on them are ignored.
 //
 // Cost: a tick walks the top-level timelines; each advances only its children that are
 // active now (kept sorted by start and by end, with an active window), plus those whose start
-// or end the tick crosses; a loop resets the children once. No allocation per tick.
+// or end the tick crosses; a loop resets the children once. No allocation per tick. A timeline
+// with no on_update handler and no nested timeline, whose time stays inside one play and
+// crosses no child start or end nor callback, with at most one animation active (a plain one:
+// no on_update, N-D or linked target), takes a fast path over a dense per-timeline entry that
+// gives the same bits as the general update; those timelines run no handler in that tick, so
+// a handler of another timeline may find them already advanced.
 #pragma once
 
 #include <grape/anim.hpp>

@@ -22,6 +22,25 @@ bool EngineImpl::driven(std::uint32_t slot) const noexcept { return timelines_ &
 
 namespace {
 std::string where_of(const char* what) { return std::string("Timeline::") + what; }
+
+// A record made new for its next timeline; the window's vectors keep their storage when small
+// (creating and killing timelines of a few children allocates nothing for them).
+void recycle(TimelineRec& r) noexcept {
+    const std::uint32_t generation = r.generation;
+    std::vector<TimelineChild> children = std::move(r.children);
+    std::vector<std::uint32_t> by_end = std::move(r.by_end);
+    std::vector<std::uint32_t> active = std::move(r.active);
+    r = TimelineRec();  // frees its callbacks, labels and handlers
+    r.generation = generation;
+    if (children.capacity() <= 64) {
+        children.clear();
+        by_end.clear();
+        active.clear();
+        r.children = std::move(children);
+        r.by_end = std::move(by_end);
+        r.active = std::move(active);
+    }
+}
 }  // namespace
 
 Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
@@ -45,12 +64,12 @@ Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
         free_.reserve(recs_.size());  // so killing never allocates
         dead_slots_.reserve(recs_.size());
     }
-    roots_.push_back(slot);
+    roots_.push_back(RootEntry{.slot = slot});
     TimelineRec& r = *recs_[slot];
     const std::uint32_t generation = r.generation;
-    r = TimelineRec();
-    r.generation = generation;
+    recycle(r);
     r.alive = true;
+    r.root = static_cast<std::uint32_t>(roots_.size() - 1);
     r.delay = def.delay;
     r.plays = def.repeat < 0 ? 0.0 : def.repeat + 1.0;
     r.repeat_delay = def.repeat_delay;
@@ -58,12 +77,6 @@ Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
     r.time_scale = def.time_scale;
     r.paused = def.paused;
     return Timeline(owner, slot, generation);
-}
-
-TimelineRec* TimelineStore::find(std::uint32_t slot, std::uint32_t generation) noexcept {
-    if (slot >= recs_.size()) return nullptr;
-    TimelineRec* r = recs_[slot].get();
-    return r->alive && r->generation == generation ? r : nullptr;
 }
 
 double TimelineStore::total(const TimelineRec& r) const noexcept {
@@ -130,24 +143,45 @@ void TimelineStore::insert_child(std::uint32_t slot, TimelineChild c) {
     }
 }
 
+// Logarithmic in the parent's children: its entry is found among those starting where it
+// starts, its place in by_end among those ending where it ended, and it moves there alone
+// (the order a stable sort by end would give; no allocation).
 void TimelineStore::grew(std::uint32_t slot) {
     TimelineRec& r = *recs_[slot];
     if (r.parent == UINT32_MAX) return;
     TimelineRec& p = *recs_[r.parent];
-    for (std::size_t i = 0; i < p.children.size(); ++i) {
-        TimelineChild& c = p.children[i];
-        if (c.is_timeline && c.slot == slot && c.generation == r.generation) {
-            c.length = length_in_parent(r);
-            c.end = c.start + c.length;
-            std::stable_sort(p.by_end.begin(), p.by_end.end(),
-                             [&](std::uint32_t a, std::uint32_t b) { return p.children[a].end < p.children[b].end; });
-            p.dirty = true;
-            if (c.end > p.duration) {
-                p.duration = c.end;
-                grew(r.parent);
-            }
-            return;
+    auto i = static_cast<std::size_t>(
+        std::lower_bound(p.children.begin(), p.children.end(), r.placed,
+                         [](const TimelineChild& x, double s) { return x.start < s; }) -
+        p.children.begin());
+    while (i < p.children.size() && p.children[i].start == r.placed &&
+           !(p.children[i].is_timeline && p.children[i].slot == slot && p.children[i].generation == r.generation))
+        ++i;
+    if (i == p.children.size() || p.children[i].start != r.placed) return;
+    TimelineChild& c = p.children[i];
+    const double old_end = c.end;
+    const double length = length_in_parent(r);
+    const double end = c.start + length;
+    if (end != old_end) {
+        auto it = std::lower_bound(p.by_end.begin(), p.by_end.end(), old_end,
+                                   [&](std::uint32_t x, double e) { return p.children[x].end < e; });
+        while (it != p.by_end.end() && *it != i) ++it;  // among those ending there, in order
+        if (it != p.by_end.end()) {
+            p.by_end.erase(it);
+            // A later end goes before the entries ending there (they came after it), an earlier one after.
+            const auto to = end > old_end ? std::lower_bound(p.by_end.begin(), p.by_end.end(), end,
+                                                             [&](std::uint32_t x, double e) { return p.children[x].end < e; })
+                                          : std::upper_bound(p.by_end.begin(), p.by_end.end(), end,
+                                                             [&](double e, std::uint32_t x) { return e < p.children[x].end; });
+            p.by_end.insert(to, static_cast<std::uint32_t>(i));  // in the capacity just freed
         }
+    }
+    c.length = length;
+    c.end = end;
+    p.dirty = true;
+    if (c.end > p.duration) {
+        p.duration = c.end;
+        grew(r.parent);
     }
 }
 
@@ -174,13 +208,9 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
     if (!std::isfinite(c.length)) throw Error(w + ": the animation's length overflows");
     c.start = place(*recs_[slot], at, c.length, false, "add");
     c.end = c.start + c.length;
-    driven_.emplace(a.slot_, slot);
-    try {
-        insert_child(slot, c);
-    } catch (...) {
-        driven_.erase(a.slot_);
-        throw;
-    }
+    if (driven_.size() <= a.slot_) driven_.resize(engine_.slots_.size(), UINT32_MAX);  // as many as the engine's slots
+    insert_child(slot, c);
+    driven_[a.slot_] = slot;
     // Driven from now on: the engine's own loop passes over it; it rests at its start.
     Hot& hot = engine_.hot_[dense];
     hot.flags |= flag_paused;  // skipped by the engine's loop until it moves out of it
@@ -215,7 +245,13 @@ void TimelineStore::add_timeline(std::uint32_t slot, std::uint32_t child, const 
     if (!std::isfinite(e.length)) throw Error(w + ": the timeline's length overflows");
     e.start = place(*recs_[slot], at, e.length, false, "add");
     e.end = e.start + e.length;
+    c.placed = e.start;
     insert_child(slot, e);
+    ++recs_[slot]->nested;
+    if (c.root != UINT32_MAX) {
+        flush(c, true);
+        roots_[c.root].mode = root_idle;  // driven by its parent from now on
+    }
     c.parent = slot;
     ++stale_roots_;
     c.paused = false;
@@ -276,12 +312,13 @@ void TimelineStore::kill_rec(std::uint32_t slot) noexcept {
     ++dead_;
     dead_slots_.push_back(slot);  // capacity reserved at creation
     if (r.parent == UINT32_MAX) ++stale_roots_;
+    if (r.root != UINT32_MAX) roots_[r.root].mode = root_idle;
     for (const TimelineChild& c : r.children) {
         if (c.is_timeline) {
             if (recs_[c.slot]->generation == c.generation) kill_rec(c.slot);
         } else if (const Hot* h = engine_.find(c.slot, c.generation)) {
             (void)h;
-            driven_.erase(c.slot);
+            driven_[c.slot] = UINT32_MAX;
             engine_.mark_dead(engine_.dense_of(c.slot));
         }
     }
@@ -297,12 +334,10 @@ void TimelineStore::kill_all() noexcept {
 }
 
 void TimelineStore::finish() noexcept {
+    if (engine_.dead_ > 0) moved_ = true;  // the engine compacts next
     if (depth_ > 0) return;
     for (const std::uint32_t s : dead_slots_) {
-        TimelineRec& r = *recs_[s];
-        const std::uint32_t generation = r.generation;
-        r = TimelineRec();  // frees its vectors and handlers
-        r.generation = generation;
+        recycle(*recs_[s]);
         free_.push_back(s);  // capacity reserved at creation
     }
     dead_slots_.clear();
@@ -315,216 +350,17 @@ void TimelineStore::finish() noexcept {
     pending_driven_.clear();
     // Top-level entries that were killed or placed into a timeline leave the list.
     if (stale_roots_ > 0) {
-        std::erase_if(roots_, [&](std::uint32_t s) { return !recs_[s]->alive || recs_[s]->parent != UINT32_MAX; });
+        std::erase_if(roots_, [&](const RootEntry& e) {
+            TimelineRec& r = *recs_[e.slot];
+            const bool gone = !r.alive || r.parent != UINT32_MAX;
+            if (gone) r.root = UINT32_MAX;
+            return gone;
+        });
+        for (std::size_t i = 0; i < roots_.size(); ++i) recs_[roots_[i].slot]->root = static_cast<std::uint32_t>(i);
         stale_roots_ = 0;
     }
 }
 
 }  // namespace detail
-
-// --- the public Engine and Timeline ------------------------------------------------------------
-
-Timeline Engine::create_timeline() { return create_timeline(TimelineDef{}); }
-Timeline Engine::create_timeline(const TimelineDef& def) { return impl_->timelines().create(this, def); }
-
-#define GRAPE_TIMELINE(fallback)                                                   \
-    if (!engine_) return fallback;                                                 \
-    detail::EngineImpl& impl = *engine_->impl_;                                    \
-    detail::TimelineStore& store = impl.timelines();                               \
-    detail::TimelineRec* found = store.find(slot_, generation_);                   \
-    if (!found) return fallback;                                                   \
-    detail::TimelineRec& r = *found;                                               \
-    (void)r
-
-namespace {
-void require(const detail::TimelineRec* r, const char* what) {
-    if (!r) throw Error(std::string("Timeline::") + what + ": the timeline is not alive");
-}
-}  // namespace
-
-bool Timeline::alive() const noexcept {
-    GRAPE_TIMELINE(false);
-    return true;
-}
-
-Timeline& Timeline::add(const Animation& animation, At at) {
-    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
-    require(r, "add");
-    engine_->impl_->timelines().add_animation(slot_, animation, at.position);
-    engine_->impl_->timelines().sync(slot_);
-    return *this;
-}
-
-Timeline& Timeline::add(const Timeline& child, At at) {
-    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
-    require(r, "add");
-    if (child.engine_ != engine_ || !child.alive()) throw Error("Timeline::add: the timeline is not alive in this engine");
-    engine_->impl_->timelines().add_timeline(slot_, child.slot_, at.position);
-    engine_->impl_->timelines().sync(slot_);
-    return *this;
-}
-
-Timeline& Timeline::call(std::function<void()> handler, At at) {
-    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
-    require(r, "call");
-    if (!handler) throw Error("Timeline::call: the handler is empty");
-    engine_->impl_->timelines().add_callback(slot_, std::move(handler), at.position);
-    engine_->impl_->timelines().sync(slot_);
-    return *this;
-}
-
-Timeline& Timeline::label(std::string_view name, At at) {
-    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
-    require(r, "label");
-    engine_->impl_->timelines().add_label(slot_, name, at.position);
-    engine_->impl_->timelines().sync(slot_);
-    return *this;
-}
-
-Timeline& Timeline::gap(double seconds, At at) {
-    detail::TimelineRec* r = engine_ ? engine_->impl_->timelines().find(slot_, generation_) : nullptr;
-    require(r, "gap");
-    engine_->impl_->timelines().add_gap(slot_, seconds, at.position);
-    engine_->impl_->timelines().sync(slot_);
-    return *this;
-}
-
-double Timeline::duration() const noexcept {
-    GRAPE_TIMELINE(0.0);
-    return r.duration;
-}
-
-double Timeline::total_duration() const noexcept {
-    GRAPE_TIMELINE(0.0);
-    return store.total(r) - r.delay;
-}
-
-double Timeline::time() const noexcept {
-    GRAPE_TIMELINE(0.0);
-    return r.tau - r.delay;
-}
-
-double Timeline::local_time() const noexcept {
-    GRAPE_TIMELINE(0.0);
-    return store.local_of(r, r.tau, nullptr);
-}
-
-double Timeline::progress() const noexcept {
-    GRAPE_TIMELINE(0.0);
-    return r.duration > 0.0 ? store.local_of(r, r.tau, nullptr) / r.duration : 0.0;
-}
-
-int Timeline::repetition() const noexcept {
-    GRAPE_TIMELINE(0);
-    double play = 0.0;
-    store.local_of(r, r.tau, &play);
-    return static_cast<int>(std::min(play, static_cast<double>(INT32_MAX)));
-}
-
-double Timeline::label_time(std::string_view name) const noexcept {
-    GRAPE_TIMELINE(NAN);
-    for (const auto& l : r.labels)
-        if (l.first == name) return l.second;
-    return NAN;
-}
-
-bool Timeline::paused() const noexcept {
-    GRAPE_TIMELINE(false);
-    return r.paused;
-}
-
-void Timeline::pause() const noexcept {
-    GRAPE_TIMELINE();
-    if (r.parent != UINT32_MAX || r.paused) return;
-    r.paused = true;
-    store.rebase(r);
-}
-
-void Timeline::resume() const noexcept {
-    GRAPE_TIMELINE();
-    if (r.parent != UINT32_MAX || !r.paused) return;
-    r.paused = false;
-    store.rebase(r);
-}
-
-void Timeline::reverse() const noexcept {
-    GRAPE_TIMELINE();
-    if (r.parent != UINT32_MAX || r.direction < 0.0) return;
-    r.direction = -1.0;
-    store.rebase(r);
-}
-
-void Timeline::play() const noexcept {
-    GRAPE_TIMELINE();
-    if (r.parent != UINT32_MAX) return;
-    r.direction = 1.0;
-    r.paused = false;
-    store.rebase(r);
-}
-
-bool Timeline::reversed() const noexcept {
-    GRAPE_TIMELINE(false);
-    return r.direction < 0.0;
-}
-
-void Timeline::set_time_scale(double scale) const noexcept {
-    GRAPE_TIMELINE();
-    if (r.parent != UINT32_MAX || !(std::isfinite(scale) && scale >= 0.0)) return;
-    r.time_scale = scale;
-    store.rebase(r);
-}
-
-double Timeline::time_scale() const noexcept {
-    GRAPE_TIMELINE(0.0);
-    return r.time_scale;
-}
-
-void Timeline::seek(double seconds, bool fire_events) const {
-    GRAPE_TIMELINE();
-    if (r.parent != UINT32_MAX || !std::isfinite(seconds)) return;
-    const double tau = std::clamp(seconds + r.delay, 0.0, store.total(r));
-    store.seek(slot_, tau, fire_events);
-}
-
-void Timeline::seek(std::string_view label, bool fire_events) const {
-    GRAPE_TIMELINE();
-    const double t = label_time(label);
-    if (std::isnan(t)) throw Error("Timeline::seek: unknown label '" + std::string(label) + "'");
-    seek(t, fire_events);
-}
-
-void Timeline::kill() const noexcept {
-    GRAPE_TIMELINE();
-    store.kill(slot_);
-}
-
-namespace {
-detail::Handler wrap(std::function<void()> f) {
-    return f ? std::make_shared<const std::function<void()>>(std::move(f)) : nullptr;
-}
-}  // namespace
-
-void Timeline::on_start(std::function<void()> handler) const {
-    GRAPE_TIMELINE();
-    r.on_start = wrap(std::move(handler));
-}
-void Timeline::on_update(std::function<void()> handler) const {
-    GRAPE_TIMELINE();
-    r.on_update = wrap(std::move(handler));
-}
-void Timeline::on_complete(std::function<void()> handler) const {
-    GRAPE_TIMELINE();
-    r.on_complete = wrap(std::move(handler));
-}
-void Timeline::on_reverse_complete(std::function<void()> handler) const {
-    GRAPE_TIMELINE();
-    r.on_reverse_complete = wrap(std::move(handler));
-}
-void Timeline::on_loop(std::function<void(int)> handler) const {
-    GRAPE_TIMELINE();
-    r.on_loop = handler ? std::make_shared<const std::function<void(int)>>(std::move(handler)) : nullptr;
-}
-
-#undef GRAPE_TIMELINE
 
 }  // namespace grape

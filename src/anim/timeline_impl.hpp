@@ -37,6 +37,40 @@ struct TimelineChild {
     double last = -HUGE_VAL;  // the position in plays last driven to (−inf: resting, not begun)
 };
 
+/// A top-level timeline as the tick walks it (TimelineStore::roots_, in creation order). In the
+/// fast modes the clock and the one active child's time are kept here and the record's tau,
+/// cursor and the child's `last` are stale until flush() (find() flushes first): the tick then
+/// computes them with the slow path's own operations, so both give the same bits.
+enum RootMode : std::uint8_t {
+    root_slow,   // the record is current; the tick advances it the general way
+    root_idle,   // paused, killed or nested: the tick passes over it (commands make it slow)
+    root_empty,  // fast, no child active
+    root_one,    // fast, one animation active
+};
+
+struct alignas(64) RootEntry {  // two cache lines: the clock and the window, the child
+    double elapsed = 0.0;   // TimelineRec::elapsed
+    double base = 0.0;      // TimelineRec::base
+    double scale = 0.0;     // time_scale · direction
+    double delay = 0.0;
+    double duration = 1.0;
+    double kc = 0.0;        // the current play's start, in plays of the timeline
+    double lo = 0.0;        // local times strictly between lo and hi cross no point
+    double hi = 0.0;
+    double start = 0.0;     // the active child: TimelineChild's start, p0, rate (hi is kept
+    double p0 = 0.0;        // below its end by the rounding of local − start)
+    double rate = 0.0;
+    double cj = 0.0;        // the child's current play's start, in its plays
+    std::uint32_t slot = 0;          // the timeline
+    std::uint32_t child = 0;         // the child's animation slot and generation
+    std::uint32_t child_generation = 0;
+    std::uint32_t child_index = 0;   // in TimelineRec::children
+    std::uint32_t dense = 0;         // the child's record (refreshed when records may have moved)
+    const char* target = nullptr;    // the child's target, to fetch ahead
+    RootMode mode = root_slow;
+    bool backward = false;  // the play runs back (yoyo)
+};
+
 struct TimelineCallback {
     double time;
     std::shared_ptr<const std::function<void()>> handler;
@@ -63,6 +97,7 @@ struct TimelineRec {
     double tau = 0.0;
     std::uint64_t epoch = 0;  // bumped by every time change from outside the current update
     std::uint32_t parent = UINT32_MAX;  // slot of the containing timeline
+    double placed = 0.0;                // its start there (parent seconds)
     // layout
     double duration = 0.0;
     double previous_start = 0.0;
@@ -78,6 +113,8 @@ struct TimelineRec {
     double cursor = 0.0;      // local time the window stands at
     bool dirty = false;       // children changed: rebuild the window at the cursor
     bool arrived_forward = false;  // the cursor came forward (points at it are behind it)
+    std::uint32_t nested = 0;      // children that are timelines
+    std::uint32_t root = UINT32_MAX;  // its entry in TimelineStore::roots_ while top-level
     std::uint64_t rebuilds = 0;    // counts window rebuilds (a loop over the window restarts)
     // events
     Handler on_start, on_update, on_complete, on_reverse_complete;
@@ -98,14 +135,20 @@ public:
     void add_gap(std::uint32_t slot, double seconds, const TimelinePosition& at);
 
     void tick(double dt);
+    /// The record brought up to date from the tick's fast entry; `leave`: the entry goes back
+    /// to the general path (the caller changes the record).
+    void flush(TimelineRec& r, bool leave) noexcept;
+    TimelineRec* peek(std::uint32_t slot, std::uint32_t generation) noexcept;  // find, staying fast
     void sync(std::uint32_t slot);
     void seek(std::uint32_t slot, double tau, bool fire);
     void rebase(TimelineRec& r) noexcept;
     void kill(std::uint32_t slot) noexcept;
     void kill_all() noexcept;
     void finish() noexcept;  // after a dispatch: frees killed records
-    bool drives(std::uint32_t animation_slot) const noexcept { return driven_.count(animation_slot) != 0; }
-    void forget(std::uint32_t animation_slot) noexcept { driven_.erase(animation_slot); }
+    bool drives(std::uint32_t animation_slot) const noexcept {
+        return animation_slot < driven_.size() && driven_[animation_slot] != UINT32_MAX;
+    }
+    void forget(std::uint32_t animation_slot) noexcept;  // killed: its timeline leaves the fast case
 
     double total(const TimelineRec& r) const noexcept;        // own seconds of all plays and delays
     double length_in_parent(const TimelineRec& r) const noexcept { return total(r) / r.time_scale; }
@@ -124,6 +167,8 @@ private:
     void insert_child(std::uint32_t slot, TimelineChild c);
     void grew(std::uint32_t slot);  // duration changed: the parents' entries follow
     void kill_rec(std::uint32_t slot) noexcept;
+    void step_slow(std::size_t i, double dt);  // one top-level timeline's tick, the general way
+    void try_fast(std::size_t i) noexcept;     // enters a fast mode where the state allows it
 
     // the update (timeline_tick.cpp); false: a handler changed this timeline's time, stop
     bool advance(std::uint32_t slot, double tau, bool fire);
@@ -131,22 +176,40 @@ private:
     bool drive(std::uint32_t slot, std::size_t child, double local, bool fire);
     bool drive_active(std::uint32_t slot, double local, bool fire);
     bool drive_animation(std::uint32_t slot, std::size_t child, double local, bool fire);
-    void rebuild(TimelineRec& r);
+    void rebuild(std::uint32_t slot);
     bool call(const Handler& h);
     bool stack_intact() const noexcept;
+    // after an update a handler ended: the tree goes silently to the state of its time
+    void settle(std::uint32_t slot);
+    bool settle_tree(std::uint32_t slot);
+    struct Base;  // RAII: an update checks only the stack entries pushed since it began
     void set_cursor_tau(TimelineRec& r, double play, double local) noexcept;
 
     EngineImpl& engine_;
     std::vector<std::unique_ptr<TimelineRec>> recs_;
     std::vector<std::uint32_t> free_;
-    std::vector<std::uint32_t> roots_;  // top-level timelines, in creation order
-    std::unordered_map<std::uint32_t, std::uint32_t> driven_;  // animation slot → timeline slot
+    std::vector<RootEntry> roots_;      // top-level timelines, in creation order
+    std::vector<std::uint32_t> driven_;  // animation slot → timeline slot (UINT32_MAX: none)
     std::vector<std::pair<std::uint32_t, std::uint64_t>> stack_;  // updates in progress: slot, epoch
+    std::size_t base_ = 0;  // stack_[base_, size) belong to the innermost tick, seek or sync
+    // The engine moves records when it creates (the record count grows) and compacts (after
+    // finish(), which sets moved_): then the entries' `dense` are looked up again.
+    std::size_t seen_records_ = 0;
+    bool moved_ = true;
     std::vector<std::uint32_t> dead_slots_;      // killed, freed after the dispatch
     std::vector<std::uint32_t> pending_driven_;  // animation slots to move out of the engine's loop
     std::size_t stale_roots_ = 0;                // roots_ entries killed or nested since the last clean-up
     std::size_t dead_ = 0;
     int depth_ = 0;  // updates in progress
+};
+
+struct TimelineStore::Base {
+    TimelineStore& store;
+    std::size_t saved;
+    explicit Base(TimelineStore& s) noexcept : store(s), saved(s.base_) { store.base_ = store.stack_.size(); }
+    ~Base() { store.base_ = saved; }
+    Base(const Base&) = delete;
+    Base& operator=(const Base&) = delete;
 };
 
 }  // namespace grape::detail

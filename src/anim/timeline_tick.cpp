@@ -63,13 +63,16 @@ void TimelineStore::set_cursor_tau(TimelineRec& r, double play, double local) no
     r.tau = r.delay + play * (r.duration + r.repeat_delay) + into;
 }
 
+// An update ends when a timeline it is advancing was killed or had its time changed; updates
+// of other timelines begun from its handlers (a seek) do not end its own, nor it theirs.
 bool TimelineStore::stack_intact() const noexcept {
-    for (const auto& [slot, epoch] : stack_) {
-        const TimelineRec& r = *recs_[slot];
-        if (!r.alive || r.epoch != epoch) return false;
+    for (std::size_t k = base_; k < stack_.size(); ++k) {
+        const TimelineRec& r = *recs_[stack_[k].first];
+        if (!r.alive || r.epoch != stack_[k].second) return false;
     }
     return true;
 }
+
 
 bool TimelineStore::call(const Handler& h) {
     if (!h) return true;
@@ -83,26 +86,13 @@ bool TimelineStore::call(const Handler& h) {
 
 // --- the tick and seek ----------------------------------------------------------------------
 
-void TimelineStore::tick(double dt) {
-    const std::size_t n = roots_.size();  // timelines created by handlers start next tick
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t slot = roots_[i];
-        TimelineRec& r = *recs_[slot];
-        if (!r.alive || r.paused || r.parent != UINT32_MAX) continue;
-        r.elapsed += dt;
-        const double tau = std::clamp(r.base + r.elapsed * r.time_scale * r.direction, 0.0, total(r));
-        if (tau == r.tau && !r.dirty) continue;
-        Depth depth(depth_);
-        advance(slot, tau, true);
-    }
-}
-
 void TimelineStore::seek(std::uint32_t slot, double tau, bool fire) {
     ++recs_[slot]->epoch;  // ends an update of this timeline in progress
     {
         Depth depth(depth_);
         EngineImpl::Dispatch d(engine_);
-        advance(slot, tau, fire);
+        Base base(*this);
+        if (!advance(slot, tau, fire)) settle(slot);
     }
     TimelineRec& r = *recs_[slot];
     if (r.alive) {
@@ -116,14 +106,59 @@ void TimelineStore::seek(std::uint32_t slot, double tau, bool fire) {
 void TimelineStore::sync(std::uint32_t slot) {
     Depth depth(depth_);
     EngineImpl::Dispatch d(engine_);
+    Base base(*this);
     for (std::uint32_t s = slot; s != UINT32_MAX; s = recs_[s]->parent) {
         if (!recs_[s]->alive) return;
         // One being updated now picks the change up itself (its window is rebuilt as it goes).
         for (const auto& entry : stack_)
             if (entry.first == s) return;
-        if (!advance(s, recs_[s]->tau, false)) return;
-        if (!drive_active(s, recs_[s]->cursor, false)) return;
+        if (!advance(s, recs_[s]->tau, false) || !drive_active(s, recs_[s]->cursor, false)) {
+            std::uint32_t top = s;
+            while (recs_[top]->parent != UINT32_MAX) top = recs_[top]->parent;
+            settle(top);
+            return;
+        }
     }
+}
+
+// A handler ended an update part way: the timeline keeps the time its update had reached
+// (set before the children running at a point are brought there), but children after the one
+// whose handler ran, and the timelines containing it, were not brought there. Everything
+// inside it now goes there silently, so that its state is again the pure function of its time
+// that seek gives. A handler run by these silent writes may end this too: a few tries.
+void TimelineStore::settle(std::uint32_t slot) {
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        if (!recs_[slot]->alive) return;
+        Base base(*this);
+        if (settle_tree(slot)) return;
+    }
+}
+
+bool TimelineStore::settle_tree(std::uint32_t slot) {
+    if (!advance(slot, recs_[slot]->tau, false)) return false;  // the window at its time
+    TimelineRec* r = recs_[slot].get();
+    stack_.push_back({slot, r->epoch});
+    struct Pop {
+        std::vector<std::pair<std::uint32_t, std::uint64_t>>& stack;
+        ~Pop() { stack.pop_back(); }
+    } pop{stack_};
+    const std::uint64_t window = r->rebuilds;
+    const std::size_t count = r->children.size();
+    // Animations outside the window were driven to their start or end when it passed them;
+    // nested timelines are walked whatever their place, as a handler may have stopped inside one.
+    const std::size_t n = r->nested > 0 ? count : r->active.size();
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t i = r->nested > 0 ? j : r->active[j];
+        const TimelineChild c = r->children[i];
+        if (!c.is_timeline && (!c.entered || c.ended)) continue;
+        if (!drive(slot, i, r->cursor, false)) return false;
+        r = recs_[slot].get();
+        if (c.is_timeline && recs_[c.slot]->alive && recs_[c.slot]->generation == c.generation && !settle_tree(c.slot))
+            return false;
+        r = recs_[slot].get();
+        if (r->dirty || r->rebuilds != window || r->children.size() != count) return false;  // placed meanwhile: again
+    }
+    return stack_intact();
 }
 
 // --- one timeline's update ------------------------------------------------------------------
@@ -135,14 +170,19 @@ bool TimelineStore::advance(std::uint32_t slot, double tau, bool fire) {
         std::vector<std::pair<std::uint32_t, std::uint64_t>>& stack;
         ~Pop() { stack.pop_back(); }
     } pop{stack_};
-    if (r->dirty) rebuild(*r);
+    if (r->dirty) rebuild(slot);
     const double from = r->tau;
     const PlayPoint a = point_of(*r, from);
     // Children placed since the last update may have moved the play structure (a longer play):
     // the window first goes, silently, to where the current time now falls.
     if (a.local != r->cursor && !sweep(slot, a.local, a.local > r->cursor, false, a.play)) return false;
     r = recs_[slot].get();
+    r->tau = from;  // the sweep's points set it from their local times, which may round
     if (tau == from) return true;
+    // A handler that places children may lengthen the play: at the end of the update the
+    // window goes, silently, to where the time now falls in it.
+    const double planned = r->duration;
+    auto done = [&] { return recs_[slot]->duration == planned || advance(slot, recs_[slot]->tau, false); };
     const PlayPoint b = point_of(*r, tau);
     if (tau > from) {
         if (b.waiting) {
@@ -182,7 +222,7 @@ bool TimelineStore::advance(std::uint32_t slot, double tau, bool fire) {
             r = recs_[slot].get();
             if (b.finished && !a.finished && !call(r->on_complete)) return false;
         }
-        return true;
+        return done();
     }
     // Backward (reversed at run time): down to the start of the first play at most.
     if (from <= r->delay) {
@@ -210,7 +250,7 @@ bool TimelineStore::advance(std::uint32_t slot, double tau, bool fire) {
         r = recs_[slot].get();
         if (to_start && !call(r->on_reverse_complete)) return false;
     }
-    return true;
+    return done();
 }
 
 // Moves the window from the cursor to `to` (local seconds within play `play`), crossing child
@@ -240,7 +280,7 @@ bool TimelineStore::sweep(std::uint32_t slot, double to, bool forward, bool fire
         const std::size_t children = r->children.size(), calls = r->callbacks.size();
         if (!drive_active(slot, t, fire)) return false;
         r = recs_[slot].get();
-        if (r->dirty) rebuild(*r);
+        if (r->dirty) rebuild(slot);
         // Their handlers placed something: look for the next point again.
         if (r->rebuilds != window || r->children.size() != children || r->callbacks.size() != calls) continue;
         bool ok = true;
@@ -279,7 +319,7 @@ bool TimelineStore::sweep(std::uint32_t slot, double to, bool forward, bool fire
         }
         if (!ok) return false;
         r = recs_[slot].get();
-        if (r->dirty) rebuild(*r);
+        if (r->dirty) rebuild(slot);
     }
     r->cursor = to;
     set_cursor_tau(*r, play, to);
@@ -292,7 +332,7 @@ bool TimelineStore::drive_active(std::uint32_t slot, double local, bool fire) {
         const std::uint64_t window = r->rebuilds;
         if (!drive(slot, r->active[j], local, fire)) return false;
         r = recs_[slot].get();
-        if (r->dirty) rebuild(*r);
+        if (r->dirty) rebuild(slot);
         // Children added by a handler: the window again (those driven already do not change).
         if (r->rebuilds != window) j = static_cast<std::size_t>(-1);
     }
@@ -374,7 +414,8 @@ bool TimelineStore::drive_animation(std::uint32_t slot, std::size_t i, double lo
 
 // The window recomputed at the cursor after children were added behind or inside it; children
 // that the window now counts as ended are driven to their end.
-void TimelineStore::rebuild(TimelineRec& r) {
+void TimelineStore::rebuild(std::uint32_t slot) {
+    TimelineRec& r = *recs_[slot];
     r.dirty = false;
     ++r.rebuilds;
     const double x = r.cursor;
@@ -398,12 +439,8 @@ void TimelineStore::rebuild(TimelineRec& r) {
     for (std::uint32_t i = 0; i < r.started; ++i)
         if (!r.children[i].ended) r.active.push_back(i);
     if (newly_ended.empty()) return;
-    // Find this record's slot to drive its children (rare: children placed behind the playhead).
-    for (std::uint32_t s = 0; s < recs_.size(); ++s) {
-        if (recs_[s].get() != &r) continue;
-        for (const std::uint32_t i : newly_ended) drive(s, i, x, false);
-        return;
-    }
+    // Children placed behind the playhead (rare) go to their end.
+    for (const std::uint32_t i : newly_ended) drive(slot, i, x, false);
 }
 
 }  // namespace grape::detail
