@@ -216,7 +216,7 @@ int run(const Options& options) {
                 const ImGuiTabItemFlags flags = (frame == 0 && i == current) ? ImGuiTabItemFlags_SetSelected : 0;
                 if (!ImGui::BeginTabItem(tabs[i]->title(), nullptr, flags)) continue;
                 if (i != current && frame > 0) {
-                    Canvas::release_handle();
+                    ViewCanvas::release_handle();
                     current = i;
                 }
                 ImGui::PushStyleColor(ImGuiCol_ChildBg, ImGui::GetStyleColorVec4(ImGuiCol_WindowBg));

@@ -40,11 +40,11 @@ struct Options {
 
 /// The drawing area of a tab: a rectangle of the window with a world → screen transform
 /// (uniform scale, y down in both) and the mouse state in world units.
-class Canvas {
+class ViewCanvas {
 public:
     /// Maps the world box [world_min, world_max] into the screen rectangle, centred, with a margin.
-    Canvas(ImDrawList* draw_list, ImVec2 screen_min, ImVec2 screen_max, Vec2 world_min, Vec2 world_max,
-           double margin_px = 24.0);
+    ViewCanvas(ImDrawList* draw_list, ImVec2 screen_min, ImVec2 screen_max, Vec2 world_min, Vec2 world_max,
+               double margin_px = 24.0);
 
     ImDrawList* draw_list() const noexcept { return draw_list_; }
     ImVec2 screen_min() const noexcept { return screen_min_; }
@@ -64,19 +64,19 @@ public:
     /// A draggable point: grabbed by a left click within `radius_px`, follows the mouse while
     /// the button is held. Returns true when `p` changed this frame. `id` must be unique
     /// among the handles of one canvas.
-    bool drag_handle(int id, Vec2& p, ImU32 colour, double radius_px = 6.0);
+    bool drag_handle(int id, Vec2& p, ImU32 color, double radius_px = 6.0);
     /// The handle being dragged (−1: none).
     static int active_handle() noexcept;
     static void release_handle() noexcept;
 
     // Drawing in world units (widths and radii in pixels).
-    void polyline(const std::vector<Vec2>& points, ImU32 colour, float width = 2.0f) const;
-    void line(Vec2 a, Vec2 b, ImU32 colour, float width = 1.0f) const;
-    void disc(Vec2 p, float radius_px, ImU32 colour) const;
-    void ring(Vec2 p, float radius_px, ImU32 colour, float width = 1.5f) const;
-    void text(Vec2 p, ImU32 colour, std::string_view s) const;
+    void polyline(const std::vector<Vec2>& points, ImU32 color, float width = 2.0f) const;
+    void line(Vec2 a, Vec2 b, ImU32 color, float width = 1.0f) const;
+    void disc(Vec2 p, float radius_px, ImU32 color) const;
+    void ring(Vec2 p, float radius_px, ImU32 color, float width = 1.5f) const;
+    void text(Vec2 p, ImU32 color, std::string_view s) const;
     /// Light grid lines every `step` world units.
-    void grid(double step, ImU32 colour) const;
+    void grid(double step, ImU32 color) const;
 
 private:
     ImDrawList* draw_list_;
@@ -85,6 +85,7 @@ private:
     double scale_ = 1.0;
     Vec2 offset_;  // screen = offset + world·scale
     bool hovered_ = false;
+    inline static int held_ = -1;  // the handle being dragged: one mouse, so one at a time
 };
 
 /// One tab of the window.
@@ -142,7 +143,7 @@ std::unique_ptr<Tab> make_chain_tab(int particles);
 std::vector<std::pair<std::string, Path>>& handed_paths();
 
 /// Colours shared by the tabs (ImGui's ABGR packing).
-namespace colour {
+namespace color {
 inline constexpr ImU32 background = IM_COL32(250, 248, 244, 255);
 inline constexpr ImU32 grid = IM_COL32(228, 224, 216, 255);
 inline constexpr ImU32 ink = IM_COL32(40, 40, 48, 255);
@@ -151,6 +152,6 @@ inline constexpr ImU32 faint = IM_COL32(150, 150, 160, 255);
 inline constexpr ImU32 handle = IM_COL32(230, 120, 20, 255);
 inline constexpr ImU32 marker = IM_COL32(200, 30, 60, 255);
 inline constexpr ImU32 good = IM_COL32(30, 150, 80, 255);
-}  // namespace colour
+}  // namespace color
 
 }  // namespace grape::studio

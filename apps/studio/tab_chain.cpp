@@ -88,25 +88,25 @@ public:
 
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
         const double reach = chain_length * 1.08;
-        Canvas canvas(dl, min, max, {-reach, -0.4}, {reach, reach});
-        canvas.grid(0.5, colour::grid);
+        ViewCanvas canvas(dl, min, max, {-reach, -0.4}, {reach, reach});
+        canvas.grid(0.5, color::grid);
         const auto x = system_->positions();
         const auto w = system_->inverse_masses();
         // Links: consecutive particles of the chain, or the cloth's grid.
         if (kind_ == 0) {
             std::vector<Vec2> line(x.begin(), x.end());
-            canvas.polyline(line, colour::path, 2.0f);
+            canvas.polyline(line, color::path, 2.0f);
         } else {
             for (int r = 0; r < rows_; ++r)
                 for (int c = 0; c < columns_; ++c) {
                     const std::size_t i = std::size_t(r * columns_ + c);
-                    if (c + 1 < columns_ && r > 0) canvas.line(x[i], x[i + 1], colour::path, 1.5f);
-                    if (r + 1 < rows_) canvas.line(x[i], x[i + std::size_t(columns_)], colour::path, 1.5f);
+                    if (c + 1 < columns_ && r > 0) canvas.line(x[i], x[i + 1], color::path, 1.5f);
+                    if (r + 1 < rows_) canvas.line(x[i], x[i + std::size_t(columns_)], color::path, 1.5f);
                 }
         }
         const float radius = std::clamp(float(0.4 * canvas.scale() * chain_length / double(particles_)), 2.0f, 6.0f);
         for (std::size_t i = 0; i < x.size(); ++i)
-            canvas.disc(x[i], w[i] == 0.0 ? radius + 2.0f : radius, w[i] == 0.0 ? colour::ink : colour::path);
+            canvas.disc(x[i], w[i] == 0.0 ? radius + 2.0f : radius, w[i] == 0.0 ? color::ink : color::path);
 
         // Grab the nearest particle within 15 px; hold it until the button is released.
         const ImGuiIO& io = ImGui::GetIO();
@@ -124,13 +124,13 @@ public:
             grabbed_ = -1;
         }
         if (grabbed_ >= 0) {
-            canvas.line(x[std::size_t(grabbed_)], mouse_, colour::marker, 1.5f);
-            canvas.ring(x[std::size_t(grabbed_)], radius + 5.0f, colour::marker, 2.0f);
+            canvas.line(x[std::size_t(grabbed_)], mouse_, color::marker, 1.5f);
+            canvas.ring(x[std::size_t(grabbed_)], radius + 5.0f, color::marker, 2.0f);
         }
         char label[96];
         std::snprintf(label, sizeof label, "%s: %zu particles, %zu constraints, %d steps per frame",
                       kind_ == 0 ? "chain" : "cloth strip", system_->size(), system_->constraint_count(), substeps_);
-        dl->AddText({min.x + 10.0f, min.y + 8.0f}, colour::ink, label);
+        dl->AddText({min.x + 10.0f, min.y + 8.0f}, color::ink, label);
     }
 
     void report(std::ostream& out) const override {

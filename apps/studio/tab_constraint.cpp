@@ -118,7 +118,7 @@ public:
         side(dl, min, {mid - 4.0f, max.y}, *implicit_, trail_implicit_, 0,
              left_method_ == 0 ? "implicit (Witkin)" : "implicit (the seed's closed-form force)");
         side(dl, {mid + 4.0f, min.y}, max, *parametric_, trail_parametric_, 1, "parametric (Lagrange)");
-        dl->AddLine({mid, min.y + 8.0f}, {mid, max.y - 8.0f}, colour::grid, 2.0f);
+        dl->AddLine({mid, min.y + 8.0f}, {mid, max.y - 8.0f}, color::grid, 2.0f);
     }
 
     void report(std::ostream& out) const override {
@@ -167,30 +167,30 @@ private:
     void side(ImDrawList* dl, ImVec2 min, ImVec2 max, const ParabolaRun& run, const std::vector<Vec2>& trail, int id,
               const char* label) {
         dl->PushClipRect(min, max, true);
-        Canvas canvas(dl, min, max, {-half_width - 20.0, -half_width * half_width / 100.0 - 20.0}, {half_width + 20.0, 40.0});
-        canvas.grid(50.0, colour::grid);
+        ViewCanvas canvas(dl, min, max, {-half_width - 20.0, -half_width * half_width / 100.0 - 20.0}, {half_width + 20.0, 40.0});
+        canvas.grid(50.0, color::grid);
         std::vector<Vec2> curve;
         for (int i = 0; i <= 200; ++i) {
             const double x = -half_width + 2.0 * half_width * i / 200.0;
             curve.push_back({x, -x * x / 100.0});
         }
-        canvas.polyline(curve, colour::path, 2.0f);
-        canvas.polyline(trail, colour::faint, 1.5f);
+        canvas.polyline(curve, color::path, 2.0f);
+        canvas.polyline(trail, color::faint, 1.5f);
         Vec2 p = run.state().x;
         screen_[id] = canvas.to_screen(p);
         // Where the particle should be: the curve point below it, joined when it has drifted.
         const Vec2 on_curve{p.x, -p.x * p.x / 100.0};
-        if (distance(on_curve, p) * canvas.scale() > 1.0) canvas.line(on_curve, p, colour::marker, 1.5f);
-        if (canvas.drag_handle(id, p, colour::marker, 9.0)) {
+        if (distance(on_curve, p) * canvas.scale() > 1.0) canvas.line(on_curve, p, color::marker, 1.5f);
+        if (canvas.drag_handle(id, p, color::marker, 9.0)) {
             dragging_ = id;
             x0_ = std::clamp(p.x, -half_width, half_width);
         }
-        if (dragging_ == id && Canvas::active_handle() != id) {
+        if (dragging_ == id && ViewCanvas::active_handle() != id) {
             dragging_ = -1;  // released: start again from the new point
             reset();
         }
-        if (dragging_ == id) canvas.ring({x0_, -x0_ * x0_ / 100.0}, 12.0f, colour::handle, 2.0f);
-        dl->AddText({min.x + 10.0f, min.y + 8.0f}, colour::ink, label);
+        if (dragging_ == id) canvas.ring({x0_, -x0_ * x0_ / 100.0}, 12.0f, color::handle, 2.0f);
+        dl->AddText({min.x + 10.0f, min.y + 8.0f}, color::ink, label);
         dl->PopClipRect();
     }
 

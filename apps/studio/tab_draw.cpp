@@ -74,28 +74,28 @@ public:
     }
 
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
-        Canvas canvas(dl, min, max, world_min, world_max);
-        canvas.grid(50.0, colour::grid);
+        ViewCanvas canvas(dl, min, max, world_min, world_max);
+        canvas.grid(50.0, color::grid);
         record(canvas);
-        if (points_.size() >= 2) canvas.polyline(points_, colour::faint, 1.0f);
-        for (Vec2 p : points_) canvas.disc(p, 1.5f, colour::faint);
+        if (points_.size() >= 2) canvas.polyline(points_, color::faint, 1.0f);
+        for (Vec2 p : points_) canvas.disc(p, 1.5f, color::faint);
         if (fitted_ && !drawing_) {
             const auto spec = path_cast<ComplexSpec>(*fitted_);
             for (const Path& part : spec->parts) {
                 if (const auto b = path_cast<CubicBezierSpec>(part)) {
-                    canvas.line(b->control[0], b->control[1], colour::handle);
-                    canvas.line(b->control[3], b->control[2], colour::handle);
-                    canvas.disc(b->control[1], 3.0f, colour::handle);
-                    canvas.disc(b->control[2], 3.0f, colour::handle);
-                    canvas.disc(b->control[0], 4.0f, colour::ink);
-                    canvas.disc(b->control[3], 4.0f, colour::ink);
+                    canvas.line(b->control[0], b->control[1], color::handle);
+                    canvas.line(b->control[3], b->control[2], color::handle);
+                    canvas.disc(b->control[1], 3.0f, color::handle);
+                    canvas.disc(b->control[2], 3.0f, color::handle);
+                    canvas.disc(b->control[0], 4.0f, color::ink);
+                    canvas.disc(b->control[3], 4.0f, color::ink);
                 }
             }
             // Flattened within a quarter of a pixel.
-            canvas.polyline(fitted_->flatten(0.25 / canvas.scale()), colour::path, 2.5f);
-            canvas.disc(even_->point(time_ / lap_seconds), 7.0f, colour::marker);
+            canvas.polyline(fitted_->flatten(0.25 / canvas.scale()), color::path, 2.5f);
+            canvas.disc(even_->point(time_ / lap_seconds), 7.0f, color::marker);
         }
-        canvas.text({world_min.x + 8, world_min.y + 8}, colour::ink,
+        canvas.text({world_min.x + 8, world_min.y + 8}, color::ink,
                     drawing_ ? "drawing..." : "drag to draw a path; it is fitted on release");
     }
 
@@ -112,7 +112,7 @@ public:
 private:
     // Mouse down on the canvas starts a new drag; every move of half a pixel or more adds a
     // point; release fits.
-    void record(const Canvas& canvas) {
+    void record(const ViewCanvas& canvas) {
         if (!drawing_ && canvas.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
             clear();
             drawing_ = true;

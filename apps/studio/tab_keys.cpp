@@ -97,7 +97,7 @@ public:
         const float unit = std::min((max.x - min.x - 40.0f) / 15.5f, 56.0f);
         const float gap = unit * 0.08f;
         const float y0 = min.y + 40.0f;
-        dl->AddText({min.x + 20.0f, min.y + 12.0f}, colour::ink,
+        dl->AddText({min.x + 20.0f, min.y + 12.0f}, color::ink,
                     "down: green   pressed this frame: orange outline   released this frame: red outline   "
                     "repeated: a bar on top");
         for (std::size_t r = 0; r < layout().size(); ++r) {
@@ -109,17 +109,17 @@ public:
                 const ImVec2 b{x + float(cap.width) * unit - gap, y + unit - gap};
                 const bool down = keys_.is_down(code);
                 dl->AddRectFilled(a, b, down ? IM_COL32(60, 180, 90, 255) : IM_COL32(236, 234, 228, 255), 4.0f);
-                dl->AddRect(a, b, colour::faint, 4.0f);
-                if (keys_.pressed_this_frame(code)) dl->AddRect(a, b, colour::handle, 4.0f, 0, 4.0f);
-                if (keys_.released_this_frame(code)) dl->AddRect(a, b, colour::marker, 4.0f, 0, 4.0f);
-                if (keys_.repeated_this_frame(code)) dl->AddRectFilled(a, {b.x, a.y + 4.0f}, colour::path, 2.0f);
-                dl->AddText({a.x + 5.0f, a.y + 4.0f}, down ? IM_COL32_WHITE : colour::ink, cap.label);
+                dl->AddRect(a, b, color::faint, 4.0f);
+                if (keys_.pressed_this_frame(code)) dl->AddRect(a, b, color::handle, 4.0f, 0, 4.0f);
+                if (keys_.released_this_frame(code)) dl->AddRect(a, b, color::marker, 4.0f, 0, 4.0f);
+                if (keys_.repeated_this_frame(code)) dl->AddRectFilled(a, {b.x, a.y + 4.0f}, color::path, 2.0f);
+                dl->AddText({a.x + 5.0f, a.y + 4.0f}, down ? IM_COL32_WHITE : color::ink, cap.label);
                 x += float(cap.width) * unit;
             }
         }
         // The bit vector itself: the first 128 scancodes as a strip of bits.
         const float by = y0 + 5.5f * unit + 10.0f;
-        dl->AddText({min.x + 20.0f, by}, colour::ink, "KeyState::down(), scancodes 0-255 (one cell per bit):");
+        dl->AddText({min.x + 20.0f, by}, color::ink, "KeyState::down(), scancodes 0-255 (one cell per bit):");
         const float cell = std::min((max.x - min.x - 40.0f) / 64.0f, 14.0f);
         for (std::size_t i = 0; i < 256; ++i) {
             const float cx = min.x + 20.0f + float(i % 64) * cell;

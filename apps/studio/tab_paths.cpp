@@ -219,10 +219,10 @@ public:
 #ifdef GRAPE_STUDIO_SCENE
         if (!timeline_.empty()) canvas_max.y = std::max(min.y + 40.0f, max.y - timeline_.height());
 #endif
-        Canvas canvas(dl, min, canvas_max, view_min_, view_max_);
+        ViewCanvas canvas(dl, min, canvas_max, view_min_, view_max_);
         screen_offset_ = canvas.offset();
         screen_scale_ = canvas.scale();
-        canvas.grid(grid_step(), colour::grid);
+        canvas.grid(grid_step(), color::grid);
         Entry& e = entries_[current_];
         draw_path(canvas, min, canvas_max);
 
@@ -231,10 +231,10 @@ public:
             const bool bezier = e.bezier;
             if (bezier)
                 for (std::size_t i = 0; i + 1 < e.controls.size(); ++i)
-                    canvas.line(e.controls[i], e.controls[i + 1], colour::faint, 1.0f);
+                    canvas.line(e.controls[i], e.controls[i + 1], color::faint, 1.0f);
             bool moved = false;
             for (std::size_t i = 0; i < e.controls.size(); ++i)
-                moved |= canvas.drag_handle(int(i), e.controls[i], colour::handle);
+                moved |= canvas.drag_handle(int(i), e.controls[i], color::handle);
             if (moved) {
                 try {
                     e.path = rebuild(e);
@@ -249,7 +249,7 @@ public:
 
         // The marker, its heading, and the other parametrization's ghost.
         if (compare_ && ghost_) {
-            canvas.ring(ghost_.value(), 7.0f, colour::ink, 2.0f);
+            canvas.ring(ghost_.value(), 7.0f, color::ink, 2.0f);
         }
         Vec2 p = anim_.value();
         double h = anim_.heading();
@@ -264,14 +264,14 @@ public:
         marker_ = p;
         if (!timeline_.empty()) seeking_ = timeline_.draw(dl, {min.x, canvas_max.y}, max, scene_time_);
 #endif
-        canvas.line(p, p + Vec2{std::cos(h), std::sin(h)} * (22.0 / canvas.scale()), colour::marker, 2.0f);
-        canvas.disc(p, 7.0f, colour::marker);
+        canvas.line(p, p + Vec2{std::cos(h), std::sin(h)} * (22.0 / canvas.scale()), color::marker, 2.0f);
+        canvas.disc(p, 7.0f, color::marker);
         char label[96];
         std::snprintf(label, sizeof label, "%s  |  %s  |  %s", e.name.c_str(), curve_text_.c_str(),
                       arc_length_ ? "by arc length" : "by u");
-        dl->AddText({min.x + 10.0f, min.y + 8.0f}, colour::ink, label);
+        dl->AddText({min.x + 10.0f, min.y + 8.0f}, color::ink, label);
         if (compare_)
-            dl->AddText({min.x + 10.0f, min.y + 24.0f}, colour::ink,
+            dl->AddText({min.x + 10.0f, min.y + 24.0f}, color::ink,
                         "filled: this parametrization   ring: the other one");
     }
 
@@ -300,7 +300,7 @@ private:
     void select(std::size_t i) {
         current_ = i;
         edit_error_.clear();
-        Canvas::release_handle();
+        ViewCanvas::release_handle();
         shape_changed();
         fit_view();
         restart(false);
@@ -365,7 +365,7 @@ private:
 
     // The path with the render module's debug drawing (ticks every 0.05 of u, complex-path
     // cues, tangents, ends), rasterized with cairo into a texture when anything changes.
-    void draw_path(const Canvas& canvas, ImVec2 min, ImVec2 max) {
+    void draw_path(const ViewCanvas& canvas, ImVec2 min, ImVec2 max) {
 #ifdef GRAPE_STUDIO_RENDER
         const int w = int(max.x - min.x);
         const int h = int(max.y - min.y);
@@ -413,9 +413,9 @@ private:
         (void)max;
 #endif
         const double tolerance = 0.25 / canvas.scale();  // a quarter pixel
-        canvas.polyline(shown_.flatten(tolerance), colour::path, 2.5f);
+        canvas.polyline(shown_.flatten(tolerance), color::path, 2.5f);
         if (debug_)
-            for (int i = 0; i <= 20; ++i) canvas.disc(shown_.point(i / 20.0), 2.5f, colour::faint);
+            for (int i = 0; i <= 20; ++i) canvas.disc(shown_.point(i / 20.0), 2.5f, color::faint);
     }
 
     void curve_plot() {
@@ -429,17 +429,17 @@ private:
         auto to_screen = [&](double t, double p) {
             return ImVec2{float(a.x + 6 + t * (size.x - 12)), float(b.y - (p + 0.4) / 1.8 * size.y)};
         };
-        dl->AddLine(to_screen(0, 0), to_screen(1, 0), colour::grid);
-        dl->AddLine(to_screen(0, 1), to_screen(1, 1), colour::grid);
+        dl->AddLine(to_screen(0, 0), to_screen(1, 0), color::grid);
+        dl->AddLine(to_screen(0, 1), to_screen(1, 1), color::grid);
         ImVec2 pts[101];
         for (int i = 0; i <= 100; ++i) pts[i] = to_screen(i / 100.0, curve_(i / 100.0));
-        dl->AddPolyline(pts, 101, colour::path, ImDrawFlags_None, 2.0f);
+        dl->AddPolyline(pts, 101, color::path, ImDrawFlags_None, 2.0f);
         const double d = double(duration_);
         const double t = anim_.time();
         double tau = t <= 0.0 ? 0.0 : std::fmod(t, d) / d;
         if (!anim_) tau = 1.0;
-        dl->AddCircleFilled(to_screen(tau, curve_(tau)), 4.0f, colour::marker);
-        dl->AddText({a.x + 6, a.y + 2}, colour::faint, "progress over each play");
+        dl->AddCircleFilled(to_screen(tau, curve_(tau)), 4.0f, color::marker);
+        dl->AddText({a.x + 6, a.y + 2}, color::faint, "progress over each play");
     }
 
 #ifdef GRAPE_STUDIO_SCENE

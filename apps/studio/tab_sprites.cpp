@@ -179,7 +179,7 @@ public:
     void draw(ImDrawList* dl, ImVec2 min, ImVec2 max) override {
         const float big = std::min(220.0f, (max.x - min.x - 80.0f) / 2.0f);
         const ImVec2 a{min.x + 30.0f, min.y + 40.0f};
-        dl->AddText({a.x, a.y - 20.0f}, colour::ink, "blitted from the tile sheet");
+        dl->AddText({a.x, a.y - 20.0f}, color::ink, "blitted from the tile sheet");
         if (sheet_texture_) {
             const FrameRect& r = sprite_.rect();
             const UvRect uv = sprite_.uv();
@@ -188,24 +188,24 @@ public:
                          {float(uv.u1), float(uv.v1)});
         }
         const ImVec2 b{a.x + big + 40.0f, a.y};
-        dl->AddText({b.x, b.y - 20.0f}, colour::ink, "list of frame images");
+        dl->AddText({b.x, b.y - 20.0f}, color::ink, "list of frame images");
         if (list_.shown < list_.frames.size() && list_.frames[list_.shown])
             dl->AddImage(ImTextureID(list_.frames[list_.shown]), b, {b.x + big, b.y + big});
         char label[64];
         std::snprintf(label, sizeof label, "frame %zu / %d", sprite_.current_frame(), frame_count);
-        dl->AddText({a.x, a.y + big + 6.0f}, colour::ink, label);
+        dl->AddText({a.x, a.y + big + 6.0f}, color::ink, label);
         std::snprintf(label, sizeof label, "frame %zu / %d", list_.shown, frame_count);
-        dl->AddText({b.x, a.y + big + 6.0f}, colour::ink, label);
+        dl->AddText({b.x, a.y + big + 6.0f}, color::ink, label);
 
         // The whole sheet with the frame shown outlined.
         const float sy = a.y + big + 50.0f;
         const float sheet_w = std::min(float(image_.width), max.x - min.x - 60.0f);
         const float k = sheet_w / float(image_.width);
-        dl->AddText({a.x, sy - 20.0f}, colour::ink, "the tile sheet (drawn with cairo at start-up)");
+        dl->AddText({a.x, sy - 20.0f}, color::ink, "the tile sheet (drawn with cairo at start-up)");
         if (sheet_texture_) dl->AddImage(ImTextureID(sheet_texture_), {a.x, sy}, {a.x + sheet_w, sy + float(image_.height) * k});
         const FrameRect& r = sprite_.rect();
         dl->AddRect({a.x + float(r.x) * k, sy + float(r.y) * k},
-                    {a.x + float(r.x + r.width) * k, sy + float(r.y + r.height) * k}, colour::marker, 0.0f, 0, 3.0f);
+                    {a.x + float(r.x + r.width) * k, sy + float(r.y + r.height) * k}, color::marker, 0.0f, 0, 3.0f);
 #ifdef GRAPE_STUDIO_SHEETS
         draw_clip(dl, {a.x + 2.0f * big + 80.0f, a.y});
 #endif
@@ -290,8 +290,8 @@ private:
         if (!clip_player_ || !clip_texture_) return;
         const SpriteFrame& f = loaded_->frame(clip_player_->frame());
         const float k = 3.0f;
-        dl->AddText({at.x, at.y - 20.0f}, colour::ink, clips_label().c_str());
-        dl->AddRect(at, {at.x + float(f.source_width) * k, at.y + float(f.source_height) * k}, colour::faint);
+        dl->AddText({at.x, at.y - 20.0f}, color::ink, clips_label().c_str());
+        dl->AddRect(at, {at.x + float(f.source_width) * k, at.y + float(f.source_height) * k}, color::faint);
         const ImVec2 p{at.x + float(f.offset_x) * k, at.y + float(f.offset_y) * k};
         const ImVec2 q{p.x + float(f.width()) * k, p.y + float(f.height()) * k};
         const float u0 = float(f.rect.x) / picture_size_.x, v0 = float(f.rect.y) / picture_size_.y;
@@ -302,7 +302,7 @@ private:
         } else {
             dl->AddImage(ImTextureID(clip_texture_), p, q, {u0, v0}, {u1, v1});
         }
-        dl->AddCircleFilled({at.x + float(f.pivot.x) * k, at.y + float(f.pivot.y) * k}, 3.0f, colour::marker);
+        dl->AddCircleFilled({at.x + float(f.pivot.x) * k, at.y + float(f.pivot.y) * k}, 3.0f, color::marker);
     }
 
     std::string clips_label() const {

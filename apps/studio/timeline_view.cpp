@@ -19,7 +19,7 @@ constexpr double forever_plays = 3.0;
 constexpr float row_height = 18.0f;
 constexpr float name_width = 80.0f;
 
-const ImU32 bar_colours[] = {IM_COL32(200, 60, 70, 200), IM_COL32(40, 150, 80, 200), IM_COL32(120, 60, 170, 200),
+const ImU32 bar_colors[] = {IM_COL32(200, 60, 70, 200), IM_COL32(40, 150, 80, 200), IM_COL32(120, 60, 170, 200),
                              IM_COL32(230, 130, 20, 200), IM_COL32(30, 140, 150, 200), IM_COL32(150, 100, 50, 200)};
 
 }  // namespace
@@ -54,17 +54,17 @@ void TimelineView::set_scene(const Scene& scene) {
                 if (child.kind == SceneTimelineChildKind::gap) continue;
                 double a = layout.start[c], b = layout.start[c] + layout.length[c];
                 if (backward) std::tie(a, b) = std::pair{layout.duration - b, layout.duration - a};
-                Bar bar{.from = begin + a / tl.time_scale, .to = begin + b / tl.time_scale, .colour = 0, .text = {}, .tick = false};
+                Bar bar{.from = begin + a / tl.time_scale, .to = begin + b / tl.time_scale, .color = 0, .text = {}, .tick = false};
                 switch (child.kind) {
                     case SceneTimelineChildKind::animation:
-                        bar.colour = bar_colours[static_cast<std::size_t>(layout.index[c]) % std::size(bar_colours)];
+                        bar.color = bar_colors[static_cast<std::size_t>(layout.index[c]) % std::size(bar_colors)];
                         break;
                     case SceneTimelineChildKind::timeline:
-                        bar.colour = IM_COL32(130, 130, 140, 160);
+                        bar.color = IM_COL32(130, 130, 140, 160);
                         bar.text = child.name;
                         break;
                     case SceneTimelineChildKind::label:
-                        bar.colour = colour::ink;
+                        bar.color = color::ink;
                         bar.tick = true;
                         break;
                     case SceneTimelineChildKind::gap: break;
@@ -81,43 +81,43 @@ float TimelineView::height() const noexcept { return rows_.empty() ? 0.0f : 22.0
 bool TimelineView::draw(ImDrawList* dl, ImVec2 min, ImVec2 max, double& time) {
     if (rows_.empty()) return false;
     dl->AddRectFilled(min, max, IM_COL32(255, 255, 255, 235));
-    dl->AddLine({min.x, min.y}, {max.x, min.y}, colour::grid);
+    dl->AddLine({min.x, min.y}, {max.x, min.y}, color::grid);
     axis_x0_ = min.x + name_width;
     axis_x1_ = std::max(axis_x0_ + 1.0f, max.x - 12.0f);
     const auto x_of = [&](double t) { return float(axis_x0_ + (axis_x1_ - axis_x0_) * std::clamp(t / span_, 0.0, 1.0)); };
     for (std::size_t r = 0; r < rows_.size(); ++r) {
         const float y = min.y + 6.0f + row_height * float(r);
-        dl->AddText({min.x + 6.0f, y}, colour::ink, rows_[r].name.c_str());
-        dl->AddLine({axis_x0_, y + 8.0f}, {axis_x1_, y + 8.0f}, colour::grid);
+        dl->AddText({min.x + 6.0f, y}, color::ink, rows_[r].name.c_str());
+        dl->AddLine({axis_x0_, y + 8.0f}, {axis_x1_, y + 8.0f}, color::grid);
         for (const Bar& b : rows_[r].bars) {
             const float a = x_of(b.from), e = x_of(b.to);
             if (b.tick) {
-                dl->AddLine({a, y}, {a, y + 16.0f}, b.colour, 1.5f);
+                dl->AddLine({a, y}, {a, y + 16.0f}, b.color, 1.5f);
                 continue;
             }
-            dl->AddRectFilled({a, y + 2.0f}, {std::max(e, a + 1.0f), y + 14.0f}, b.colour, 2.0f);
-            if (!b.text.empty() && e - a > 30.0f) dl->AddText({a + 3.0f, y}, colour::ink, b.text.c_str());
+            dl->AddRectFilled({a, y + 2.0f}, {std::max(e, a + 1.0f), y + 14.0f}, b.color, 2.0f);
+            if (!b.text.empty() && e - a > 30.0f) dl->AddText({a + 3.0f, y}, color::ink, b.text.c_str());
         }
     }
     char ends[64];
     std::snprintf(ends, sizeof ends, "%.2f s", span_);
     const float bottom = max.y - 14.0f;
-    dl->AddText({axis_x0_, bottom}, colour::faint, "0");
-    dl->AddText({axis_x1_ - ImGui::CalcTextSize(ends).x, bottom}, colour::faint, ends);
+    dl->AddText({axis_x0_, bottom}, color::faint, "0");
+    dl->AddText({axis_x1_ - ImGui::CalcTextSize(ends).x, bottom}, color::faint, ends);
 
     // The playhead: a left press anywhere over the axis grabs it (unless a handle has the mouse).
     const ImVec2 m = ImGui::GetIO().MousePos;
     const bool over = m.x >= min.x && m.x < max.x && m.y >= min.y && m.y < max.y &&
                       ImGui::IsWindowHovered(ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
-    if (!dragging_ && over && Canvas::active_handle() < 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) dragging_ = true;
+    if (!dragging_ && over && ViewCanvas::active_handle() < 0 && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) dragging_ = true;
     if (dragging_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging_ = false;
     if (dragging_) time = span_ * std::clamp(double(m.x - axis_x0_) / double(axis_x1_ - axis_x0_), 0.0, 1.0);
     const float head = x_of(time);
-    dl->AddLine({head, min.y + 2.0f}, {head, max.y - 16.0f}, colour::marker, 2.0f);
-    dl->AddTriangleFilled({head - 6.0f, min.y + 1.0f}, {head + 6.0f, min.y + 1.0f}, {head, min.y + 9.0f}, colour::marker);
+    dl->AddLine({head, min.y + 2.0f}, {head, max.y - 16.0f}, color::marker, 2.0f);
+    dl->AddTriangleFilled({head - 6.0f, min.y + 1.0f}, {head + 6.0f, min.y + 1.0f}, {head, min.y + 9.0f}, color::marker);
     char now[64];
     std::snprintf(now, sizeof now, "t = %.2f s", time);
-    dl->AddText({std::min(head + 6.0f, axis_x1_ - 60.0f), bottom}, colour::marker, now);
+    dl->AddText({std::min(head + 6.0f, axis_x1_ - 60.0f), bottom}, color::marker, now);
     return dragging_;
 }
 

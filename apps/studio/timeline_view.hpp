@@ -32,7 +32,7 @@ public:
 private:
     struct Bar {
         double from = 0.0, to = 0.0;  // scene seconds
-        ImU32 colour = 0;
+        ImU32 color = 0;
         std::string text;             // a nested timeline's name
         bool tick = false;            // a label
     };
