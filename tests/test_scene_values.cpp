@@ -145,6 +145,35 @@ TEST(SceneValues, ARelativeTweenInATimelineAddsItsAmountToTheValueWhenItBegins) 
     EXPECT_EQ(thing.y, 60.0);
 }
 
+TEST(SceneValues, AnOwnDelayAndTimeScaleInsideAYoyoTimelineMatchTheEngine) {
+    // b has its own delay and time scale inside the timeline: the timeline reaches it at a's
+    // end, it reads x there (8) and rests at its start through its delay; the timeline waits
+    // 0.25 s, plays 0.75 s forwards, then backwards. Ticks of 1/64 s are exact, and a play of
+    // 0.75 s (not a power of two) goes through the same divisions in the scene as in the engine.
+    const Scene scene = grape::load_scene(R"({"properties": [{"name": "x", "value": 0}],
+      "tweens": [{"name": "a", "property": "x", "to": 8, "duration": 0.5, "curve": "quad-out"},
+                 {"name": "b", "property": "x", "by": 4, "duration": 0.25, "delay": 0.25, "time_scale": 2}],
+      "timelines": [{"name": "t", "delay": 0.25, "repeat": 1, "yoyo": true,
+                     "children": [{"tween": "a"}, {"tween": "b", "at": ">"}]}]})");
+    const SceneProperties values(scene, SceneTiming(scene));
+    struct X {
+        double x = 0.0;
+    };
+    grape::Engine engine;
+    X thing;
+    grape::Timeline line = engine.create_timeline({.delay = 0.25, .repeat = 1, .yoyo = true});
+    line.add(engine.animate(thing, &X::x, grape::to(8.0), 0.5, {.curve = grape::Curve::quad_out()}))
+        .add(engine.animate(thing, &X::x, grape::by(4.0), 0.25, {.delay = 0.25, .time_scale = 2.0}), ">");
+    EXPECT_EQ(line.duration(), 0.75);
+    thing.x = 0.0;
+    for (int k = 1; k <= 128; ++k) {
+        engine.tick(1.0 / 64.0);
+        EXPECT_EQ(number_at(values, 0, k / 64.0), thing.x) << "t = " << k / 64.0;
+    }
+    EXPECT_EQ(number_at(values, 0, 0.25 + 0.75), 12.0);  // the end of the first play: 8 + 4
+    EXPECT_EQ(number_at(values, 0, 2.0), 0.0);           // back at the start
+}
+
 TEST(SceneValues, FromCurrentAndRelativeStartsAreWhereTheEarlierTweensLeft) {
     const Scene scene = typed_values();
     const SceneProperties values(scene, SceneTiming(scene));

@@ -270,7 +270,7 @@ struct SceneTimelineLayout {
 /// A scene's animations and timelines placed in time: which timeline drives each animation
 /// and where. Built once from a scene (which it then no longer needs); evaluation is
 /// noexcept and allocation-free, the same timing model the anim engine plays (progress_at,
-/// timeline_local_time).
+/// play_at_position as the engine's timelines call it).
 class SceneTiming {
 public:
     SceneTiming() = default;
@@ -286,8 +286,9 @@ public:
     /// Timeline k's layout and placement.
     const SceneTimelineLayout& layout(std::size_t timeline) const noexcept { return timelines_[timeline].layout; }
 
-    /// Seconds into one play of timeline k at scene time t (timeline_local_time down its
-    /// chain of parents).
+    /// Seconds into one play of timeline k at scene time t, down its chain of parents, with
+    /// the engine's timeline arithmetic ((t·time_scale − delay) / duration in plays, as
+    /// play_at_position takes them): an engine ticking to the same times agrees bit for bit.
     double timeline_time(std::size_t timeline, double t) const noexcept;
     /// The time animation i plays at at scene time t: t itself when free, otherwise the
     /// seconds since its start in its timeline (negative before it, past its end after).

@@ -1,6 +1,7 @@
 // Scene timelines: read and written as JSON, laid out by the anim module's pure timeline
 // layout, and evaluated down their chain of parents with the one timing model
-// (timeline_local_time for timelines, progress_at for the animations they drive).
+// (the engine timelines' arithmetic for timelines, progress_at for the animations and tweens
+// they drive).
 #include <grape/scene.hpp>
 
 #include <grape/error.hpp>
@@ -400,8 +401,17 @@ double SceneTiming::timeline_time(std::size_t k, double t) const noexcept {
     const Timeline& tl = timelines_[k];
     const std::ptrdiff_t parent = tl.layout.parent;
     const double in_parent = parent < 0 ? t : timeline_time(static_cast<std::size_t>(parent), t) - tl.layout.start_in_parent;
-    if (!(tl.layout.duration > 0.0)) return 0.0;  // nothing but labels: always at its start
-    return timeline_local_time(tl.def, tl.layout.duration, in_parent);
+    const double d = tl.layout.duration;
+    if (!(d > 0.0)) return 0.0;  // nothing but labels: always at its start
+    // The engine's timelines' arithmetic (its time at its own scale, less the delay, over the
+    // play's length), so that the scene and an engine ticking the same times agree bit for
+    // bit: timeline_local_time's −delay/d + t·(scale/d) rounds differently when d is not a
+    // power of two.
+    const double plays = tl.def.repeat < 0 ? 0.0 : tl.def.repeat + 1.0;
+    const PlayState s = play_at_position((in_parent * tl.def.time_scale - tl.def.delay) / d, plays, false, tl.def.yoyo,
+                                         tl.def.repeat_delay / d);
+    const double phase = std::clamp(s.phase, 0.0, 1.0);
+    return s.backward ? (1.0 - phase) * d : phase * d;
 }
 
 double SceneTiming::animation_time(std::size_t i, double t) const noexcept {
