@@ -6,10 +6,12 @@
 #include <grape/config.hpp>
 #include <grape/error.hpp>
 #include <grape/scene.hpp>
+#include <grape/scene_values.hpp>
 #if GRAPE_HAS_DYNAMICS
 #include <grape/dynamics.hpp>
 #endif
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -38,6 +40,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(grape::save_scene(again) == saved);
     for (const grape::SceneAnimation& a : scene.animations)
         for (double t : {0.0, 0.5 * a.duration, a.delay + a.duration, 1e9}) (void)a.position(t);
+    if (!scene.properties.empty()) {  // properties evaluate at any time, NaN included
+        const grape::SceneProperties values(scene, grape::SceneTiming(scene));
+        for (std::size_t k = 0; k < values.property_count(); ++k)
+            for (double t : {-1.0, 0.0, 0.3, 1.7, 1e9, std::nan("")}) (void)values.value(k, t);
+    }
 #if GRAPE_HAS_DYNAMICS
     // Simulations start and take a few steps, or are refused with grape::Error; a step that
     // reports ok leaves every particle finite (degenerate starts were flung to 1e152 before).

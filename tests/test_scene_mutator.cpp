@@ -15,6 +15,7 @@
 #include <grape/config.hpp>
 #include <grape/error.hpp>
 #include <grape/scene.hpp>
+#include <grape/scene_values.hpp>
 #if GRAPE_HAS_DYNAMICS
 #include <grape/dynamics.hpp>
 #endif
@@ -119,7 +120,9 @@ const std::vector<std::string> words = {
     "cosine_spline", "hermite_spline", "catmull_rom_spline", "physics", "svg", "complex", "by_length", "pinned",
     "gravity", "spring", "distance", "anchor", "fixed_point", "conic", "rk45", "projection", "baumgarte", "none",
     "back-out(2.5)", "steps(0,jump-none)", "monotone(0,0,1,1)", "cubic-bezier(0,9,1,-9)", "loop", "lane", "all", "",
-    "M0 0", "M0 0 L", "M 98 0 A 49 49 0 1 1 0 0", "uniform", "centripetal", "chordal"};
+    "M0 0", "M0 0 L", "M 98 0 A 49 49 0 1 1 0 0", "uniform", "centripetal", "chordal",
+    "properties", "tweens", "tween", "property", "from", "to", "by", "space", "turn", "unit", "time_scale", "number",
+    "angle", "vec2", "color", "oklab", "every", "degrees", "#ff000080", "rgb(0 0 255 / 50%)", "tint"};
 
 // Placeholders for numbers JSON text can hold but a JSON library would not write.
 const std::string beyond_doubles = "\"@@1e999@@\"";
@@ -223,6 +226,11 @@ void exercise(const grape::Scene& scene, const std::string& text) {
     ASSERT_EQ(grape::save_scene(again), saved) << "mutant: " << text.substr(0, 2000);
     for (const grape::SceneAnimation& a : scene.animations)
         for (double t : {0.0, 0.5 * a.duration, a.delay + a.duration, 1e9, 1e300}) (void)a.position(t);
+    if (!scene.properties.empty()) {
+        const grape::SceneProperties values(scene, grape::SceneTiming(scene));
+        for (std::size_t k = 0; k < values.property_count(); ++k)
+            for (double t : {0.0, 0.75, 3.0, 1e9, 1e300}) (void)values.value(k, t);
+    }
 #if GRAPE_HAS_DYNAMICS
     for (const grape::SceneSimulation& s : scene.simulations) {
         try {

@@ -61,6 +61,7 @@ void build_in_engine(const Scene& s, grape::Engine& engine, std::vector<grape::V
                     break;
                 case grape::SceneTimelineChildKind::label: t.label(c.name, c.at); break;
                 case grape::SceneTimelineChildKind::gap: t.gap(c.gap, c.at); break;
+                case grape::SceneTimelineChildKind::tween: break;  // properties: test_scene_values.cpp
             }
         }
         timelines[k] = t;

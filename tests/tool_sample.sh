@@ -50,6 +50,23 @@ cat >"$work/scene.json" <<'JSON'
                 "children": [{"animation": "a"}, {"animation": "b", "at": "<+1"}]}]}
 JSON
 
+# Properties by hand: x by 10 over 1 s, then by −4 over 0.5 s after it in a timeline (from
+# where the first left it); a colour from black to white over 1 s; a vec2 from [0, 0] to
+# [2, 4] over 2 s after a delay of 1 s; an angle from 350° to 10° the short way (to 370°).
+# At 0: the initial values (v waiting); at 1.25: x 10 − 2, white, v 1/8 of the way, 370; at
+# 2: x 6, v half way.
+cat >"$work/props.json" <<'JSON'
+{"properties": [{"name": "x", "value": 0}, {"name": "c", "type": "color", "value": "#000000"},
+            {"name": "v", "type": "vec2", "value": [0, 0]},
+            {"name": "a", "type": "angle", "value": 350, "unit": "degrees"}],
+ "tweens": [{"name": "up", "property": "x", "by": 10, "duration": 1},
+        {"name": "back", "property": "x", "by": -4, "duration": 0.5},
+        {"property": "c", "to": "#ffffff", "duration": 1},
+        {"property": "v", "from": [0, 0], "to": [2, 4], "duration": 2, "delay": 1},
+        {"property": "a", "to": 10, "duration": 1}],
+ "timelines": [{"name": "t", "children": [{"tween": "up"}, {"tween": "back"}]}]}
+JSON
+
 case $case_name in
 values)
     run "$grape" sample "$work/scene.json" --at 0,1.25,2.5,3.25,3.75,4.75,10
@@ -87,6 +104,21 @@ round_trip)
     for name in slide drop spin pulse wave; do
         [ "$(grep -o "\"$name\": \[" "$work/out" | wc -l)" = 6 ] || fail "$name is not at every time"
     done
+    ;;
+properties)
+    run "$grape" sample "$work/props.json" --at 0,1.25,2
+    [ "$status" = 0 ] || fail "exit status $status"
+    cat >"$work/expected" <<'OUT'
+[{"time": 0, "animations": {}, "properties": {"x": 0, "c": [0, 0, 0, 1], "v": [0, 0], "a": 350}},
+ {"time": 1.25, "animations": {}, "properties": {"x": 8, "c": [1, 1, 1, 1], "v": [0.25, 0.5], "a": 370}},
+ {"time": 2, "animations": {}, "properties": {"x": 6, "c": [1, 1, 1, 1], "v": [1, 2], "a": 370}}]
+OUT
+    diff "$work/expected" "$work/out" || fail "not the values derived by hand"
+    ;;
+bad_property)
+    sed 's/"property": "c"/"property": "colour"/' "$work/props.json" >"$work/bad.json"
+    run "$grape" sample "$work/bad.json" --at 0
+    expect_error "bad.json: scene: /tweens/2/property: no property named \"colour\" in /properties"
     ;;
 bad_time)
     run "$grape" sample "$work/scene.json" --at 0,soon

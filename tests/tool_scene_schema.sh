@@ -55,5 +55,18 @@ check("a position that is neither number nor string", timeline({"animation": "a"
 check("a negative gap", timeline({"gap": -1}), False)
 check("a timeline without children", {"timelines": [{"name": "t"}]}, False)
 check("a time scale of 0", {"timelines": [{"name": "t", "time_scale": 0, "children": []}]}, False)
+prop = {"name": "x", "value": 0}
+def tweens(*ts, props=(prop,)):
+    return {"properties": list(props), "tweens": list(ts)}
+check("a tween to a value, and one by an amount", tweens({"property": "x", "to": 1, "duration": 1}, {"property": "x", "by": 1, "duration": 1}), True)
+check("a tween placed in a timeline", dict(tweens({"name": "t", "property": "x", "to": 1, "duration": 1}),
+      timelines=[{"name": "l", "children": [{"tween": "t", "at": 0.5}]}]), True)
+check("a tween with both to and by", tweens({"property": "x", "to": 1, "by": 1, "duration": 1}), False)
+check("a tween with from and by", tweens({"property": "x", "from": 0, "by": 1, "duration": 1}), False)
+check("a tween with neither to nor by", tweens({"property": "x", "duration": 1}), False)
+check("a colour property", tweens(props=({"name": "c", "type": "color", "value": "#ff8000", "space": "oklab"},)), True)
+check("a colour space on a number", tweens(props=({"name": "x", "value": 0, "space": "oklab"},)), False)
+check("a vec2 property holding a number", tweens(props=({"name": "p", "type": "vec2", "value": 0},)), False)
+check("a turn on a vec2", tweens(props=({"name": "p", "type": "vec2", "value": [0, 0], "turn": "every"},)), False)
 sys.exit(1 if failures else 0)
 PY

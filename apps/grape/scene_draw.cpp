@@ -1,5 +1,6 @@
 #include "scene_draw.hpp"
 
+#include "render_properties.hpp"
 #include "render_sprites.hpp"
 
 #include <algorithm>
@@ -62,6 +63,10 @@ void draw_timeline_strips(Canvas& canvas, const Scene& scene, const ScenePlayer&
                     canvas.fill_rect({a, y - 1.0, 1.0, 12.0}, {.color = colors::black});
                     break;
                 case SceneTimelineChildKind::gap: break;
+                case SceneTimelineChildKind::tween:  // a property's tween: a pale bar with its name
+                    canvas.fill_rect({a, y + 1.0, std::max(b - a, 1.0), 9.0}, {.color = {0.85, 0.6, 0.2, 0.45}});
+                    canvas.text({a + 2.0, y + 8.5}, child.name, {.color = colors::black, .size = 8});
+                    break;
             }
         }
         const double head = x_of(timing.timeline_time(k, player.time()));
@@ -157,6 +162,7 @@ void draw_scene(Canvas& canvas, const Scene& scene, const Bounds& world, const S
     }
     canvas.set_transform({});
     if (!scene.timelines.empty()) draw_timeline_strips(canvas, scene, player);
+    draw_scene_properties(canvas, scene, player.timing(), player.time());
     std::string title = scene.name.empty() ? std::string("grape scene") : scene.name;
     const auto room = static_cast<std::size_t>(canvas.width() / 8.0);  // ~8 units per bold 13-unit glyph
     if (title.size() > room && room > 3) title = title.substr(0, room - 3) + "...";

@@ -68,6 +68,10 @@ void TimelineView::set_scene(const Scene& scene) {
                         bar.tick = true;
                         break;
                     case SceneTimelineChildKind::gap: break;
+                    case SceneTimelineChildKind::tween:  // a property's tween
+                        bar.colour = IM_COL32(215, 150, 50, 160);
+                        bar.text = child.name;
+                        break;
                 }
                 row.bars.push_back(std::move(bar));
             }

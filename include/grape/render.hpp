@@ -11,6 +11,7 @@
 //   canvas.write("path.png");
 #pragma once
 
+#include <grape/color.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
 #include <grape/sprite.hpp>
@@ -26,14 +27,8 @@
 
 namespace grape {
 
-/// A colour with straight (not premultiplied) components in [0, 1].
-struct Color {
-    double r = 0.0;  ///< red
-    double g = 0.0;  ///< green
-    double b = 0.0;  ///< blue
-    double a = 1.0;  ///< opacity: 0 transparent, 1 opaque
-    friend constexpr bool operator==(Color, Color) noexcept = default;
-};
+// Colours are grape::Color (grape/color.hpp): straight (not premultiplied) sRGB-encoded
+// components in [0, 1] and opacity a, the one definition the anim engine's tweens use too.
 
 /// A few named colours for debug drawings.
 namespace colors {

@@ -1,5 +1,6 @@
-// grape — scene: JSON files describing paths, curves, animations, simulations and timelines
-// (format: docs/scene-format.md, schema: docs/scene.schema.json).
+// grape — scene: JSON files describing paths, curves, animations, simulations, timelines,
+// sprites, and typed properties with their tweens (format: docs/scene-format.md, schema:
+// docs/scene.schema.json; properties evaluate through grape/scene_values.hpp).
 //
 // Loading validates everything and throws grape::Error naming the JSON pointer of the bad
 // value and the reason ("scene: /animations/3/path/cues/2: cues must not decrease (0.4 after
@@ -15,6 +16,7 @@
 
 #include <grape/config.hpp>
 #include <grape/anim.hpp>
+#include <grape/color.hpp>
 #include <grape/curve.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
@@ -26,6 +28,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace grape {
@@ -71,13 +74,59 @@ struct SceneAnimation {
     double end_time() const noexcept;
 };
 
+/// What a scene property holds.
+enum class ScenePropertyType {
+    number,  ///< a double
+    angle,   ///< a double in radians (or degrees, SceneProperty::degrees), turning as `shortest` says
+    vec2,    ///< a Vec2
+    color,   ///< a Color (sRGB-encoded components), mixed in `space`
+};
+
+/// A property's value: a double (number, angle), a Vec2 or a Color, as its type says.
+using SceneValue = std::variant<double, Vec2, Color>;
+
+/// A typed value of the scene that tweens drive (a tint, an angle, a scale), like a member
+/// the engine's `animate` drives.
+struct SceneProperty {
+    std::string name;                                  ///< unique among the properties, not empty
+    ScenePropertyType type = ScenePropertyType::number;  ///< what it holds
+    SceneValue value = 0.0;                            ///< its value before any tween has begun
+    ColorSpace space = ColorSpace::linear_srgb;        ///< colours: where they are mixed
+    bool shortest = true;                              ///< angles: the turn of at most half a turn (AngleLerp)
+    bool degrees = false;                              ///< angles: values in degrees (360 a turn), else radians
+};
+
+/// A tween of a property: from → to, from its value when the first play begins to `to`, or
+/// by an amount from that value (ValueMode), with a curve and the timing of an animation.
+struct SceneTween {
+    std::string name;          ///< label ("" allowed); timelines place it by name
+    std::string property;      ///< the SceneProperty it drives
+    ValueMode mode = ValueMode::from_current;  ///< from_to ("from" given), from_current ("to" alone), relative ("by")
+    SceneValue from = 0.0;     ///< from_to: the start (unused otherwise)
+    SceneValue to = 0.0;       ///< the end, or the amount for ValueMode::relative
+    Curve curve;               ///< default linear
+    std::string curve_name;    ///< the NamedCurve it uses; "" when given by its own name
+    double duration = 1.0;     ///< seconds per play, > 0
+    double delay = 0.0;        ///< seconds (its own time) before the first play, ≥ 0
+    int repeat = 0;            ///< plays after the first: 0 plays once, −1 forever
+    double repeat_delay = 0.0; ///< seconds between plays, ≥ 0
+    bool yoyo = false;         ///< every other play runs backwards
+    bool reversed = false;     ///< the first play runs from `to` to the start
+    double time_scale = 1.0;   ///< its seconds per second of the scene (or its timeline), > 0
+
+    /// The AnimationDef the anim engine plays this with (curve and timing).
+    AnimationDef def() const noexcept;
+    /// Seconds (of the scene or its timeline) until the last play ends (+inf when repeating forever).
+    double end_time() const noexcept;
+};
+
 /// What a child of a timeline is.
-enum class SceneTimelineChildKind { animation, timeline, label, gap };
+enum class SceneTimelineChildKind { animation, timeline, label, gap, tween };
 
 /// One child of a SceneTimeline, in the order placed.
 struct SceneTimelineChild {
     SceneTimelineChildKind kind = SceneTimelineChildKind::animation;
-    std::string name{};   ///< the animation's, the nested timeline's or the label's name (unused for gaps)
+    std::string name{};   ///< the animation's, tween's, nested timeline's or label's name (unused for gaps)
     double gap = 0.0;     ///< gap: seconds it occupies, ≥ 0
     TimelinePosition at{};  ///< where it goes; the default: after everything placed so far
 };
@@ -187,6 +236,8 @@ struct Scene {
     std::vector<SceneSimulation> simulations; ///< particle simulations
     std::vector<SceneTimeline> timelines;     ///< timelines driving some of the animations
     std::vector<SceneSprite> sprites;         ///< sprites from sprite sheets
+    std::vector<SceneProperty> properties;    ///< typed values driven by tweens
+    std::vector<SceneTween> tweens;           ///< tweens of the properties
     /// What loading forgave, one message each: SVG path data with a syntax error is read by
     /// SVG's error rule (the path before the command holding the error). Not saved.
     std::vector<std::string> warnings;
@@ -195,13 +246,15 @@ struct Scene {
     const NamedPath* find_path(std::string_view name) const noexcept;
     /// The named curve; nullptr when there is none.
     const NamedCurve* find_curve(std::string_view name) const noexcept;
+    /// The named property's index; −1 when there is none.
+    std::ptrdiff_t find_property(std::string_view name) const noexcept;
 };
 
 /// One play of a timeline as laid out, and where it is placed.
 struct SceneTimelineLayout {
     std::vector<double> start;        ///< per child, seconds from the timeline's start
     std::vector<double> length;       ///< per child, seconds it lasts in the timeline (labels 0)
-    std::vector<std::ptrdiff_t> index;  ///< per child, the animation's or timeline's index (−1 for labels, gaps)
+    std::vector<std::ptrdiff_t> index;  ///< per child, the animation's, tween's or timeline's index (−1 for labels, gaps)
     double duration = 0.0;            ///< seconds of one play (the end of the last-ending child)
     double end_time = 0.0;            ///< seconds of its parent until its last play ends (+inf: forever)
     std::ptrdiff_t parent = -1;       ///< the timeline it is placed in (−1: it plays from scene time 0)
@@ -211,13 +264,13 @@ struct SceneTimelineLayout {
 /// A scene's animations and timelines placed in time: which timeline drives each animation
 /// and where. Built once from a scene (which it then no longer needs); evaluation is
 /// noexcept and allocation-free, the same timing model the anim engine plays (progress_at,
-/// timeline_local_time).
+/// play_at_position as the engine's timelines call it).
 class SceneTiming {
 public:
     SceneTiming() = default;
     /// Lays out every timeline. Throws grape::Error "scene: POINTER: WHY" for an unknown or
-    /// ambiguous animation, timeline or label, a cycle of timelines, nesting deeper than 32,
-    /// an animation or timeline placed twice, a child repeating forever, a negative start.
+    /// ambiguous animation, tween, timeline or label, a cycle of timelines, nesting deeper than 32,
+    /// an animation, tween or timeline placed twice, a child repeating forever, a negative start.
     explicit SceneTiming(const Scene& scene);
 
     std::size_t animation_count() const noexcept { return animations_.size(); }
@@ -227,17 +280,32 @@ public:
     /// Timeline k's layout and placement.
     const SceneTimelineLayout& layout(std::size_t timeline) const noexcept { return timelines_[timeline].layout; }
 
-    /// Seconds into one play of timeline k at scene time t (timeline_local_time down its
-    /// chain of parents).
+    /// Seconds into one play of timeline k at scene time t, down its chain of parents, with
+    /// the engine's timeline arithmetic ((t·time_scale − delay) / duration in plays, as
+    /// play_at_position takes them): an engine ticking to the same times agrees bit for bit.
     double timeline_time(std::size_t timeline, double t) const noexcept;
     /// The time animation i plays at at scene time t: t itself when free, otherwise the
     /// seconds since its start in its timeline (negative before it, past its end after).
     double animation_time(std::size_t animation, double t) const noexcept;
     /// Progress u of animation i at scene time t: progress_at(def, duration, animation_time).
     double progress(std::size_t animation, double t) const noexcept;
-    /// Scene seconds until every free animation and top-level timeline has ended (+inf when
-    /// one repeats forever).
+    /// Scene seconds until every free animation, free tween and top-level timeline has ended
+    /// (+inf when one repeats forever).
     double end_time() const noexcept;
+
+    std::size_t tween_count() const noexcept { return tweens_.size(); }
+    /// The timeline driving tween i (−1: it plays on its own from scene time 0).
+    std::ptrdiff_t tween_driver(std::size_t tween) const noexcept { return tweens_[tween].driver; }
+    /// The time tween i plays at at scene time t (as animation_time).
+    double tween_time(std::size_t tween, double t) const noexcept;
+    /// Progress u of tween i at scene time t: progress_at(def, duration, tween_time).
+    double tween_progress(std::size_t tween, double t) const noexcept;
+    /// Scene seconds when tween i's first play begins: its delay / time_scale when free; in a
+    /// timeline, when the timeline first reaches its place (its own delay runs inside, at its start).
+    double tween_entry(std::size_t tween) const noexcept { return tweens_[tween].entry; }
+    /// Tween i has begun its current play at scene time t: t ≥ tween_entry, and in a timeline
+    /// the timeline's time is at or past its place in the current play.
+    bool tween_reached(std::size_t tween, double t) const noexcept;
 
 private:
     struct Animation {
@@ -250,8 +318,16 @@ private:
         AnimationDef def;
         SceneTimelineLayout layout;
     };
+    struct Tween {
+        AnimationDef def;
+        double duration = 1.0;
+        std::ptrdiff_t driver = -1;
+        double start = 0.0;  // in the driver's time
+        double entry = 0.0;  // scene seconds of the first play's start
+    };
     std::vector<Animation> animations_;
     std::vector<Timeline> timelines_;
+    std::vector<Tween> tweens_;
 };
 
 /// Parses scene JSON text. Throws grape::Error naming the JSON pointer and the reason
@@ -263,7 +339,9 @@ Scene load_scene_file(const std::filesystem::path& file);
 /// Reads the sheets of the scene's sprites (sheet_file relative to `folder`) and finds their
 /// clips; throws grape::Error naming the sprite's JSON pointer ("scene: /sprites/0/clip: ...").
 void load_scene_sprite_sheets(Scene& scene, const std::filesystem::path& folder);
-/// The scene as JSON text (indented, 17 significant digits). Paths built in code save too.
+/// The scene as JSON text (indented, 17 significant digits). Paths built in code save too;
+/// a curve from a function (Curve::from_function) has no text form: grape::Error naming its
+/// pointer ("scene: /tweens/0/curve: ...").
 std::string save_scene(const Scene& scene);
 /// Writes the scene to a file (through a temporary: a failure leaves no partial file).
 void save_scene_file(const Scene& scene, const std::filesystem::path& file);

@@ -157,11 +157,13 @@ struct MemberTrack final : ValueTrack {
     V C::*member;
     V from;
     V to;
+    V amount;  // relative: kept apart, so a start read again (placing in a timeline) adds it once
     ValueMode mode;
     Interp interp;
     Prepared prepared{};
     MemberTrack(V C::*m, Tween<V> tween, Interp i)
-        : member(m), from(std::move(tween.from)), to(std::move(tween.to)), mode(tween.mode), interp(std::move(i)) {
+        : member(m), from(std::move(tween.from)), to(tween.to), amount(std::move(tween.to)), mode(tween.mode),
+          interp(std::move(i)) {
         if (mode == ValueMode::from_to) prepare();
     }
     void prepare() {
@@ -172,7 +174,7 @@ struct MemberTrack final : ValueTrack {
         if (mode == ValueMode::from_to) return;
         from = object(o).*member;
         if constexpr (addable<V>) {
-            if (mode == ValueMode::relative) to = static_cast<V>(from + to);
+            if (mode == ValueMode::relative) to = static_cast<V>(from + amount);
         }
         prepare();
     }

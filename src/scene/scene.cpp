@@ -4,6 +4,7 @@
 
 #include <grape/error.hpp>
 #include <grape/path_query.hpp>
+#include <grape/scene_values.hpp>
 
 #include "atomic_file.hpp"
 
@@ -44,7 +45,8 @@ void read_range_and_offset(const json& o, const std::string& p, SceneAnimation& 
 }
 
 Scene read_scene(const json& root) {
-    object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations", "timelines", "sprites"});
+    object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations", "timelines", "sprites",
+                  "properties", "tweens"});
     if (const auto v = root.find("grape_scene"); v != root.end()) {
         if (integer(*v, "/grape_scene") != 1) fail("/grape_scene", "unsupported format version (this reader knows 1)");
     }
@@ -135,6 +137,8 @@ Scene read_scene(const json& root) {
             scene.animations.push_back(std::move(a));
         }
     }
+    if (const auto v = root.find("properties"); v != root.end()) read_properties(*v, scene);
+    if (const auto v = root.find("tweens"); v != root.end()) read_tweens(*v, scene);
     if (const auto v = root.find("simulations"); v != root.end()) {
         if (!v->is_array()) fail("/simulations", "expected an array, got " + type_of(*v));
         for (std::size_t i = 0; i < v->size(); ++i) scene.simulations.push_back(read_simulation((*v)[i], child("/simulations", i)));
@@ -143,6 +147,7 @@ Scene read_scene(const json& root) {
         scene.timelines = read_timelines(*v, "/timelines");
         (void)SceneTiming(scene);  // names, cycles and positions resolve, or the error names where
     }
+    if (!scene.tweens.empty()) (void)SceneProperties(scene, SceneTiming(scene));  // starts resolve
     if (const auto v = root.find("sprites"); v != root.end()) read_sprites(*v, scene);
     return scene;
 }
@@ -159,12 +164,15 @@ ordered scene_json(const Scene& scene) {
     }
     if (!scene.curves.empty()) {
         ordered a = ordered::array();
-        for (const NamedCurve& c : scene.curves) a.push_back({{"name", c.name}, {"curve", to_string(c.curve)}});
+        for (std::size_t i = 0; i < scene.curves.size(); ++i)
+            a.push_back({{"name", scene.curves[i].name},
+                         {"curve", saved_curve(scene.curves[i].curve, child(child("/curves", i), "curve"))}});
         j["curves"] = std::move(a);
     }
     if (!scene.animations.empty()) {
         ordered a = ordered::array();
-        for (const SceneAnimation& anim : scene.animations) {
+        for (std::size_t i = 0; i < scene.animations.size(); ++i) {
+            const SceneAnimation& anim = scene.animations[i];
             ordered o;
             if (!anim.name.empty()) o["name"] = anim.name;
             // A reference is kept only while it still names this very path.
@@ -172,7 +180,8 @@ ordered scene_json(const Scene& scene) {
             if (named && named->path == anim.path) o["path"] = anim.path_name;
             else o["path"] = path_json(anim.path);
             const NamedCurve* curve = anim.curve_name.empty() ? nullptr : scene.find_curve(anim.curve_name);
-            o["curve"] = curve && curve->curve == anim.curve ? anim.curve_name : to_string(anim.curve);
+            o["curve"] = curve && curve->curve == anim.curve ? anim.curve_name
+                                                                  : saved_curve(anim.curve, child(child("/animations", i), "curve"));
             o["duration"] = anim.duration;
             o["delay"] = anim.delay;
             o["repeat"] = anim.repeat;
@@ -185,6 +194,8 @@ ordered scene_json(const Scene& scene) {
         }
         j["animations"] = std::move(a);
     }
+    if (!scene.properties.empty()) j["properties"] = properties_json(scene);
+    if (!scene.tweens.empty()) j["tweens"] = tweens_json(scene);
     if (!scene.simulations.empty()) {
         ordered a = ordered::array();
         for (const SceneSimulation& s : scene.simulations) a.push_back(simulation_json(s));

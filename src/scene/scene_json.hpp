@@ -88,4 +88,15 @@ ordered timelines_json(const std::vector<SceneTimeline>& timelines);
 void read_sprites(const json& j, Scene& scene);
 ordered sprites_json(const Scene& scene);
 
+/// The scene's "properties" (after its curves) and "tweens" (after its properties).
+void read_properties(const json& j, Scene& scene);
+void read_tweens(const json& j, Scene& scene);
+ordered properties_json(const Scene& scene);
+ordered tweens_json(const Scene& scene);
+/// A value of a property of `type` at `pointer`, and its JSON.
+SceneValue read_value(const json& j, const std::string& pointer, ScenePropertyType type);
+ordered value_json(const SceneValue& v);
+/// The text a curve is saved as; a function curve has none (grape::Error at `pointer`).
+std::string saved_curve(const Curve& curve, const std::string& pointer);
+
 }  // namespace grape::scene_io

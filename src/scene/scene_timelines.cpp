@@ -1,6 +1,7 @@
 // Scene timelines: read and written as JSON, laid out by the anim module's pure timeline
 // layout, and evaluated down their chain of parents with the one timing model
-// (timeline_local_time for timelines, progress_at for the animations they drive).
+// (the engine timelines' arithmetic for timelines, progress_at for the animations and tweens
+// they drive).
 #include <grape/scene.hpp>
 
 #include <grape/error.hpp>
@@ -46,10 +47,11 @@ TimelinePosition read_position(const json& j, const std::string& pointer) {
 }
 
 SceneTimelineChild read_child(const json& j, const std::string& pointer) {
-    const json& o = object(j, pointer, {"animation", "timeline", "label", "gap", "at"});
+    const json& o = object(j, pointer, {"animation", "tween", "timeline", "label", "gap", "at"});
     SceneTimelineChild c;
     int kinds = 0;
     for (const auto& [key, kind] : {std::pair{"animation", SceneTimelineChildKind::animation},
+                                    std::pair{"tween", SceneTimelineChildKind::tween},
                                     std::pair{"timeline", SceneTimelineChildKind::timeline},
                                     std::pair{"label", SceneTimelineChildKind::label},
                                     std::pair{"gap", SceneTimelineChildKind::gap}}) {
@@ -66,7 +68,7 @@ SceneTimelineChild read_child(const json& j, const std::string& pointer) {
         if (kind == SceneTimelineChildKind::label) check_label_name(c.name, child(pointer, key));
     }
     if (kinds != 1)
-        fail(pointer, "expected exactly one of \"animation\", \"timeline\", \"label\" and \"gap\" (got " + std::to_string(kinds) + ")");
+        fail(pointer, "expected exactly one of \"animation\", \"tween\", \"timeline\", \"label\" and \"gap\" (got " + std::to_string(kinds) + ")");
     if (const auto at = o.find("at"); at != o.end()) c.at = read_position(*at, child(pointer, "at"));
     return c;
 }
@@ -122,6 +124,7 @@ ordered timelines_json(const std::vector<SceneTimeline>& timelines) {
             ordered e;
             switch (c.kind) {
                 case SceneTimelineChildKind::animation: e["animation"] = c.name; break;
+                case SceneTimelineChildKind::tween: e["tween"] = c.name; break;
                 case SceneTimelineChildKind::timeline: e["timeline"] = c.name; break;
                 case SceneTimelineChildKind::label: e["label"] = c.name; break;
                 case SceneTimelineChildKind::gap: e["gap"] = c.gap; break;
@@ -164,6 +167,8 @@ public:
     Resolver(const Scene& scene, std::vector<SceneTimelineLayout>& layouts) : scene_(scene), layouts_(layouts) {
         for (std::size_t i = 0; i < scene.animations.size(); ++i)
             if (!scene.animations[i].name.empty()) animations_.emplace(scene.animations[i].name, i);
+        for (std::size_t i = 0; i < scene.tweens.size(); ++i)
+            if (!scene.tweens[i].name.empty()) tweens_.emplace(scene.tweens[i].name, i);
         for (std::size_t k = 0; k < scene.timelines.size(); ++k) {
             const std::string& name = scene.timelines[k].name;
             if (name.empty()) fail(child(child("/timelines", k), "name"), "must not be empty");
@@ -172,6 +177,8 @@ public:
         state_.assign(scene.timelines.size(), 0);
         placed_animation_.assign(scene.animations.size(), std::string());
         placed_at_.assign(scene.animations.size(), {-1, 0});
+        placed_tween_.assign(scene.tweens.size(), std::string());
+        placed_tween_at_.assign(scene.tweens.size(), {-1, 0});
         placed_timeline_.assign(scene.timelines.size(), std::string());
         layouts_.assign(scene.timelines.size(), {});
     }
@@ -186,6 +193,19 @@ public:
                         std::to_string(std::next(first)->second) + ")");
         place(placed_animation_[first->second], p, "animation", name);
         placed_at_[first->second] = {k, c};
+        return first->second;
+    }
+
+    /// The tween named by child c of timeline k (its index).
+    std::size_t tween(std::size_t k, std::size_t c, const std::string& name) {
+        const std::string p = child(pointer_of(k, c), "tween");
+        const auto [first, last] = tweens_.equal_range(name);
+        if (first == last) fail(p, "no tween named \"" + name + "\" in /tweens");
+        if (std::next(first) != last)
+            fail(p, "the name \"" + name + "\" is ambiguous (/tweens/" + std::to_string(first->second) + " and /tweens/" +
+                        std::to_string(std::next(first)->second) + ")");
+        place(placed_tween_[first->second], p, "tween", name);
+        placed_tween_at_[first->second] = {k, c};
         return first->second;
     }
 
@@ -215,6 +235,14 @@ public:
                     e.duration = a.end_time();
                     if (!std::isfinite(e.duration))
                         fail(child(pointer_of(k, c), "animation"), "animation \"" + ch.name + "\" repeats forever: a timeline can only hold what ends");
+                    layout.index[c] = static_cast<std::ptrdiff_t>(i);
+                    break;
+                }
+                case SceneTimelineChildKind::tween: {
+                    const std::size_t i = tween(k, c, ch.name);
+                    e.duration = scene_.tweens[i].end_time();
+                    if (!std::isfinite(e.duration))
+                        fail(child(pointer_of(k, c), "tween"), "tween \"" + ch.name + "\" repeats forever: a timeline can only hold what ends");
                     layout.index[c] = static_cast<std::ptrdiff_t>(i);
                     break;
                 }
@@ -267,6 +295,13 @@ public:
         return {k, layouts_[static_cast<std::size_t>(k)].start[c]};
     }
 
+    /// Where each placed tween is: its timeline and start (−1 when free).
+    std::pair<std::ptrdiff_t, double> tween_placement(std::size_t i) const {
+        const auto [k, c] = placed_tween_at_[i];
+        if (k < 0) return {-1, 0.0};
+        return {k, layouts_[static_cast<std::size_t>(k)].start[c]};
+    }
+
     /// Refuses nesting deeper than max_nesting (the evaluation recurses once per level).
     void check_depth() const {
         for (std::size_t k = 0; k < layouts_.size(); ++k) {
@@ -303,11 +338,14 @@ private:
     const Scene& scene_;
     std::vector<SceneTimelineLayout>& layouts_;
     std::multimap<std::string, std::size_t> animations_;
+    std::multimap<std::string, std::size_t> tweens_;
     std::map<std::string, std::size_t> timelines_;
     std::vector<int> state_;  // 0 not yet laid out, 1 being laid out, 2 done
     std::vector<std::string> placed_animation_;  // where each is placed ("" : nowhere yet)
     std::vector<std::string> placed_timeline_;
     std::vector<std::pair<std::ptrdiff_t, std::size_t>> placed_at_;  // per animation: timeline and child (−1: free)
+    std::vector<std::string> placed_tween_;
+    std::vector<std::pair<std::ptrdiff_t, std::size_t>> placed_tween_at_;  // per tween
 };
 
 }  // namespace
@@ -322,15 +360,58 @@ SceneTiming::SceneTiming(const Scene& scene) {
         const auto [driver, start] = resolver.placement(i);
         animations_.push_back({a.def(), a.duration, driver, start});
     }
+    std::vector<std::pair<std::ptrdiff_t, double>> placed;  // read before the layouts move
+    for (std::size_t i = 0; i < scene.tweens.size(); ++i) placed.push_back(resolver.tween_placement(i));
     for (std::size_t k = 0; k < scene.timelines.size(); ++k) timelines_.push_back({scene.timelines[k].def(), std::move(layouts[k])});
+    for (std::size_t i = 0; i < scene.tweens.size(); ++i) {
+        const SceneTween& tw = scene.tweens[i];
+        const auto [driver, start] = placed[i];
+        Tween out{tw.def(), tw.duration, driver, start, 0.0};
+        // The first play begins where the chain of timelines first reaches the tween's place:
+        // a timeline's first play is at local time x at (delay + x) / time_scale of its parent.
+        double x = driver < 0 ? (tw.delay > 0.0 ? tw.delay / tw.time_scale : 0.0) : start;
+        for (std::ptrdiff_t k = driver; k >= 0;) {
+            const Timeline& tl = timelines_[static_cast<std::size_t>(k)];
+            x = (tl.def.delay + x) / tl.def.time_scale + tl.layout.start_in_parent;
+            k = tl.layout.parent;
+        }
+        out.entry = x;
+        tweens_.push_back(out);
+    }
+}
+
+double SceneTiming::tween_time(std::size_t i, double t) const noexcept {
+    const Tween& tw = tweens_[i];
+    if (tw.driver < 0) return t;
+    return timeline_time(static_cast<std::size_t>(tw.driver), t) - tw.start;
+}
+
+double SceneTiming::tween_progress(std::size_t i, double t) const noexcept {
+    const Tween& tw = tweens_[i];
+    return progress_at(tw.def, tw.duration, tween_time(i, t));
+}
+
+bool SceneTiming::tween_reached(std::size_t i, double t) const noexcept {
+    const Tween& tw = tweens_[i];
+    if (!(t >= tw.entry)) return false;
+    return tw.driver < 0 || tween_time(i, t) >= 0.0;
 }
 
 double SceneTiming::timeline_time(std::size_t k, double t) const noexcept {
     const Timeline& tl = timelines_[k];
     const std::ptrdiff_t parent = tl.layout.parent;
     const double in_parent = parent < 0 ? t : timeline_time(static_cast<std::size_t>(parent), t) - tl.layout.start_in_parent;
-    if (!(tl.layout.duration > 0.0)) return 0.0;  // nothing but labels: always at its start
-    return timeline_local_time(tl.def, tl.layout.duration, in_parent);
+    const double d = tl.layout.duration;
+    if (!(d > 0.0)) return 0.0;  // nothing but labels: always at its start
+    // The engine's timelines' arithmetic (its time at its own scale, less the delay, over the
+    // play's length), so that the scene and an engine ticking the same times agree bit for
+    // bit: timeline_local_time's −delay/d + t·(scale/d) rounds differently when d is not a
+    // power of two.
+    const double plays = tl.def.repeat < 0 ? 0.0 : tl.def.repeat + 1.0;
+    const PlayState s = play_at_position((in_parent * tl.def.time_scale - tl.def.delay) / d, plays, false, tl.def.yoyo,
+                                         tl.def.repeat_delay / d);
+    const double phase = std::clamp(s.phase, 0.0, 1.0);
+    return s.backward ? (1.0 - phase) * d : phase * d;
 }
 
 double SceneTiming::animation_time(std::size_t i, double t) const noexcept {
@@ -349,6 +430,8 @@ double SceneTiming::end_time() const noexcept {
     double end = 0.0;
     for (const Animation& a : animations_)
         if (a.driver < 0) end = std::max(end, a.duration > 0.0 ? grape::end_time(a.def, a.duration) : 0.0);
+    for (const Tween& tw : tweens_)
+        if (tw.driver < 0) end = std::max(end, grape::end_time(tw.def, tw.duration));
     for (const Timeline& tl : timelines_)
         if (tl.layout.parent < 0) end = std::max(end, tl.layout.end_time);
     return end;

@@ -1,0 +1,156 @@
+// Scene properties evaluated at any time: their tweens ordered by entry, from-current and
+// relative starts resolved once in that order, the value at t found from the last tween
+// begun (the rule in grape/scene_values.hpp).
+#include <grape/scene_values.hpp>
+
+#include <grape/error.hpp>
+
+#include "scene_json.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace grape {
+
+namespace {
+
+using scene_io::child;
+using scene_io::fail;
+
+// AngleLerp in degrees: the same arithmetic with a turn of 360.
+double degrees_lerp(double a, double b, double t, bool shortest) noexcept {
+    if (!shortest) return grape::lerp(a, b, t);
+    const double turn = b - a;
+    const double d = std::abs(turn) <= 180.0 ? turn : std::remainder(turn, 360.0);
+    return t == 1.0 ? a + d : a + d * t;
+}
+
+std::size_t index_of(ScenePropertyType type) noexcept {
+    switch (type) {
+        case ScenePropertyType::number:
+        case ScenePropertyType::angle: return 0;
+        case ScenePropertyType::vec2: return 1;
+        case ScenePropertyType::color: return 2;
+    }
+    return 0;
+}
+
+const char* what_of(ScenePropertyType type) noexcept {
+    switch (type) {
+        case ScenePropertyType::number: return "a number";
+        case ScenePropertyType::angle: return "an angle (a number)";
+        case ScenePropertyType::vec2: return "a vec2 [x, y]";
+        case ScenePropertyType::color: return "a colour";
+    }
+    return "a number";
+}
+
+SceneValue add(const SceneValue& a, const SceneValue& b) noexcept {
+    if (const double* x = std::get_if<double>(&a)) return *x + std::get<double>(b);
+    return std::get<Vec2>(a) + std::get<Vec2>(b);
+}
+
+bool finite(const SceneValue& v) noexcept {
+    if (const double* x = std::get_if<double>(&v)) return std::isfinite(*x);
+    if (const Vec2* p = std::get_if<Vec2>(&v)) return std::isfinite(p->x) && std::isfinite(p->y);
+    const Color& c = std::get<Color>(v);
+    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && std::isfinite(c.a);
+}
+
+void check_value(const SceneValue& v, const SceneProperty& prop, const std::string& pointer) {
+    if (v.index() != index_of(prop.type))
+        fail(pointer, std::string("expected ") + what_of(prop.type) + " (the type of property \"" + prop.name + "\")");
+    if (!finite(v)) fail(pointer, "number out of range");
+}
+
+}  // namespace
+
+SceneValue interpolate(const SceneProperty& property, const SceneValue& a, const SceneValue& b, double u) noexcept {
+    switch (property.type) {
+        case ScenePropertyType::number: return grape::lerp(std::get<double>(a), std::get<double>(b), u);
+        case ScenePropertyType::angle: {
+            const double x = std::get<double>(a), y = std::get<double>(b);
+            return property.degrees ? degrees_lerp(x, y, u, property.shortest) : AngleLerp{property.shortest}(x, y, u);
+        }
+        case ScenePropertyType::vec2: return grape::lerp(std::get<Vec2>(a), std::get<Vec2>(b), u);
+        case ScenePropertyType::color: return mix(std::get<Color>(a), std::get<Color>(b), u, property.space);
+    }
+    return a;
+}
+
+SceneProperties::SceneProperties(const Scene& scene, const SceneTiming& timing)
+    : properties_(scene.properties), timing_(timing) {
+    for (std::size_t k = 0; k < properties_.size(); ++k) {
+        const SceneProperty& prop = properties_[k];
+        const std::string p = child("/properties", k);
+        if (prop.name.empty()) fail(child(p, "name"), "must not be empty");
+        for (std::size_t j = 0; j < k; ++j)
+            if (properties_[j].name == prop.name) fail(child(p, "name"), "duplicate name \"" + prop.name + "\"");
+        check_value(prop.value, prop, child(p, "value"));
+    }
+    if (timing.tween_count() != scene.tweens.size())
+        throw Error("scene: /tweens: the timing was built from another scene (" + std::to_string(timing.tween_count()) +
+                    " tweens, the scene has " + std::to_string(scene.tweens.size()) + ")");
+    order_.assign(properties_.size(), {});
+    for (std::size_t i = 0; i < scene.tweens.size(); ++i) {
+        const SceneTween& tw = scene.tweens[i];
+        const std::string p = child("/tweens", i);
+        const std::ptrdiff_t k = scene.find_property(tw.property);
+        if (k < 0) fail(child(p, "property"), "no property named \"" + tw.property + "\" in /properties");
+        const SceneProperty& prop = properties_[static_cast<std::size_t>(k)];
+        if (tw.mode == ValueMode::from_to) check_value(tw.from, prop, child(p, "from"));
+        if (tw.mode == ValueMode::relative && prop.type == ScenePropertyType::color)
+            fail(child(p, "by"), "a colour cannot move by an amount (property \"" + prop.name + "\" is a color): give \"to\"");
+        check_value(tw.to, prop, child(p, tw.mode == ValueMode::relative ? "by" : "to"));
+        if (!(tw.duration > 0.0) || !std::isfinite(tw.duration)) fail(child(p, "duration"), "must be positive and finite");
+        if (!(tw.delay >= 0.0) || !std::isfinite(tw.delay)) fail(child(p, "delay"), "must be finite and ≥ 0");
+        if (!(tw.repeat_delay >= 0.0) || !std::isfinite(tw.repeat_delay)) fail(child(p, "repeat_delay"), "must be finite and ≥ 0");
+        if (!(tw.time_scale > 0.0) || !std::isfinite(tw.time_scale)) fail(child(p, "time_scale"), "must be positive and finite");
+        if (tw.repeat < -1) fail(child(p, "repeat"), "must be −1 (forever) or a count ≥ 0");
+        const double u0 = tw.curve(tw.reversed ? 1.0 : 0.0);
+        tweens_.push_back({tw.mode == ValueMode::from_to ? tw.from : prop.value, tw.to, static_cast<std::size_t>(k), u0});
+        order_[static_cast<std::size_t>(k)].push_back(i);
+        entry_.push_back(timing.tween_entry(i));
+    }
+    // Each property's tweens by entry (ties: their order in "tweens"); then, in that order,
+    // each from-current or relative start is the value the tweens before it give at its entry.
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+        std::vector<std::size_t>& list = order_[k];
+        std::stable_sort(list.begin(), list.end(), [&](std::size_t a, std::size_t b) { return entry_[a] < entry_[b]; });
+        for (std::size_t n = 0; n < list.size(); ++n) {
+            const std::size_t i = list[n];
+            const ValueMode mode = scene.tweens[i].mode;
+            if (mode == ValueMode::from_to) continue;
+            const SceneValue start = value_of(k, n, entry_[i]);
+            tweens_[i].from = start;
+            if (mode == ValueMode::relative) tweens_[i].to = add(start, scene.tweens[i].to);
+        }
+    }
+}
+
+SceneValue SceneProperties::value(std::size_t property, double t) const noexcept {
+    return value_of(property, order_[property].size(), t);
+}
+
+// The value at t given only the first `count` tweens of the property's order.
+SceneValue SceneProperties::value_of(std::size_t property, std::size_t count, double t) const noexcept {
+    const SceneProperty& prop = properties_[property];
+    const std::vector<std::size_t>& list = order_[property];
+    // The tweens entered by t are a prefix of the order.
+    const auto first = list.begin();
+    const auto entered = std::upper_bound(first, first + static_cast<std::ptrdiff_t>(count), t,
+                                          [&](double time, std::size_t i) { return time < entry_[i]; });
+    if (entered == first) return prop.value;
+    for (auto it = entered; it != first;) {
+        const std::size_t i = *--it;
+        if (timing_.tween_reached(i, t)) return interpolate(prop, tweens_[i].from, tweens_[i].to, timing_.tween_progress(i, t));
+    }
+    // Entered, but none has begun its current play (a timeline looped back before them): the
+    // first rests at its start.
+    const Tween& rest = tweens_[*first];
+    return interpolate(prop, rest.from, rest.to, rest.start_u);
+}
+
+}  // namespace grape
