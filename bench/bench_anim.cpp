@@ -81,13 +81,21 @@ void run(benchmark::State& state, const char* name, double bytes, Step&& step, b
         clock_gettime(wall ? CLOCK_MONOTONIC : CLOCK_THREAD_CPUTIME_ID, &ts);
         return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
     };
+    auto cpu = [] {
+        timespec ts{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+    };
+    double cpu_seconds = 0;  // the calling thread's CPU time, beside wall time
     for (auto _ : state) {
-        const double t0 = now();
+        const double c0 = wall ? cpu() : 0.0, t0 = now();
         step();
         seconds += now() - t0;
+        if (wall) cpu_seconds += cpu() - c0;
         ++frames;
     }
     const double ns = seconds * 1e9 / static_cast<double>(frames * n);
+    if (wall) results[key((std::string(name) + "_cpu").c_str(), n)].ns_per_update.push_back(cpu_seconds * 1e9 / static_cast<double>(frames * n));
     state.counters["ns_per_update"] = ns;
     state.counters["bytes_per_anim"] = bytes;
     state.SetItemsProcessed(frames * n);
@@ -437,6 +445,8 @@ int main(int argc, char** argv) {
         ratios("tweeny_quad", "grape_linear", n, "tweeny quad / linear");
         ratios("wall_one_pass", "wall_parallel_2", n, "one-pass / parallel 2 threads");
         ratios("wall_one_pass", "wall_two_phase_1", n, "one-pass / two-phase 1 thread");
+        // what the calling thread itself spends: the share of the work it kept
+        ratios("wall_one_pass_cpu", "wall_parallel_2_cpu", n, "one-pass / parallel 2, caller's CPU");
     }
     return 0;
 }

@@ -123,13 +123,14 @@ struct PathEntry {
     std::uint32_t refs = 0;
 };
 
-/// What the hot loop reads of a shared path: one or two cache lines, the linear and cubic
-/// coefficients copied in so that most updates never leave the engine's storage.
-struct PathFast {
-    Vec2 c[4];                       // PathKernel::c
+/// What the hot loop reads of a shared path, the linear and cubic coefficients copied in so
+/// that most updates never leave the engine's storage. Line-aligned with the kind first: a
+/// line reads one cache line (kind, c[0], c[1]), a cubic two.
+struct alignas(64) PathFast {
+    KernelKind fast = KernelKind::generic;
     const double* table = nullptr;   // reparametrized: the kernel's ArcLengthTable values
     double steps = 0.0;
-    KernelKind fast = KernelKind::generic;
+    Vec2 c[4];                       // PathKernel::c
 };
 
 struct CurveEntry {
