@@ -69,24 +69,33 @@ std::map<std::string, Result> results;  // "name/N"
 std::string key(const char* name, std::int64_t n) { return std::string(name) + "/" + std::to_string(n); }
 
 // Times the loop body ourselves too (steady clock), so the summary can print ratios.
+// wall: wall-clock time instead (a parallel tick's work is on several threads).
 template <class Step>
-void run(benchmark::State& state, const char* name, double bytes, Step&& step) {
+void run(benchmark::State& state, const char* name, double bytes, Step&& step, bool wall = false) {
     const auto n = state.range(0);
     double seconds = 0;
     std::int64_t frames = 0;
     // Thread CPU time: the machine is shared, and wall time counts the other jobs' turns.
-    auto now = [] {
+    auto now = [wall] {
+        timespec ts{};
+        clock_gettime(wall ? CLOCK_MONOTONIC : CLOCK_THREAD_CPUTIME_ID, &ts);
+        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+    };
+    auto cpu = [] {
         timespec ts{};
         clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
         return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
     };
+    double cpu_seconds = 0;  // the calling thread's CPU time, beside wall time
     for (auto _ : state) {
-        const double t0 = now();
+        const double c0 = wall ? cpu() : 0.0, t0 = now();
         step();
         seconds += now() - t0;
+        if (wall) cpu_seconds += cpu() - c0;
         ++frames;
     }
     const double ns = seconds * 1e9 / static_cast<double>(frames * n);
+    if (wall) results[key((std::string(name) + "_cpu").c_str(), n)].ns_per_update.push_back(cpu_seconds * 1e9 / static_cast<double>(frames * n));
     state.counters["ns_per_update"] = ns;
     state.counters["bytes_per_anim"] = bytes;
     state.SetItemsProcessed(frames * n);
@@ -113,6 +122,32 @@ void grape_engine(benchmark::State& state, BenchPathKind kind, const char* name,
     });
     benchmark::DoNotOptimize(targets.data());
 }
+
+// The parallel tick against the one-pass tick, both in wall-clock time, on the linear kind.
+// threads 0: one-pass; else Engine::set_parallel({.threads}).
+void grape_engine_wall(benchmark::State& state, BenchPathKind kind, const char* name, int threads) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    const auto segments = grape::scenes::bench_segments(distinct_paths);
+    const auto paths = grape::scenes::bench_paths(kind, segments);
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    const long long before = live_bytes.load();
+    auto engine = std::make_unique<grape::Engine>();
+    grape::scenes::create_bench_animations(*engine, targets, paths, grape::Curve::quad_in_out());
+    const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
+    if (threads > 0) engine->set_parallel({.threads = threads});
+    engine->tick(frame);
+    run(
+        state, name, bytes,
+        [&] {
+            engine->tick(frame);
+            benchmark::ClobberMemory();
+        },
+        true);
+    benchmark::DoNotOptimize(targets.data());
+}
+void BM_wall_one_pass(benchmark::State& s) { grape_engine_wall(s, BenchPathKind::linear, "wall_one_pass", 0); }
+void BM_wall_two_phase_1(benchmark::State& s) { grape_engine_wall(s, BenchPathKind::linear, "wall_two_phase_1", 1); }
+void BM_wall_parallel_2(benchmark::State& s) { grape_engine_wall(s, BenchPathKind::linear, "wall_parallel_2", 2); }
 
 void BM_grape_linear(benchmark::State& s) { grape_engine(s, BenchPathKind::linear, "grape_linear"); }
 void BM_grape_cubic(benchmark::State& s) { grape_engine(s, BenchPathKind::cubic_bezier, "grape_cubic"); }
@@ -214,6 +249,36 @@ void BM_floor(benchmark::State& state) {
     benchmark::DoNotOptimize(targets.data());
 }
 
+// The memory-traffic floor of a tick: each 32-byte record read, its first double written
+// back, 16 bytes written to its target (the engine's hot record and write, nothing computed).
+struct Record {
+    double phase;
+    double rate;
+    grape::scenes::BenchTarget* target;
+    std::uint64_t rest;
+};
+static_assert(sizeof(Record) == 32);
+
+void BM_traffic_floor(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    const long long before = live_bytes.load();
+    auto records = std::make_unique<std::vector<Record>>(n);
+    for (std::size_t i = 0; i < n; ++i) (*records)[i] = {0.0, 1.0 / grape::scenes::bench_duration(i), &targets[i], i};
+    const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
+    run(state, "traffic_floor", bytes, [&] {
+        Record* r = records->data();
+        for (std::size_t i = 0; i < n; ++i) {
+            const double phase = r[i].phase + frame * r[i].rate;
+            r[i].phase = phase;
+            r[i].target->x = phase;
+            r[i].target->y = r[i].rate;
+        }
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
 // Typed values: N animations of one member of a plain struct, same durations, curve and
 // yoyo, through Engine::animate: a colour (linear light), a colour in OKLab, a user type with
 // its own lerp (three doubles), and a double.
@@ -299,6 +364,10 @@ void sizes(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_floor)->Apply(sizes);
+BENCHMARK(BM_traffic_floor)->Apply(sizes);
+BENCHMARK(BM_wall_one_pass)->Apply(sizes);
+BENCHMARK(BM_wall_two_phase_1)->Apply(sizes);
+BENCHMARK(BM_wall_parallel_2)->Apply(sizes);
 BENCHMARK(BM_grape_linear)->Apply(sizes);
 BENCHMARK(BM_grape_cubic)->Apply(sizes);
 BENCHMARK(BM_grape_reparam_cubic)->Apply(sizes);
@@ -328,10 +397,10 @@ int main(int argc, char** argv) {
     for (std::int64_t n : {1000, 100000, 1000000}) {
         const auto tw = results.find(key("tweeny_quad", n));
         const auto fl = results.find(key("floor", n));
-        for (const char* name : {"floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "grape_cubic_spread",
+        for (const char* name : {"floor", "traffic_floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "grape_cubic_spread",
                                  "grape_reparam_cubic_spread", "tweeny_linear", "tweeny_quad", "grape_color",
                                  "grape_color_oklab", "grape_user_type", "grape_typed_double",
-                                 "grape_property_double"}) {
+                                 "grape_property_double", "wall_one_pass", "wall_two_phase_1", "wall_parallel_2"}) {
             const auto it = results.find(key(name, n));
             if (it == results.end()) continue;
             const double r = it->second.median();
@@ -356,6 +425,28 @@ int main(int argc, char** argv) {
                         static_cast<long long>(n), r[r.size() / 2], r.front(), r.back(), a->second.median(),
                         b->second.median());
         }
+    }
+    // Ratios per repetition (median [min, max]): the linear kind to the memory-traffic floor
+    // (thread CPU time), and the one-pass tick to the parallel one (wall time).
+    auto ratios = [](const char* over, const char* under, std::int64_t n, const char* label) {
+        const auto a = results.find(key(over, n));
+        const auto b = results.find(key(under, n));
+        if (a == results.end() || b == results.end()) return;
+        std::vector<double> r;
+        for (std::size_t i = 0; i < std::min(a->second.ns_per_update.size(), b->second.ns_per_update.size()); ++i)
+            r.push_back(a->second.ns_per_update[i] / b->second.ns_per_update[i]);
+        std::sort(r.begin(), r.end());
+        std::printf("%-34s N=%-8lld %6.2f [%.2f, %.2f]  (%.2f / %.2f ns)\n", label, static_cast<long long>(n),
+                    r[r.size() / 2], r.front(), r.back(), a->second.median(), b->second.median());
+    };
+    std::printf("\nratios (median [min, max] over repetitions)\n");
+    for (std::int64_t n : {1000, 100000, 1000000}) {
+        ratios("grape_linear", "traffic_floor", n, "linear / memory-traffic floor");
+        ratios("tweeny_quad", "grape_linear", n, "tweeny quad / linear");
+        ratios("wall_one_pass", "wall_parallel_2", n, "one-pass / parallel 2 threads");
+        ratios("wall_one_pass", "wall_two_phase_1", n, "one-pass / two-phase 1 thread");
+        // what the calling thread itself spends: the share of the work it kept
+        ratios("wall_one_pass_cpu", "wall_parallel_2_cpu", n, "one-pass / parallel 2, caller's CPU");
     }
     return 0;
 }

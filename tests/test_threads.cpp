@@ -1,6 +1,6 @@
 // The thread-safety contract of path.hpp, curve.hpp, anim.hpp and dynamics.hpp: shared Paths
-// and Curves read from several threads at once, and separate engines, particle systems and
-// beads stepping on separate threads. Every thread must get exactly (bit for bit) what one
+// and Curves read from several threads at once, separate engines, particle systems and
+// beads stepping on separate threads, and an engine's parallel tick. Every thread must get exactly (bit for bit) what one
 // thread gets alone: the same code on the same immutable inputs. Built with
 // -fsanitize=thread by scripts/run-tsan, which fails on any data race the runs expose.
 #include <grape/anim.hpp>
@@ -136,6 +136,47 @@ TEST(Threads, SeparateEnginesOnSeparateThreadsShareTheirPaths) {
     const std::vector<double> reference = run_engine(paths, curve);
     const auto results = on_threads<std::vector<double>>([&](int) { return run_engine(paths, curve); });
     for (int i = 0; i < thread_count; ++i) EXPECT_EQ(results[i], reference) << "thread " << i;
+}
+
+// One engine whose ticks are shared among `threads` threads (Engine::set_parallel): 6,000
+// animations over the shared paths and curves, so phase 1 splits into many blocks, with loop
+// handlers that read every target the workers wrote (phase 2 runs after them) and seek
+// other animations.
+std::vector<double> run_parallel_engine(const std::vector<grape::Path>& paths, const grape::Curve& curve, int threads) {
+    grape::Engine engine;
+    engine.set_parallel({.threads = threads, .min_animations = 0});
+    constexpr std::size_t count = 6000;
+    std::vector<Sprite> sprites(count);
+    std::vector<grape::Animation> anims;
+    double seen = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const grape::AnimationDef def{.curve = i % 3 ? curve : grape::Curve::quad_in_out(),
+                                      .delay = i % 5 == 0 ? 0.1 : 0.0, .repeat = -1, .yoyo = i % 2 == 0,
+                                      .heading = i % 50 == 0};
+        anims.push_back(engine.create_2d_animation(sprites[i], paths[i % paths.size()],
+                                                   0.25 + 0.001 * static_cast<double>(i % 700), def));
+    }
+    for (std::size_t i = 0; i < count; i += 97) {
+        anims[i].on_loop([&, i](int play) {
+            for (const Sprite& s : sprites) seen += s.x;  // written by the workers in phase 1
+            anims[(i * 31 + static_cast<std::size_t>(play)) % count].seek(0.05);
+        });
+    }
+    for (int frame = 0; frame < 120; ++frame) engine.tick(1.0 / 60.0);
+    std::vector<double> out;
+    for (const Sprite& s : sprites) out.insert(out.end(), {s.x, s.y, s.rotation});
+    out.push_back(seen);
+    return out;
+}
+
+TEST(Threads, ParallelTickOnFourThreadsMatchesOne) {
+    const std::vector<grape::Path> paths = shared_paths();
+    const grape::Curve curve = grape::Curve::cubic_bezier(0.42, 0.0, 0.58, 1.0);
+    const std::vector<double> reference = run_parallel_engine(paths, curve, 1);
+    EXPECT_EQ(run_parallel_engine(paths, curve, thread_count), reference);
+    // and two such engines at once, each with its own workers
+    const auto results = on_threads<std::vector<double>>([&](int) { return run_parallel_engine(paths, curve, 2); });
+    for (const std::vector<double>& r : results) EXPECT_EQ(r, reference);
 }
 
 #ifdef GRAPE_TEST_DYNAMICS

@@ -15,6 +15,9 @@ Engine::Engine() : impl_(std::make_unique<detail::EngineImpl>(this)) {}
 Engine::~Engine() = default;
 
 void Engine::tick(double dt) { impl_->tick(dt); }
+void Engine::set_parallel(const ParallelDef& def) { impl_->set_parallel(def.threads, def.min_animations); }
+void Engine::set_serial() { impl_->set_serial(); }
+int Engine::tick_threads() const noexcept { return impl_->threads(); }
 
 Animation Engine::create_bound_2d(void* target, std::size_t x_offset, std::size_t y_offset, bool is_float,
                                   std::ptrdiff_t rotation_offset, const Path& path, double duration,

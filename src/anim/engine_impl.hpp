@@ -7,6 +7,7 @@
 
 #include "path/kernel.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -24,6 +25,10 @@ namespace grape::detail {
 class TimelineStore;
 struct TimelineStoreDelete {
     void operator()(TimelineStore* store) const noexcept;  // timeline.cpp, where the type is complete
+};
+class TickPool;
+struct TickPoolDelete {
+    void operator()(TickPool* pool) const noexcept;  // engine_parallel.cpp
 };
 
 enum HotFlag : std::uint8_t {
@@ -125,13 +130,14 @@ struct PathEntry {
     std::uint32_t refs = 0;
 };
 
-/// What the hot loop reads of a shared path: one or two cache lines, the linear and cubic
-/// coefficients copied in so that most updates never leave the engine's storage.
-struct PathFast {
-    Vec2 c[4];                       // PathKernel::c
+/// What the hot loop reads of a shared path, the linear and cubic coefficients copied in so
+/// that most updates never leave the engine's storage. Line-aligned with the kind first: a
+/// line reads one cache line (kind, c[0], c[1]), a cubic two.
+struct alignas(64) PathFast {
+    KernelKind fast = KernelKind::generic;
     const double* table = nullptr;   // reparametrized: the kernel's ArcLengthTable values
     double steps = 0.0;
-    KernelKind fast = KernelKind::generic;
+    Vec2 c[4];                       // PathKernel::c
 };
 
 struct CurveEntry {
@@ -289,6 +295,36 @@ private:
     std::multimap<std::uintptr_t, std::uint32_t> by_address_;  // lowest written byte -> slot
     std::size_t widest_ = 0;                                 // widest written span indexed (bytes)
     std::unordered_set<std::uint32_t> linked_;               // slots of linked records
+
+    // --- two-phase and parallel ticks (engine_parallel.cpp) ---
+public:
+    void set_parallel(int threads, std::size_t min_records);
+    void set_serial();
+    int threads() const noexcept { return two_phase_ ? threads_ : 0; }
+
+private:
+    // The common update of record i (see tick); false, with nothing changed, when the record
+    // needs the general path. phase1: also leaves function curves (user code) to the general path.
+    template <bool phase1>
+    bool plain_step(Hot* hot, Cold* cold, const PathFast* fast, std::size_t i, double dt) const noexcept;
+    std::size_t plain_run(std::size_t i, std::size_t n, double dt) noexcept;
+    void advance_general(std::uint32_t dense, double dt);
+    void plain_phase(double dt);
+    void general_phase(double dt);
+    std::size_t advance_plain(std::size_t begin, std::size_t end, double dt, std::uint32_t* slow) noexcept;
+    static void plain_job(void* self) noexcept;
+
+    bool two_phase_ = false;
+    int threads_ = 1;
+    std::size_t parallel_min_ = 0;           // fewer records: phase 1 on the calling thread alone
+    std::vector<std::uint32_t> slow_;        // phase 1's records for phase 2, from each block's start
+    std::vector<std::uint32_t> slow_count_;  // per block
+    std::size_t block_ = 0;                  // this tick's records per block, blocks and records
+    std::size_t blocks_ = 0;
+    std::size_t plain_n_ = 0;
+    double plain_dt_ = 0.0;
+    std::atomic<std::size_t> next_block_{0};
+    std::unique_ptr<TickPool, TickPoolDelete> pool_;  // last: its workers stop before the rest goes
 };
 
 /// The high bit of Slot::dense marks a free slot (its low bits chain to the next free one).
