@@ -69,7 +69,7 @@ void TimelineView::set_scene(const Scene& scene) {
                         break;
                     case SceneTimelineChildKind::gap: break;
                     case SceneTimelineChildKind::tween:  // a property's tween
-                        bar.colour = IM_COL32(215, 150, 50, 160);
+                        bar.color = IM_COL32(215, 150, 50, 160);
                         bar.text = child.name;
                         break;
                 }
