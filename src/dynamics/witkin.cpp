@@ -38,6 +38,14 @@ void SolverWorkspace::prepare(const SystemView& system, double dt) {
     } else {
         ks = kd = 0.0;
     }
+    if (dt > 0.0) {
+        // At most the gains of omega_dt = ½ (ks ≤ 1/(4dt²), kd ≤ 1/dt: the damping removes at
+        // most the whole drift rate Ċ within one step, critically damped): stronger feedback
+        // corrects more than the violation within one step, an overshoot that the explicit
+        // integrators amplify (semi-implicit Euler already diverges at omega_dt = 1).
+        ks = std::min(ks, 0.25 / (dt * dt));
+        kd = std::min(kd, 1.0 / dt);
+    }
     worst = SolveStatus::ok;
     evaluations = 0;
     cg_iterations = 0;
@@ -77,6 +85,10 @@ void SolverWorkspace::build_topology() {
     c_dot.assign(rows, 0.0);
     jdot_v.assign(rows, 0.0);
     gradient_norm2.assign(rows, 0.0);
+    curvature.assign(rows, 0.0);
+    degenerate.assign(rows, 0);
+    any_degenerate = false;
+    diagonal_value.assign(rows, 0);
     rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(rows));
     lambda = rhs;
     lambda_previous = rhs;
@@ -120,6 +132,7 @@ void SolverWorkspace::build_topology() {
         offset.resize(rows + 1);
         offset[0] = 0;
         for (std::uint32_t r = 0; r < rows; ++r) offset[r + 1] = offset[r] + (r - first[r] + 1);
+        for (std::uint32_t r = 0; r < rows; ++r) diagonal_value[r] = offset[r + 1] - 1;
         sky_matrix.assign(envelope, 0.0);
         sky_factor.assign(envelope, 0.0);
         sky_work.assign(rows, 0.0);
@@ -153,6 +166,9 @@ void SolverWorkspace::build_topology() {
             const int* at = std::lower_bound(inner + outer[j], inner + outer[j + 1], i);
             k.value = static_cast<std::uint32_t>(at - inner);
         }
+        for (std::uint32_t r = 0; r < rows; ++r)
+            diagonal_value[r] = static_cast<std::size_t>(
+                std::lower_bound(inner + outer[r], inner + outer[r + 1], static_cast<int>(r)) - inner);
         if (solver.method != LinearSolver::conjugate_gradient) sparse_ldlt.analyzePattern(sparse_matrix);
     }
     dirty = false;
@@ -164,6 +180,9 @@ void SolverWorkspace::assemble() {
     const std::size_t count = skyline ? sky_matrix.size() : static_cast<std::size_t>(sparse_matrix.nonZeros());
     std::fill(values, values + count, 0.0);
     for (const auto& k : contributions) values[k.value] += w[k.particle] * dot(jacobian[k.block_i], jacobian[k.block_j]);
+    if (any_degenerate)
+        for (std::uint32_t r = 0; r < rows; ++r)
+            if (degenerate[r]) values[diagonal_value[r]] = 1.0;  // decoupled: its J blocks are zero
 }
 std::size_t SolverWorkspace::size() const noexcept { return 2 * view.particles; }
 
@@ -178,6 +197,7 @@ void SolverWorkspace::acceleration(double t, std::span<const double> q, std::spa
     std::fill(fc.begin(), fc.end(), Vec2{});
     if (rows > 0) {
         evaluate_rows(x, u);
+        mark_degenerate();
         assemble();
         for (std::uint32_t r = 0; r < rows; ++r) {
             double jwq = 0.0;
@@ -185,7 +205,7 @@ void SolverWorkspace::acceleration(double t, std::span<const double> q, std::spa
                 const auto p = block_particle[b];
                 jwq += w[p] * dot(jacobian[b], f[p]);
             }
-            rhs(r) = -jdot_v[r] - jwq - ks * c[r] - kd * c_dot[r];
+            rhs(r) = -jdot_v[r] - jwq - (ks > 0.0 ? ks * trusted_value(r) : 0.0) - kd * c_dot[r];
         }
         solve();
         ++evaluations;
@@ -212,10 +232,11 @@ int SolverWorkspace::project(std::span<Vec2> x, std::span<Vec2> v) {
     const double tolerance = std::max(drift.projection_tolerance, 8.0 * std::numeric_limits<double>::epsilon() * scale);
     int iterations = 0;
     evaluate_rows(x, v);
+    mark_degenerate();
     double before = worst_distance();
     while (iterations < drift.projection_iterations && before > tolerance) {
         assemble();
-        for (std::uint32_t r = 0; r < rows; ++r) rhs(r) = -c[r];
+        for (std::uint32_t r = 0; r < rows; ++r) rhs(r) = -trusted_value(r);
         solve();
         for (std::uint32_t r = 0; r < rows; ++r)
             for (std::uint32_t b = row_begin[r]; b < row_begin[r + 1]; ++b) {
@@ -224,6 +245,7 @@ int SolverWorkspace::project(std::span<Vec2> x, std::span<Vec2> v) {
             }
         ++iterations;
         evaluate_rows(x, v);
+        mark_degenerate();
         const double after = worst_distance();
         // Quadratic convergence ends at round-off, where the residual stops shrinking.
         if (!(after < 0.5 * before)) break;

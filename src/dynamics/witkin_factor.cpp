@@ -190,6 +190,9 @@ SolveStatus SolverWorkspace::solve() {
 SolveStatus SolverWorkspace::solve_factored() {
     const SolverDef& def = *view.solver;
     SolveStatus status = SolveStatus::ok;
+    if (any_degenerate)  // a dropped row asks for no correction
+        for (std::uint32_t r = 0; r < rows; ++r)
+            if (degenerate[r]) rhs(r) = 0.0;
     if (skyline && rows == 1) {  // one row (a bead on a curve, a pendulum): a division
         const double a = sky_matrix[0];
         lambda(0) = factor == Factor::ok ? rhs(0) / a : 0.0;

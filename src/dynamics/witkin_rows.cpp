@@ -25,6 +25,7 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             jdot_v[row] = dot(w, w);
             c_dot[row] = dot(d, w);
             gradient_norm2[row] = 2.0 * dot(d, d);
+            curvature[row] = 2.0;  // the Hessian [I −I; −I I] of ½|xb − xa|²
             break;
         }
         case ConstraintKind::anchor: {
@@ -34,6 +35,7 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             jdot_v[row] = dot(v[r.a], v[r.a]);
             c_dot[row] = dot(d, v[r.a]);
             gradient_norm2[row] = dot(d, d);
+            curvature[row] = 1.0;
             break;
         }
         case ConstraintKind::fixed_point:
@@ -57,6 +59,10 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             jdot_v[row] = sample.hxx * u.x * u.x + 2.0 * sample.hxy * u.x * u.y + sample.hyy * u.y * u.y;
             c_dot[row] = dot(sample.gradient, u);
             gradient_norm2[row] = length_squared(sample.gradient);
+            // |H·n̂|, n̂ = ∇C/|∇C|: how fast the gradient changes along the Newton step.
+            const double g = std::sqrt(gradient_norm2[row]);
+            const Vec2 n = g > 0.0 ? sample.gradient / g : Vec2{};
+            curvature[row] = std::hypot(sample.hxx * n.x + sample.hxy * n.y, sample.hxy * n.x + sample.hyy * n.y);
             break;
         }
         case ConstraintKind::user: {
@@ -103,9 +109,9 @@ double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const
             const double d2 = dot(d, d);
             const double value = 0.5 * (d2 - r.length * r.length);
             c[row] = value;
-            rhs(row) = -value;
             gradient_norm2[row] = 2.0 * d2;
-            worst2 = std::max(worst2, value * value / (2.0 * d2));
+            rhs(row) = -trusted_value(row);
+            if (!degenerate[row]) worst2 = std::max(worst2, value * value / (2.0 * d2));
             break;
         }
         case ConstraintKind::anchor: {
@@ -113,9 +119,9 @@ double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const
             const double d2 = dot(d, d);
             const double value = 0.5 * (d2 - r.length * r.length);
             c[row] = value;
-            rhs(row) = -value;
             gradient_norm2[row] = d2;
-            worst2 = std::max(worst2, value * value / d2);
+            rhs(row) = -trusted_value(row);
+            if (!degenerate[row]) worst2 = std::max(worst2, value * value / d2);
             break;
         }
         case ConstraintKind::fixed_point:
@@ -129,7 +135,7 @@ double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const
         case ConstraintKind::curve:
         case ConstraintKind::user:
             evaluate_rows(x, v);
-            for (std::uint32_t k = 0; k < rows; ++k) rhs(k) = -c[k];
+            for (std::uint32_t k = 0; k < rows; ++k) rhs(k) = -trusted_value(k);
             return worst_distance();
         }
         ++row;
@@ -142,6 +148,7 @@ double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const
 double SolverWorkspace::worst_distance() const noexcept {
     double worst_d = 0.0;
     for (std::uint32_t r = 0; r < rows; ++r) {
+        if (degenerate[r]) continue;  // dropped: no correction is made along it
         const double d = gradient_norm2[r] > 0.0 ? std::abs(c[r]) / std::sqrt(gradient_norm2[r])
                                                  : (c[r] == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
         worst_d = std::max(worst_d, d);
@@ -149,5 +156,23 @@ double SolverWorkspace::worst_distance() const noexcept {
     return worst_d;
 }
 
+
+bool SolverWorkspace::mark_degenerate(double condition) {
+    bool changed = false, any = false;
+    for (std::uint32_t r = 0; r < rows; ++r) {
+        // κ = |C|·h/|∇C|² ≥ condition, without the division (a zero gradient with C ≠ 0 is degenerate too).
+        const double g2 = gradient_norm2[r];
+        const bool bad = g2 > 0.0 ? std::abs(c[r]) * curvature[r] >= condition * g2 : c[r] != 0.0;
+        changed = changed || bad != static_cast<bool>(degenerate[r]);
+        degenerate[r] = bad;
+        any = any || bad;
+        if (bad)
+            for (std::uint32_t b = row_begin[r]; b < row_begin[r + 1]; ++b) jacobian[b] = {};
+    }
+    any_degenerate = any;
+    if (any) note(SolveStatus::singular);
+    if (changed) factor_current = false;
+    return changed;
+}
 
 }  // namespace grape::detail
