@@ -124,10 +124,13 @@ enum class SolveStatus {
     /// could not be trusted at the current positions (see ParticleSystem::step)
     singular,
     not_converged,  ///< conjugate gradient stopped at its iteration limit
+    /// rk45 reached Rk45Def::max_substeps within the step: the rest of dt was taken without
+    /// error control (a dt far too long for the tolerance, or a stiff system)
+    substep_limit,
     non_finite,     ///< the state left the finite range: the step was not taken (state and time unchanged)
 };
 
-/// The status name ("ok", "singular", "not_converged", "non_finite").
+/// The status name ("ok", "singular", "not_converged", "substep_limit", "non_finite").
 std::string_view to_string(SolveStatus status) noexcept;
 
 /// What one ParticleSystem::step did.
@@ -286,6 +289,8 @@ public:
     void set_drift(const DriftDef& drift);
     /// Changes the integrator (its rk45 step memory restarts).
     void set_integrator(Integrator integrator);
+    /// Changes the rk45 settings (validated as in Stepper; its step memory restarts).
+    void set_rk45(const Rk45Def& rk45);
 
     // -- simulation --
     /// Advances by dt seconds (> 0, finite; throws grape::Error otherwise): integrates with

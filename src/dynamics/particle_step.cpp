@@ -106,6 +106,7 @@ StepReport ParticleSystem::single_step(double dt) {
         return report;
     }
     state_->time += dt;
+    if (stats.limited) s.note(SolveStatus::substep_limit);
     if (state_->def.drift.method == DriftControl::projection) {
         const std::vector<Vec2> x0 = state_->positions, v0 = state_->velocities;
         report.projection_iterations = s.project(state_->positions, state_->velocities);

@@ -64,6 +64,7 @@ std::string_view to_string(SolveStatus status) noexcept {
     case SolveStatus::ok: return "ok";
     case SolveStatus::singular: return "singular";
     case SolveStatus::not_converged: return "not_converged";
+    case SolveStatus::substep_limit: return "substep_limit";
     case SolveStatus::non_finite: return "non_finite";
     }
     return "unknown";
@@ -255,6 +256,11 @@ void ParticleSystem::set_drift(const DriftDef& drift) {
 void ParticleSystem::set_integrator(Integrator integrator) {
     state_->def.integrator = integrator;
     state_->stepper = Stepper(integrator, state_->def.rk45);
+}
+
+void ParticleSystem::set_rk45(const Rk45Def& rk45) {
+    state_->stepper = Stepper(state_->def.integrator, rk45);  // validates
+    state_->def.rk45 = rk45;
 }
 
 void detail::ParticleState::apply_forces(double t, std::span<const Vec2> x, std::span<const Vec2> v,
