@@ -63,6 +63,17 @@ many_simulations)
     expect_error "simulation 's0' (/simulations/0): rk45 needs more than 100 sub-steps for the step at t = 0 s (dt = 1e+10 s is too long for its tolerance, or the system is stiff; try a smaller dt)"
     [ $elapsed -le 20 ] || fail "took $elapsed s"
     ;;
+trails)
+    # The world box records every particle after every step: to t = 10⁴ s at dt = 1e-3 that is
+    # 1e7 steps × 10 particles × 16 bytes = 1.5 GiB, past the memory budget of 1 GiB (the
+    # work budget raised out of the way, to check the memory one).
+    parts='{"position": [0, 0]}'
+    k=1
+    while [ $k -lt 10 ]; do parts="$parts, {\"position\": [$k, 0]}"; k=$((k + 1)); done
+    printf '{"view": {"width": 64, "height": 48}, "simulations": [{"name": "dust", "integrator": "euler", "dt": 1e-3, "duration": 1e4, "particles": [%s]}]}\n' "$parts" >"$work/dust.json"
+    run "$grape" render "$work/dust.json" -o "$work/out.png" --time 1e4 --simulation-budget 1e12
+    expect_error "render: recording the scene's simulations for the picture's bounds needs about 1.5 GiB, more than the budget of 1.0 GiB; the heaviest is simulation 'dust' (/simulations/0) (use a larger dt, a shorter duration, or --force to render it anyway)"
+    ;;
 non_finite)
     # A step that leaves the finite range stops the render (before: the player stepped it for ever).
     printf '{"view": {"width": 64, "height": 48}, "simulations": [{"name": "fast", "integrator": "euler", "dt": 1, "duration": 100, "particles": [{"position": [0, 0], "velocity": [1e300, 0]}], "forces": [{"kind": "gravity", "acceleration": [1e308, 0]}]}]}\n' >"$work/fast.json"
