@@ -21,7 +21,7 @@ fail() {
     exit 1
 }
 
-GRAPE_MUTANT_DIR="$work/scenes" GRAPE_MUTATOR_SEED=${GRAPE_MUTATOR_SEED:-18} GRAPE_MUTATOR_ROUNDS=1000 \
+GRAPE_MUTANT_DIR="$work/scenes" GRAPE_MUTATOR_SEED=${GRAPE_MUTATOR_SEED:-18} GRAPE_MUTATOR_ROUNDS=600 \
     "$mutator" --gtest_filter=SceneMutator.LoadsOrRefusesEveryMutant >"$work/mutator.log" 2>&1 ||
     { cat "$work/mutator.log"; fail "the scene mutator failed"; }
 total=$(ls "$work/scenes" | wc -l)
