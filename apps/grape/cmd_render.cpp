@@ -36,6 +36,14 @@ std::string lower_extension(const std::filesystem::path& p) {
     return e;
 }
 
+// The work `grape render` takes on without --force (stated in --help and the README).
+constexpr double memory_budget = 1024.0 * 1024.0 * 1024.0;  // bytes of raster per picture
+constexpr int max_frames = 100000;
+constexpr double max_drawn_length = 1e6;  // output units of path drawn per picture (~1000 view perimeters)
+// Force evaluations × (particles + constraints) of the scene's simulations, counted at their
+// most (simulation_work): about 10 s here at ~0.2 µs each.
+constexpr double max_simulation_work = 5e7;
+
 struct RenderOptions {
     std::string scene;
     std::string out;
@@ -45,12 +53,9 @@ struct RenderOptions {
     double fps = 30.0;
     bool force = false;
     bool strict = false;  // the scene's warnings are errors
+    double simulation_budget = max_simulation_work;
 };
 
-// The work `grape render` takes on without --force (stated in --help and the README).
-constexpr double memory_budget = 1024.0 * 1024.0 * 1024.0;  // bytes of raster per picture
-constexpr int max_frames = 100000;
-constexpr double max_drawn_length = 1e6;  // output units of path drawn per picture (~1000 view perimeters)
 
 std::string mebibytes(double bytes) {
     if (bytes < 1024.0 * 1024.0) return format("%.1f KiB", bytes / 1024.0);
@@ -65,6 +70,35 @@ double free_bytes(const std::filesystem::path& folder) {
     return ec ? HUGE_VAL : static_cast<double>(space.available);
 }
 
+// Refuses (unless forced) a scene whose simulations would take more than the work budget or
+// whose recorded trails would take more than the memory budget, naming the heaviest.
+void check_simulation_work(const Scene& scene, double t_end, bool force, double budget) {
+    if (force) return;
+    double total = 0.0, trails = 0.0;
+    std::size_t heaviest = 0;
+    SimulationWork worst;
+    for (std::size_t i = 0; i < scene.simulations.size(); ++i) {
+        const SimulationWork w = simulation_work(scene, i, t_end);
+        total += w.work;
+        trails += w.trail_bytes;
+        if (w.work > worst.work) worst = w, heaviest = i;
+    }
+    if (total <= budget && trails <= memory_budget) return;
+    const SceneSimulation& s = scene.simulations[heaviest];
+    const std::string name = (s.name.empty() ? std::string("simulation") : "simulation '" + s.name + "'") +
+                             " (/simulations/" + std::to_string(heaviest) + ")";
+    if (total > budget)
+        throw Error("render: the scene's simulations need up to " + format("%.3g", total) +
+                    " force evaluations × particles and constraints, more than the budget of " +
+                    format("%.3g", budget) + "; the heaviest, " + name + ", takes " + format("%.3g", worst.steps) +
+                    " steps of " + s.integrator + " with up to " + format("%.0f", worst.evaluations_per_step) +
+                    " evaluations each for " + format("%.0f", worst.size) +
+                    " particles and constraints (use a larger dt, a shorter duration, or --force to render it anyway)");
+    throw Error("render: recording the scene's simulations for the picture's bounds needs about " + mebibytes(trails) +
+                ", more than the budget of " + mebibytes(memory_budget) + "; the heaviest is " + name +
+                " (use a larger dt, a shorter duration, or --force to render it anyway)");
+}
+
 void run_render(const RenderOptions& o) {
     const std::filesystem::path out = o.out;
     const std::string ext = lower_extension(out);
@@ -73,6 +107,8 @@ void run_render(const RenderOptions& o) {
     if (!std::isfinite(o.time) || o.time < 0.0) throw Error("render: --time must be finite and ≥ 0 (got " + format("%g", o.time) + ")");
     if (o.frames_given && (o.frames < 1 || o.frames > max_frames))
         throw Error("render: --frames must be in [1, 100000] (got " + std::to_string(o.frames) + ")");
+    if (!(o.simulation_budget > 0.0) || !std::isfinite(o.simulation_budget))
+        throw Error("render: --simulation-budget must be finite and > 0 (got " + format("%g", o.simulation_budget) + ")");
     if (!std::isfinite(o.fps) || o.fps <= 0.0 || o.fps > 10000.0) throw Error("render: --fps must be in (0, 10000] (got " + format("%g", o.fps) + ")");
     const auto parent = out.parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))
@@ -91,6 +127,7 @@ void run_render(const RenderOptions& o) {
                     " picture needs about " + mebibytes(raster) + " of memory, more than the budget of " +
                     mebibytes(memory_budget) + " (use --force to render it anyway)");
     const double t_end = o.time + (frames - 1) / o.fps;
+    check_simulation_work(scene, t_end, o.force, o.simulation_budget);
     current_activity() = "computing the bounds of " + o.scene;
     const Bounds world = scene_bounds(scene, t_end);
     // cairo's stroking time grows with the length drawn (faster than linearly where a path
@@ -171,7 +208,11 @@ void register_render_command(CLI::App& app) {
     cmd->add_flag("--force", options->force,
                   "Render even when a PNG picture needs more than 1 GiB of raster memory (views up to 32768×32768) or "
                   "the frames look larger than the free disk space (estimated from the first frame) or the paths are "
-                  "longer than 1e6 output units on the picture");
+                  "longer than 1e6 output units on the picture or the simulations need more than 5e7 force "
+                  "evaluations × particles and constraints (rk45 counted at its cap of 100 sub-steps a step)");
+    cmd->add_option("--simulation-budget", options->simulation_budget,
+                    "Force evaluations × (particles + constraints) the scene's simulations may take, counted before "
+                    "they run (default 5e7, about 10 s; --force lifts the budget)");
     cmd->add_flag("--strict", options->strict,
                   "Refuse a scene that loads with warnings (SVG path data with a syntax error, read by SVG's error "
                   "rule) instead of printing them on stderr and rendering");

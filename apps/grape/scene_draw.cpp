@@ -101,8 +101,7 @@ Bounds scene_bounds(const Scene& scene, double t_end) {
     }
     if (!scene.simulations.empty()) {
         // The whole run (up to 20000 steps each) sets the box, so every frame shares one view.
-        double horizon = t_end;
-        for (const SceneSimulation& s : scene.simulations) horizon = std::max(horizon, std::min(s.duration, 20000.0 * s.dt));
+        const double horizon = bounds_horizon(scene, t_end);
         ScenePlayer runner(scene, true);
         runner.advance_to(horizon);
         for (const auto& trail : runner.trails())

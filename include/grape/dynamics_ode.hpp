@@ -49,7 +49,10 @@ int order(Integrator integrator) noexcept;
 struct Rk45Def {
     double tolerance = 1e-10;  ///< per sub-step error bound, relative and absolute (0: no control, fixed step)
     double min_step = 1e-12;   ///< seconds; below it a sub-step is accepted anyway (and counted)
-    int max_substeps = 100000; ///< per step(), a guard against stiffness
+    /// Sub-steps (accepted and rejected) per step() at most, a guard against stiffness and
+    /// against a dt far beyond the tolerance: when reached, the rest of the step is taken in
+    /// one sub-step without error control and the step says so (StepStats::limited).
+    int max_substeps = 100000;
 };
 
 /// A system q̈ = a(t, q, q̇) of n coordinates: the only view integrators have of a model.
@@ -69,6 +72,9 @@ struct StepStats {
     int substeps = 0;     ///< accepted sub-steps (1 for fixed-step integrators)
     int rejected = 0;     ///< rk45 sub-steps rejected by error control
     int forced = 0;       ///< rk45 sub-steps accepted at min_step despite the error
+    /// rk45 reached Rk45Def::max_substeps: the rest of the step was one sub-step without
+    /// error control (its result is not to be trusted).
+    bool limited = false;
     /// False when the state or rk45's error estimate left the finite range: the step stopped
     /// there (rk45 at once, without rejecting sub-steps to max_substeps) and q, v are as before.
     bool finite = true;

@@ -69,6 +69,8 @@ std::span<const DriftControl> all_drift_controls() noexcept;
 struct DriftDef {
     DriftControl method = DriftControl::baumgarte;  ///< see DriftControl
     /// Baumgarte gains from the step: ω = omega_dt/dt, ks = ω², kd = 2ω (critical damping).
+    /// Whatever the settings, a step uses ks ≤ 1/(4dt²) and kd ≤ 1/dt (the gains of
+    /// omega_dt = ½): stronger feedback overshoots the violation within one step.
     double omega_dt = 0.05;
     std::optional<double> stiffness{};  ///< ks in 1/s², overrides omega_dt (kd then defaults to 2√ks)
     std::optional<double> damping{};    ///< kd in 1/s, overrides the default
@@ -118,12 +120,17 @@ struct ParticleSystemDef {
 /// Outcome of the last constraint solve(s).
 enum class SolveStatus {
     ok,             ///< J W Jᵀ was regular and the solve succeeded
-    singular,       ///< redundant or degenerate constraints: a least-squares/CG solution was used
+    /// redundant or degenerate constraints: a least-squares/CG solution was used, or a row
+    /// could not be trusted at the current positions (see ParticleSystem::step)
+    singular,
     not_converged,  ///< conjugate gradient stopped at its iteration limit
+    /// rk45 reached Rk45Def::max_substeps within the step: the rest of dt was taken without
+    /// error control (a dt far too long for the tolerance, or a stiff system)
+    substep_limit,
     non_finite,     ///< the state left the finite range: the step was not taken (state and time unchanged)
 };
 
-/// The status name ("ok", "singular", "not_converged", "non_finite").
+/// The status name ("ok", "singular", "not_converged", "substep_limit", "non_finite").
 std::string_view to_string(SolveStatus status) noexcept;
 
 /// What one ParticleSystem::step did.
@@ -282,6 +289,8 @@ public:
     void set_drift(const DriftDef& drift);
     /// Changes the integrator (its rk45 step memory restarts).
     void set_integrator(Integrator integrator);
+    /// Changes the rk45 settings (validated as in Stepper; its step memory restarts).
+    void set_rk45(const Rk45Def& rk45);
 
     // -- simulation --
     /// Advances by dt seconds (> 0, finite; throws grape::Error otherwise): integrates with
@@ -290,6 +299,14 @@ public:
     /// grape::Error when a constraint's gradient is zero at the current positions (a particle
     /// at its anchor or on top of its distance partner, at the centre of a circle): its force
     /// would have no direction, and Baumgarte feedback would fling the particle away.
+    /// Near such a point (a rod compressed far below its length, a bead near a circle's
+    /// centre) a row is judged by κ = |C|·|H·n̂|/|∇C|² (H the Hessian of C, n̂ the gradient's
+    /// direction; rods and anchors exactly, curves from their second derivatives, user rows
+    /// not at all): for κ > 1 the gradient may vanish within the correction's reach, so
+    /// Baumgarte feedback and projection aim only at |C| = |∇C|²/|H·n̂| (a trust region the
+    /// next step widens), RATTLE leaves the row out of the step, and for κ ≥ 100 (an anchor's
+    /// particle within L/14 of it) the row is left out of the solve; such steps report
+    /// singular. The particle then moves under its other forces until the row is trusted.
     StepReport step(double dt);
     /// Simulated time in seconds.
     double time() const noexcept;

@@ -206,8 +206,13 @@ public:
     /// The path over u in [0, 1]: Béziers, circle arcs, lines and cubic splines as exact
     /// curves, other kinds flattened within a quarter of an output unit. A path from SVG data
     /// is drawn as SVG draws it: `Z` closes its subpath (a join, not two caps) and a
-    /// zero-length subpath is a dot with round caps.
+    /// zero-length subpath is a dot with round caps. The work is bounded by the length on
+    /// the picture: a sine wave of waves shorter than the tolerance is drawn as the band it
+    /// fills (a zigzag every quarter unit), one of amplitude within it as its axis.
     void stroke_path(const Path& path, const StrokeStyle& style);
+    /// The pieces (lines and cubic curves) stroke_path hands to cairo for `path` under the
+    /// current transform: the work of drawing it. Leaves no path behind.
+    std::size_t path_pieces(const Path& path);
     /// The path closed by a straight line from its end back to its start, filled.
     void fill_path(const Path& path, const FillStyle& style);
 

@@ -32,6 +32,15 @@ struct ParticleState {
     void apply_forces(double t, std::span<const Vec2> x, std::span<const Vec2> v, std::span<Vec2> out) const noexcept;
 };
 
+// The solver workspace (scratch, not the state) with C, Ċ, J̇v and |∇C|² evaluated at the
+// current state.
+inline SolverWorkspace& evaluated_rows(ParticleState& state) {
+    auto& s = state.solver;
+    s.look_at(state.view());
+    s.evaluate_rows(state.positions, state.velocities);
+    return s;
+}
+
 // The integrators see positions and velocities as 2n doubles.
 static_assert(sizeof(Vec2) == 2 * sizeof(double), "positions are viewed as 2n doubles");
 

@@ -55,6 +55,9 @@ bool SolverWorkspace::rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v
     view.apply_forces(view.system, t, x, v, f);
     std::fill(fc.begin(), fc.end(), Vec2{});
     if (rows > 0) {
+        // SHAKE must reach C(x₁) = 0 within the step: rows whose linearization cannot (κ ≥ 1)
+        // are dropped from the whole step (their G₀ blocks are zero).
+        mark_degenerate(1.0);
         jacobian_start.assign(jacobian.begin(), jacobian.end());
         if (!factor_current || !have_witkin_lambda) {
             assemble();
@@ -86,9 +89,10 @@ bool SolverWorkspace::rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v
         while (iterations < drift.projection_iterations && before > tolerance) {
             if (!chord) {
                 evaluate_rows(x, v);
+                mark_degenerate(1.0);
                 assemble();
                 factorize();
-                for (std::uint32_t r = 0; r < rows; ++r) rhs(r) = -c[r];
+                for (std::uint32_t r = 0; r < rows; ++r) rhs(r) = -trusted_value(r);
             }
             solve_factored();  // rhs = −C, written by evaluate_values
             const std::vector<Vec2>& g = chord ? jacobian_start : jacobian;
@@ -122,6 +126,7 @@ bool SolverWorkspace::rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v
     }
     if (rows > 0) {
         evaluate_rows(x, v);
+        mark_degenerate(1.0);
         assemble();
         factorize();
         for (std::uint32_t r = 0; r < rows; ++r) rhs(r) = -c_dot[r];

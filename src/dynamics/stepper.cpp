@@ -222,6 +222,7 @@ StepStats Stepper::step(SecondOrderSystem& system, double t, std::span<double> q
                 last_rejected = false;
                 if (stats.substeps + stats.rejected >= rk45_.max_substeps && done < dt) {
                     h = dt - done;  // give up control: finish the frame in one sub-step
+                    stats.limited = true;
                 }
             } else {
                 ++stats.rejected;

@@ -9,6 +9,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -62,6 +63,15 @@ struct SolverWorkspace final : SecondOrderSystem {
     // -- per evaluation --
     std::vector<Vec2> jacobian;  // per block
     std::vector<double> c, c_dot, jdot_v, gradient_norm2;  // per row
+    // Per row: h = |H·n̂|, the rate at which ∇C changes along its own direction n̂ (H the
+    // Hessian of C: rods 2, anchors 1, fixed points 0, curves from their second derivatives;
+    // user rows 0, as they give none).
+    std::vector<double> curvature;
+    // Rows dropped by the conditioning test (mark_degenerate): their Jacobian blocks are zero,
+    // their diagonal of J W Jᵀ is 1 and their right-hand side 0, so their multiplier is 0.
+    std::vector<std::uint8_t> degenerate;
+    bool any_degenerate = false;
+    std::vector<std::size_t> diagonal_value;  // per row: index of (r, r) in the value array
     std::vector<Vec2> user_x, user_v;                       // scratch for user constraints
 
     Eigen::SparseMatrix<double> sparse_matrix;
@@ -93,7 +103,28 @@ struct SolverWorkspace final : SecondOrderSystem {
     // |C|/|∇C|. Jacobians and rates are left as they were unless a curve or user row forces
     // the full evaluation.
     double evaluate_values(std::span<const Vec2> x, std::span<const Vec2> v);
-    // J W Jᵀ from the current J and inverse masses.
+    // The conditioning of a row, κ = |C|·h/|∇C|²: over the Newton step s = |C|/|∇C| the
+    // gradient changes by h·s (exactly for the quadratic rods and anchors), so for κ < 1 it
+    // cannot vanish before C does, while for κ ≥ 1 the linearization overshoots (a rod
+    // compressed below 1/√3 of its length, a bead near a circle's centre) and Baumgarte's
+    // −ks·C along a short gradient flings the particle away.
+    // C limited to κ ≤ 1, |C| ≤ |∇C|²/h: what position corrections (Baumgarte's ks·C, the
+    // Newton steps of the projection and of RATTLE) aim at, a trust region that the next
+    // evaluation widens (an anchor's particle at r < L/√3 is sent to 2r). Notes singular
+    // when it limits.
+    double trusted_value(std::uint32_t r) noexcept {
+        const double value = c[r], limit = gradient_norm2[r];
+        if (!(std::abs(value) * curvature[r] > limit)) return value;
+        note(SolveStatus::singular);
+        return std::copysign(limit / curvature[r], value);
+    }
+    // Drops the rows with κ ≥ condition (by default degenerate_condition: a rod compressed
+    // below 1/14 of its length) from the solve: their level sets are so much more curved than the constraint
+    // that even C̈ = 0 along them is a stiff, tiny orbit. Notes singular when it drops one;
+    // returns true when the set of dropped rows changed.
+    static constexpr double degenerate_condition = 100.0;
+    bool mark_degenerate(double condition = degenerate_condition);
+    // J W Jᵀ from the current J and inverse masses (a dropped row's diagonal set to 1).
     void assemble();
     // Skyline Cholesky of sky_matrix into sky_factor; false when a pivot is (numerically) zero.
     bool factor_skyline() noexcept;

@@ -354,6 +354,22 @@ void Canvas::stroke_path(const Path& path, const StrokeStyle& style) {
     detail::stroke(cr, style);
 }
 
+std::size_t Canvas::path_pieces(const Path& path) {
+    cairo_t* cr = state_->cr;
+    cairo_new_path(cr);
+    detail::add_path(cr, path, 0.25 / transform().max_stretch());
+    cairo_path_t* copy = cairo_copy_path(cr);
+    std::size_t pieces = 0;
+    if (copy->status == CAIRO_STATUS_SUCCESS)
+        for (int i = 0; i < copy->num_data; i += copy->data[i].header.length) {
+            const auto type = copy->data[i].header.type;
+            if (type == CAIRO_PATH_LINE_TO || type == CAIRO_PATH_CURVE_TO) ++pieces;
+        }
+    cairo_path_destroy(copy);
+    cairo_new_path(cr);
+    return pieces;
+}
+
 void Canvas::fill_path(const Path& path, const FillStyle& style) {
     cairo_t* cr = state_->cr;
     cairo_new_path(cr);

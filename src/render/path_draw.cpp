@@ -87,6 +87,65 @@ void add_cubic_piece(cairo_t* cr, const Path& path, double u0, double u1) {
     curve_to(cr, (2.0 * a - c) / 18.0, (2.0 * c - a) / 18.0, b3);
 }
 
+// An arc of device radius beyond huge_arc_radius: cairo splits arcs into Béziers by angle,
+// more the larger the radius (150 at 1e12 px, 3220 at 1e20, and tens of seconds at 1e50),
+// though almost all of such an arc lies far outside the picture. Here it is divided by
+// angle only where it comes near the picture: a piece is a straight chord once it bulges
+// from it by at most the tolerance, or once its box (the chord's, grown by that bulge)
+// misses the picture, so the work grows with the depth of the division (≤ 64), not with
+// the radius. The points are device coordinates: x = c + A·cos θ + B·sin θ.
+constexpr double huge_arc_radius = 1e6;
+
+struct HugeArc {
+    cairo_t* cr;
+    Vec2 c, a, b;
+    double radius, tolerance;
+    Rect view;  // device units, grown by a margin for strokes
+    Vec2 at(double theta) const noexcept { return c + a * std::cos(theta) + b * std::sin(theta); }
+    void piece(double t0, Vec2 p0, double t1, Vec2 p1, int depth) const noexcept {
+        const double half = 0.5 * (t1 - t0);
+        // How far the arc strays from its chord: R·(1 − cos(Δθ/2)), or its whole size past a half turn.
+        const double s = std::sin(0.5 * half);  // 1 − cos(Δθ/2) = 2 sin²(Δθ/4), without cancellation
+        const double bulge = half >= 0.5 * pi ? 2.0 * radius : 2.0 * radius * s * s;
+        const bool away = std::max(p0.x, p1.x) + bulge < view.x || std::min(p0.x, p1.x) - bulge > view.x + view.width ||
+                          std::max(p0.y, p1.y) + bulge < view.y || std::min(p0.y, p1.y) - bulge > view.y + view.height;
+        if (bulge <= tolerance || away || depth >= 64) {
+            cairo_line_to(cr, p1.x, p1.y);
+            return;
+        }
+        const double tm = t0 + half;
+        const Vec2 pm = at(tm);
+        piece(t0, p0, tm, pm, depth + 1);
+        piece(tm, pm, t1, p1, depth + 1);
+    }
+};
+
+// Draws the arc c + N·(cos θ, sin θ), θ in [0, ω] (world units) as HugeArc when its device
+// radius is beyond huge_arc_radius; false otherwise.
+bool add_huge_arc(cairo_t* cr, Vec2 centre, Vec2 col0, Vec2 col1, double omega, double tolerance) {
+    cairo_matrix_t m;
+    cairo_get_matrix(cr, &m);
+    const auto linear = [&](Vec2 v) { return Vec2{m.xx * v.x + m.xy * v.y, m.yx * v.x + m.yy * v.y}; };
+    const Vec2 a = linear(col0), b = linear(col1);
+    // A bound on the semi-major axis on the picture (the largest singular value of [a b]):
+    // the Frobenius norm, by hypot so that no square overflows.
+    const double radius = std::hypot(std::hypot(a.x, a.y), std::hypot(b.x, b.y));
+    if (!(radius > huge_arc_radius) || !std::isfinite(radius)) return false;
+    const double stretch = std::sqrt(0.5 * (m.xx * m.xx + m.xy * m.xy + m.yx * m.yx + m.yy * m.yy) +
+                                     std::hypot(0.5 * (m.xx * m.xx + m.yx * m.yx - m.xy * m.xy - m.yy * m.yy),
+                                                m.xx * m.xy + m.yx * m.yy));
+    double x1 = 0.0, y1 = 0.0, x2 = 0.0, y2 = 0.0;
+    cairo_save(cr);
+    cairo_identity_matrix(cr);
+    cairo_clip_extents(cr, &x1, &y1, &x2, &y2);
+    constexpr double margin = 64.0;  // device units: wide strokes and their caps stay outside
+    const HugeArc arc{cr, Vec2{m.xx * centre.x + m.xy * centre.y + m.x0, m.yx * centre.x + m.yy * centre.y + m.y0}, a, b,
+                      radius, tolerance * stretch, {x1 - margin, y1 - margin, x2 - x1 + 2 * margin, y2 - y1 + 2 * margin}};
+    arc.piece(0.0, arc.at(0.0), omega, arc.at(omega), 0);  // the caller began the subpath at x(0)
+    cairo_restore(cr);
+    return true;
+}
+
 // Circle and ellipse arcs: x = c + N·(cos ωu, sin ωu) for a 2×2 matrix N and ω > 0 (a
 // clockwise sweep folds into N). Then d2 = −ω²·(x − c), so x(u) − x(0) = −(d2(u) − d2(0))/ω²
 // gives ω, c = x(0) + d2(0)/ω², and N = [x(0) − c | d1(0)/ω]; cairo draws the unit arc
@@ -116,6 +175,7 @@ void add_arc(cairo_t* cr, const Path& path, double tolerance) {
         return;
     }
     begin_at(cr, p0, tolerance);
+    if (add_huge_arc(cr, centre, col0, col1, omega, tolerance)) return;
     cairo_matrix_t saved;
     cairo_get_matrix(cr, &saved);
     const cairo_matrix_t n{col0.x, col0.y, col1.x, col1.y, centre.x, centre.y};
@@ -161,6 +221,36 @@ void add_svg(cairo_t* cr, const std::vector<SvgSegment>& commands, double tolera
     }
 }
 
+// A sine wave within `tolerance` (world units) of the drawn polyline, with work proportional
+// to its length on the picture rather than to its number of waves: an amplitude within the
+// tolerance is its axis; waves shorter than the tolerance (a band on the picture) are a
+// zigzag between ±amplitude every `tolerance` along the axis, which every point of the wave
+// is within a tolerance of (each step holds a whole wave) and which is within a wavelength
+// of the wave. Returns false for the waves Path::flatten draws as they are.
+bool add_dense_sine(cairo_t* cr, const Path& path, double tolerance) {
+    const auto spec = path_cast<SineWaveSpec>(path);
+    if (!spec) return false;
+    const Vec2 axis = spec->end - spec->start;
+    const double along = length(axis);
+    const double amplitude = std::abs(spec->amplitude);
+    const double wavelength = along / std::abs(spec->frequency);
+    if (!(along > 0.0) || !std::isfinite(along)) return false;
+    if (amplitude <= tolerance) {
+        begin_at(cr, spec->start, tolerance);
+        line_to(cr, spec->end);
+        return true;
+    }
+    if (!(wavelength < tolerance)) return false;
+    // Bounded in any case: 2²⁴ steps are 4e6 output units of axis at a quarter unit each.
+    const double steps = std::min(std::ceil(along / tolerance), 16777216.0);
+    const auto n = static_cast<long>(steps);
+    const Vec2 normal = perpendicular(axis / along) * amplitude;
+    begin_at(cr, path.point(0.0), tolerance);
+    for (long i = 1; i < n; ++i) line_to(cr, spec->start + axis * (static_cast<double>(i) / steps) + (i % 2 ? normal : -normal));
+    line_to(cr, path.point(1.0));
+    return true;
+}
+
 // The segment count (points − 1) of a spline; 0 for other kinds.
 std::size_t spline_segments(const PathSpec& spec) {
     return std::visit([](const auto& s) -> std::size_t {
@@ -182,6 +272,9 @@ void add_path_range(cairo_t* cr, const Path& path, double tolerance) {
         }
         case PathKind::circle:
         case PathKind::elliptical_arc: add_arc(cr, path, tolerance); return;
+        case PathKind::sine_wave:
+            if (add_dense_sine(cr, path, tolerance)) return;
+            break;
         case PathKind::quadratic_bezier:
         case PathKind::physics: {
             // Degree elevation: the cubic with controls p0 + ⅔(p1 − p0) and p2 + ⅔(p1 − p2),
