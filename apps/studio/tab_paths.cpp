@@ -6,8 +6,8 @@
 // the animation follows. A loaded scene with timelines gets a timeline view under the canvas:
 // its animations then play by the scene's time, which the view's playhead seeks.
 #include "studio.hpp"
+#include "path_entries.hpp"
 
-#include <catalogue.hpp>
 
 #include <grape/anim.hpp>
 #include <grape/curve.hpp>
@@ -37,61 +37,9 @@ namespace grape::studio {
 
 namespace {
 
-struct Entry {
-    std::string name;
-    Path path;
-    std::vector<Vec2> controls;  // the points a drag moves: Bézier control points or spline points
-    bool bezier = false;         // draw the control polygon
-};
-
-// The spec whose points a drag edits: a reparametrized path's source (the same shape).
-PathSpec editable_spec(const Path& path) {
-    PathSpec spec = describe(path);
-    if (const auto* r = std::get_if<ReparametrizedSpec>(&spec)) return describe(r->source);
-    return spec;
-}
-
-// The spec's movable points: a Bézier's control points or a spline's points (none for the
-// other kinds).
-std::span<Vec2> points_of(PathSpec& spec) {
-    return std::visit([](auto& s) -> std::span<Vec2> {
-        if constexpr (requires { s.control; }) return s.control;
-        else if constexpr (requires { s.points; }) return s.points;
-        else return {};
-    }, spec);
-}
-
-Entry entry_from_path(std::string name, const Path& path) {
-    Entry e;
-    e.name = std::move(name);
-    e.path = path;
-    PathSpec spec = editable_spec(path);
-    const auto points = points_of(spec);
-    e.controls.assign(points.begin(), points.end());
-    e.bezier = kind_of(spec) == PathKind::quadratic_bezier || kind_of(spec) == PathKind::cubic_bezier;
-    return e;
-}
-
-// Every path of the scene catalogue, in its order (the original's, then one of every kind).
-std::vector<Entry> catalogue() {
-    std::vector<Entry> entries;
-    for (const scenes::Entry* e : scenes::entries_of(scenes::Category::path)) entries.push_back(entry_from_path(e->name, e->path()));
-    return entries;
-}
-
-// The entry's path with its points moved to `controls`, reparametrized again if it was
-// (throws grape::Error for a degenerate set).
-Path rebuild(const Entry& e) {
-    PathSpec spec = editable_spec(e.path);
-    const auto points = points_of(spec);
-    std::copy_n(e.controls.begin(), std::min(points.size(), e.controls.size()), points.begin());
-    const Path path = from_spec(spec);
-    return e.path.kind() == PathKind::reparametrized ? path.reparametrized() : path;
-}
-
 class PathsTab final : public Tab {
 public:
-    explicit PathsTab(const std::string& initial) : entries_(catalogue()) {
+    explicit PathsTab(const std::string& initial) : entries_(path_catalogue()) {
         for (const auto& n : curve_names()) curve_names_.emplace_back(n);
         std::size_t pick = 0;
         for (std::size_t i = 0; i < entries_.size(); ++i)
@@ -99,7 +47,7 @@ public:
         if (pick == 0) {
             if (!initial.empty()) {
                 std::string list;
-                for (const Entry& e : entries_) list += (list.empty() ? "" : ", ") + e.name;
+                for (const PathEntry& e : entries_) list += (list.empty() ? "" : ", ") + e.name;
                 throw Error("--path: unknown path '" + initial + "' (expected one of " + list + ")");
             }
             pick = 1;
@@ -223,7 +171,7 @@ public:
         screen_offset_ = canvas.offset();
         screen_scale_ = canvas.scale();
         canvas.grid(grid_step(), color::grid);
-        Entry& e = entries_[current_];
+        PathEntry& e = entries_[current_];
         draw_path(canvas, min, canvas_max);
 
         // Control polygon and handles.
@@ -276,7 +224,7 @@ public:
     }
 
     void report(std::ostream& out) const override {
-        const Entry& e = entries_[current_];
+        const PathEntry& e = entries_[current_];
         out << "path: " << e.name << "\nkind: " << to_string(e.path.kind()) << "\nlength: " << e.path.length()
             << "\ncurve: " << curve_text_ << "\narc_length: " << arc_length_ << "\n";
         for (std::size_t i = 0; i < e.controls.size(); ++i)
@@ -345,7 +293,7 @@ private:
     }
 
     void fit_view() {
-        const Entry& e = entries_[current_];
+        const PathEntry& e = entries_[current_];
         Bounds b = e.path.bounds();
         for (Vec2 c : e.controls) b.add(c);
         const Vec2 size = b.size();
@@ -445,7 +393,7 @@ private:
 #ifdef GRAPE_STUDIO_SCENE
     void save() {
         try {
-            const Entry& e = entries_[current_];
+            const PathEntry& e = entries_[current_];
             Scene scene;
             scene.name = "grape studio: " + e.name;
             scene.view.ticks = 0.05;
@@ -525,7 +473,7 @@ private:
     Vec2 marker_;                 // where the marker was drawn, for reports
 #endif
 
-    std::vector<Entry> entries_;
+    std::vector<PathEntry> entries_;
     std::size_t current_ = 0;
     std::vector<std::string> curve_names_;
     Curve curve_ = Curve::quad_in_out();
