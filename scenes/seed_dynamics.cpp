@@ -42,7 +42,7 @@ std::string_view to_string(ParabolaMethod method) noexcept {
     return "unknown";
 }
 
-ParabolaMethod parabola_method_from_string(std::string_view name) {
+ParabolaMethod parse_parabola_method(std::string_view name) {
     for (auto m : {ParabolaMethod::implicit, ParabolaMethod::parametric, ParabolaMethod::seed})
         if (name == to_string(m)) return m;
     throw Error("method: unknown name '" + std::string(name) + "' (expected implicit, parametric or seed)");

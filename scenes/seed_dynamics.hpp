@@ -40,7 +40,7 @@ enum class ParabolaMethod {
 };
 std::string_view to_string(ParabolaMethod method) noexcept;
 /// Throws grape::Error naming the unknown value.
-ParabolaMethod parabola_method_from_string(std::string_view name);
+ParabolaMethod parse_parabola_method(std::string_view name);
 
 /// A parabola run: released from rest at (x0, −x0²/100).
 struct ParabolaSetup {

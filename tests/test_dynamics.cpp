@@ -925,9 +925,9 @@ TEST(Errors, BadInputsAreRejectedWithClearMessages) {
     expect_error([] { ParticleSystem({.rk45 = {.tolerance = -1}}); }, "Rk45Def: tolerance");
     expect_error([] { ParticleSystem({.rk45 = {.min_step = 0}}); }, "Rk45Def: min_step");
     expect_error([] { ParticleSystem({.rk45 = {.max_substeps = 0}}); }, "Rk45Def: max_substeps");
-    expect_error([] { integrator_from_string("leapfrog"); }, "integrator: unknown name 'leapfrog'");
-    expect_error([] { drift_control_from_string("magic"); }, "drift control: unknown name 'magic'");
-    expect_error([] { parabola_method_from_string("lagrange"); }, "method: unknown name 'lagrange'");
+    expect_error([] { parse_integrator("leapfrog"); }, "integrator: unknown name 'leapfrog'");
+    expect_error([] { parse_drift_control("magic"); }, "drift control: unknown name 'magic'");
+    expect_error([] { parse_parabola_method("lagrange"); }, "method: unknown name 'lagrange'");
     expect_error([] { Bead(ParametricCurve{}, {}); }, "Bead: curve must be a callable");
     const ParametricCurve line = [](double u) { return CurveFrame{{u, 0}, {1, 0}, {0, 0}}; };
     expect_error([&] { Bead(line, {.mass = 0}); }, "BeadDef: mass must be positive and finite (got 0)");
@@ -945,11 +945,11 @@ TEST(Errors, BadInputsAreRejectedWithClearMessages) {
 
 TEST(Names, RoundTrip) {
     EXPECT_EQ(all_integrators().size(), 7u);
-    for (Integrator i : all_integrators()) EXPECT_EQ(integrator_from_string(to_string(i)), i);
-    EXPECT_EQ(integrator_from_string("symplectic"), Integrator::semi_implicit_euler);
-    EXPECT_EQ(integrator_from_string("verlet"), Integrator::velocity_verlet);
+    for (Integrator i : all_integrators()) EXPECT_EQ(parse_integrator(to_string(i)), i);
+    EXPECT_EQ(parse_integrator("symplectic"), Integrator::semi_implicit_euler);
+    EXPECT_EQ(parse_integrator("verlet"), Integrator::velocity_verlet);
     EXPECT_EQ(all_drift_controls().size(), 3u);
-    for (DriftControl d : all_drift_controls()) EXPECT_EQ(drift_control_from_string(to_string(d)), d);
+    for (DriftControl d : all_drift_controls()) EXPECT_EQ(parse_drift_control(to_string(d)), d);
 }
 
 // A Bead on a complex path carries its speed across joins whatever the static type it was

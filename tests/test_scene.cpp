@@ -247,11 +247,11 @@ TEST(SceneRoundTrip, SaveThenLoadGivesTheSameObjects) {
 
 TEST(SceneRoundTrip, PathsBuiltInCodeSaveToo) {
     for (const auto& [name, path] : grape::scenes::path_gallery()) {
-        const Path back = grape::path_from_json(grape::path_to_json(path));
+        const Path back = grape::parse_path_json(grape::path_to_json(path));
         expect_same_path(path, back, name);
     }
     for (const auto& [name, path] : grape::scenes::seed_paths()) {
-        const Path back = grape::path_from_json(grape::path_to_json(path));
+        const Path back = grape::parse_path_json(grape::path_to_json(path));
         expect_same_path(path, back, name);
     }
 }
@@ -449,9 +449,9 @@ TEST(SceneErrors, NameThePointerAndTheReason) {
     expect_error(R"({"paths": [{"name": "x", "path": {"kind": "complex", "parts": [)" + line + R"(], "cues": [0, 0.5]}}]})",
                  "/paths/0/path/cues", "one cue per part");
     // A syntax error in SVG data is a warning of the scene (SVG's error rule, SceneSvg below);
-    // a single path read by path_from_json stays strict.
+    // a single path read by parse_path_json stays strict.
     try {
-        (void)grape::path_from_json(R"({"kind": "svg", "data": "M 0 0 L 1 @"})");
+        (void)grape::parse_path_json(R"({"kind": "svg", "data": "M 0 0 L 1 @"})");
         ADD_FAILURE() << "accepted SVG data with a syntax error";
     } catch (const grape::Error& e) {
         EXPECT_NE(std::string(e.what()).find("SVG path data: expected a number at offset 10"), std::string::npos) << e.what();
@@ -580,7 +580,7 @@ TEST(SceneFiles, DocumentationExampleAndSchemaAgreeWithTheLoader) {
         EXPECT_NE(schema.find(std::string("\"const\": \"") + kind + "\""), std::string::npos) << kind;
         // The loader knows the kind: with no other fields it complains about a field, not the kind.
         try {
-            (void)grape::path_from_json(std::string(R"({"kind": ")") + kind + "\"}");
+            (void)grape::parse_path_json(std::string(R"({"kind": ")") + kind + "\"}");
             ADD_FAILURE() << kind;
         } catch (const grape::Error& e) {
             EXPECT_EQ(std::string(e.what()).find("unknown path kind"), std::string::npos) << e.what();

@@ -46,14 +46,14 @@ constexpr double max_omega_dt = 1.0;    // Baumgarte gain per step
 
 void run_simulate(const SimulateOptions& o) {
     scenes::ParabolaSetup setup;
-    setup.method = scenes::parabola_method_from_string(o.method);
-    setup.integrator = integrator_from_string(o.integrator);
+    setup.method = scenes::parse_parabola_method(o.method);
+    setup.integrator = parse_integrator(o.integrator);
     const double dt = parse_finite("simulate: --dt", o.dt);
     const double seconds = parse_finite("simulate: --seconds", o.seconds);
     setup.x0 = parse_finite("simulate: --x0", o.x0);
     setup.g = parse_finite("simulate: --g", o.g);
     setup.force_x = parse_finite("simulate: --force-x", o.force_x);
-    setup.drift.method = drift_control_from_string(o.stabilize);
+    setup.drift.method = parse_drift_control(o.stabilize);
     setup.drift.omega_dt = parse_finite("simulate: --omega-dt", o.omega_dt);
     if (!(dt > 0.0)) throw Error("simulate: --dt must be positive (got " + o.dt + ")");
     if (!(seconds >= 0.0)) throw Error("simulate: --seconds must be ≥ 0 (got " + o.seconds + ")");

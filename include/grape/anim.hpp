@@ -158,6 +158,7 @@ struct Member {
 namespace detail {
 class EngineImpl;
 class TimelineStore;
+struct LiveRecord;
 /// Where a property animation writes one value: a byte offset into the target and its type.
 struct MemberRef {
     std::size_t offset;
@@ -259,6 +260,7 @@ private:
     friend class detail::TimelineStore;
     Animation(Engine* engine, std::uint32_t slot, std::uint32_t generation) noexcept
         : engine_(engine), slot_(slot), generation_(generation) {}
+    detail::LiveRecord record() const noexcept;  // the record of a live handle (false when stale)
     Engine* engine_ = nullptr;
     std::uint32_t slot_ = 0;
     std::uint32_t generation_ = 0;

@@ -28,7 +28,7 @@
 // queries and the force functions they call). Separate systems and beads share nothing and
 // may step on separate threads at once, also when they read the same Path (shared
 // read-only), or the same ImplicitCurve if its function is safe to call concurrently.
-// The *_from_string and to_string functions may be called from any thread.
+// The parse_* and to_string functions may be called from any thread.
 //
 // The parts, one idea per header (this one includes them all):
 //   <grape/dynamics_implicit.hpp>   ImplicitCurve, CurveSample (and <grape/jet.hpp>: Jet2)

@@ -39,7 +39,7 @@ enum class Integrator {
 std::string_view to_string(Integrator integrator) noexcept;
 /// The integrator named `name` (as to_string gives it, or the short forms "symplectic" and
 /// "verlet"); throws grape::Error naming the unknown value.
-Integrator integrator_from_string(std::string_view name);
+Integrator parse_integrator(std::string_view name);
 /// Every integrator, in declaration order (for menus and name lists).
 std::span<const Integrator> all_integrators() noexcept;
 /// The formal order of accuracy (rk45: 5 at a fixed step).

@@ -61,7 +61,7 @@ enum class DriftControl {
 /// The drift-control name ("none", "baumgarte", "projection").
 std::string_view to_string(DriftControl drift) noexcept;
 /// The drift control named `name`; throws grape::Error naming the unknown value.
-DriftControl drift_control_from_string(std::string_view name);
+DriftControl parse_drift_control(std::string_view name);
 /// Every drift control, in declaration order (for menus and name lists).
 std::span<const DriftControl> all_drift_controls() noexcept;
 

@@ -349,7 +349,7 @@ void save_scene_file(const Scene& scene, const std::filesystem::path& file);
 /// A path as scene JSON (one object, as it appears in "paths" or inline).
 std::string path_to_json(const Path& path);
 /// A path from scene JSON text (one object). Throws grape::Error naming the JSON pointer.
-Path path_from_json(std::string_view json);
+Path parse_path_json(std::string_view json);
 
 #if GRAPE_HAS_DYNAMICS
 class ParticleSystem;

@@ -67,143 +67,136 @@ std::size_t Engine::bytes_per_animation() noexcept {
     return sizeof(detail::Hot) + sizeof(detail::Cold) + sizeof(detail::Slot);
 }
 
-#define GRAPE_FIND(fallback)                                                        \
-    if (!engine_) return fallback;                                                  \
-    detail::EngineImpl& impl = *engine_->impl_;                                     \
-    const detail::Hot* found = impl.find(slot_, generation_);                       \
-    if (!found) return fallback;                                                    \
-    const std::uint32_t dense = impl.dense_of(slot_);                               \
-    (void)dense
-
-bool Animation::alive() const noexcept {
-    GRAPE_FIND(false);
-    return true;
+detail::LiveRecord Animation::record() const noexcept {
+    if (!engine_) return {};
+    detail::EngineImpl& impl = *engine_->impl_;
+    if (!impl.find(slot_, generation_)) return {};
+    return {&impl, impl.dense_of(slot_)};
 }
 
+bool Animation::alive() const noexcept { return bool(record()); }
+
 bool Animation::waiting() const noexcept {
-    GRAPE_FIND(false);
-    return found->phase < 0.0;
+    const auto r = record();
+    return r && r.hot().phase < 0.0;
 }
 
 bool Animation::paused() const noexcept {
-    GRAPE_FIND(false);
-    return (found->flags & detail::flag_paused) != 0;
+    const auto r = record();
+    return r && (r.hot().flags & detail::flag_paused) != 0;
 }
 
 Vec2 Animation::value() const noexcept {
-    GRAPE_FIND(Vec2{});
-    if (const detail::Extra* e = impl.extra(slot_); e && (e->nd || e->value)) return {};
-    return impl.value_of(dense);
+    const auto r = record();
+    if (!r) return {};
+    if (const detail::Extra* e = r.impl->extra(slot_); e && (e->nd || e->value)) return {};
+    return r.impl->value_of(r.dense);
 }
 
 std::span<const double> Animation::values() const noexcept {
-    GRAPE_FIND(std::span<const double>());
-    const detail::Extra* e = impl.extra(slot_);
+    const auto r = record();
+    const detail::Extra* e = r ? r.impl->extra(slot_) : nullptr;
     return e && e->nd ? std::span<const double>(e->values) : std::span<const double>();
 }
 
 double Animation::heading() const noexcept {
-    GRAPE_FIND(0.0);
-    return impl.heading_of(dense);
+    const auto r = record();
+    return r ? r.impl->heading_of(r.dense) : 0.0;
 }
 
 double Animation::progress() const noexcept {
-    GRAPE_FIND(0.0);
-    return impl.progress_of(dense);
+    const auto r = record();
+    return r ? r.impl->progress_of(r.dense) : 0.0;
 }
 
 double Animation::time() const noexcept {
-    GRAPE_FIND(0.0);
-    const double cycle = 1.0 + impl.gap_of(dense);  // a play and the repeat delay after it
-    return (static_cast<double>(impl.cold(dense).play) * cycle + found->phase) * impl.cold(dense).duration;
+    const auto r = record();
+    if (!r) return 0.0;
+    const double cycle = 1.0 + r.impl->gap_of(r.dense);  // a play and the repeat delay after it
+    return (static_cast<double>(r.cold().play) * cycle + r.hot().phase) * r.cold().duration;
 }
 
 int Animation::repetition() const noexcept {
-    GRAPE_FIND(0);
-    return static_cast<int>(std::min<std::uint32_t>(impl.cold(dense).play, INT32_MAX));
+    const auto r = record();
+    return r ? static_cast<int>(std::min<std::uint32_t>(r.cold().play, INT32_MAX)) : 0;
 }
 
 double Animation::duration() const noexcept {
-    GRAPE_FIND(0.0);
-    return impl.cold(dense).duration;
+    const auto r = record();
+    return r ? r.cold().duration : 0.0;
 }
 
 double Animation::time_scale() const noexcept {
-    GRAPE_FIND(0.0);
-    return impl.time_scale_of(dense);
+    const auto r = record();
+    return r ? r.impl->time_scale_of(r.dense) : 0.0;
 }
 
 void Animation::pause() const noexcept {
-    GRAPE_FIND();
-    impl.hot(dense).flags |= detail::flag_paused;
+    if (const auto r = record()) r.hot().flags |= detail::flag_paused;
 }
 
+// Commands a timeline's child ignores: its timeline drives it.
 void Animation::resume() const noexcept {
-    GRAPE_FIND();
-    if (impl.driven(slot_)) return;  // its timeline drives it
-    impl.hot(dense).flags &= static_cast<std::uint8_t>(~detail::flag_paused);
+    if (const auto r = record(); r && !r.impl->driven(slot_)) r.hot().flags &= static_cast<std::uint8_t>(~detail::flag_paused);
 }
 
 void Animation::seek(double seconds) const noexcept {
-    GRAPE_FIND();
-    if (impl.driven(slot_)) return;
-    impl.seek(dense, seconds);
+    if (const auto r = record(); r && !r.impl->driven(slot_)) r.impl->seek(r.dense, seconds);
 }
 
 void Animation::set_time_scale(double scale) const noexcept {
-    GRAPE_FIND();
-    if (impl.driven(slot_)) return;
-    impl.set_time_scale(dense, scale);
+    if (const auto r = record(); r && !r.impl->driven(slot_)) r.impl->set_time_scale(r.dense, scale);
 }
 
 void Animation::kill() const noexcept {
-    GRAPE_FIND();
-    impl.kill(dense);
-}
-
-void Animation::on_complete(std::function<void()> handler) const {
-    GRAPE_FIND();
-    impl.extra_for(slot_).on_complete = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
-    impl.hot(dense).flags |= detail::flag_listens;
+    if (const auto r = record()) r.impl->kill(r.dense);
 }
 
 void Animation::reverse() const noexcept {
-    GRAPE_FIND();
-    if (impl.driven(slot_)) return;
-    detail::Hot& h = impl.hot(dense);
-    h.rate = -std::fabs(h.rate);
+    if (const auto r = record(); r && !r.impl->driven(slot_)) r.hot().rate = -std::fabs(r.hot().rate);
 }
 
 void Animation::play() const noexcept {
-    GRAPE_FIND();
-    if (impl.driven(slot_)) return;
-    detail::Hot& h = impl.hot(dense);
+    const auto r = record();
+    if (!r || r.impl->driven(slot_)) return;
+    detail::Hot& h = r.hot();
     h.rate = std::fabs(h.rate);
     h.flags &= static_cast<std::uint8_t>(~detail::flag_paused);
 }
 
 bool Animation::reversed() const noexcept {
-    GRAPE_FIND(false);
-    return found->rate < 0.0;
+    const auto r = record();
+    return r && r.hot().rate < 0.0;
+}
+
+namespace {
+
+// Sets one handler of a live record's Extra (null clears it) and the flag that makes the tick
+// look at it.
+template <class Handler>
+void set_handler(const detail::LiveRecord& r, std::uint32_t slot, std::shared_ptr<const Handler> detail::Extra::*member,
+                 Handler handler, std::uint8_t flag) {
+    if (!r) return;
+    r.impl->extra_for(slot).*member = handler ? std::make_shared<const Handler>(std::move(handler)) : nullptr;
+    r.hot().flags |= flag;
+}
+
+}  // namespace
+
+void Animation::on_complete(std::function<void()> handler) const {
+    set_handler(record(), slot_, &detail::Extra::on_complete, std::move(handler), detail::flag_listens);
 }
 
 void Animation::on_update(std::function<void()> handler) const {
-    GRAPE_FIND();
-    impl.extra_for(slot_).on_update = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
-    impl.hot(dense).flags |= detail::flag_custom;
+    set_handler(record(), slot_, &detail::Extra::on_update, std::move(handler), detail::flag_custom);
 }
 
 void Animation::on_start(std::function<void()> handler) const {
-    GRAPE_FIND();
-    impl.extra_for(slot_).on_start = handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
-    impl.hot(dense).flags |= detail::flag_listens;
+    set_handler(record(), slot_, &detail::Extra::on_start, std::move(handler), detail::flag_listens);
 }
 
 void Animation::on_reverse_complete(std::function<void()> handler) const {
-    GRAPE_FIND();
-    impl.extra_for(slot_).on_reverse_complete =
-        handler ? std::make_shared<const std::function<void()>>(std::move(handler)) : nullptr;
-    impl.hot(dense).flags |= detail::flag_listens;
+    set_handler(record(), slot_, &detail::Extra::on_reverse_complete, std::move(handler), detail::flag_listens);
 }
 
 void Animation::on_loop(std::function<void(int)> handler) const {
@@ -215,12 +208,7 @@ void Animation::on_loop(std::function<void(int)> handler) const {
 }
 
 void Animation::on_loop(std::function<void(int play, std::uint64_t skipped)> handler) const {
-    GRAPE_FIND();
-    impl.extra_for(slot_).on_loop =
-        handler ? std::make_shared<const std::function<void(int, std::uint64_t)>>(std::move(handler)) : nullptr;
-    impl.hot(dense).flags |= detail::flag_listens;
+    set_handler(record(), slot_, &detail::Extra::on_loop, std::move(handler), detail::flag_listens);
 }
-
-#undef GRAPE_FIND
 
 }  // namespace grape

@@ -355,4 +355,13 @@ struct EngineImpl::Dispatch {
     Dispatch& operator=(const Dispatch&) = delete;
 };
 
+/// What a live Animation handle refers to; false when the handle is stale.
+struct LiveRecord {
+    EngineImpl* impl = nullptr;
+    std::uint32_t dense = 0;
+    explicit operator bool() const noexcept { return impl != nullptr; }
+    Hot& hot() const noexcept { return impl->hot(dense); }
+    const Cold& cold() const noexcept { return impl->cold(dense); }
+};
+
 }  // namespace grape::detail

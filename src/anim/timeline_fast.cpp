@@ -56,18 +56,18 @@ FastPoint fast_point(const RootEntry& e, double elapsed) noexcept {
 }  // namespace
 
 TimelineRec* TimelineStore::find(std::uint32_t slot, std::uint32_t generation) noexcept {
-    if (slot >= recs_.size()) return nullptr;
-    TimelineRec* r = recs_[slot].get();
-    if (!r->alive || r->generation != generation) return nullptr;
-    flush(*r, true);
-    return r;
+    return current(slot, generation, true);
 }
 
 TimelineRec* TimelineStore::peek(std::uint32_t slot, std::uint32_t generation) noexcept {
+    return current(slot, generation, false);
+}
+
+TimelineRec* TimelineStore::current(std::uint32_t slot, std::uint32_t generation, bool leave) noexcept {
     if (slot >= recs_.size()) return nullptr;
     TimelineRec* r = recs_[slot].get();
     if (!r->alive || r->generation != generation) return nullptr;
-    flush(*r, false);
+    flush(*r, leave);
     return r;
 }
 

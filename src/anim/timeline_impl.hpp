@@ -139,6 +139,8 @@ public:
     /// to the general path (the caller changes the record).
     void flush(TimelineRec& r, bool leave) noexcept;
     TimelineRec* peek(std::uint32_t slot, std::uint32_t generation) noexcept;  // find, staying fast
+    // The live record, brought up to date from the fast tick's entry (`leave`: off the fast path).
+    TimelineRec* current(std::uint32_t slot, std::uint32_t generation, bool leave) noexcept;
     void sync(std::uint32_t slot);
     void seek(std::uint32_t slot, double tau, bool fire);
     void rebase(TimelineRec& r) noexcept;

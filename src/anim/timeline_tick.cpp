@@ -25,6 +25,17 @@ void insert_active(TimelineRec& r, std::uint32_t i) noexcept {
     if (it == r.active.end() || *it != i) r.active.insert(it, i);  // capacity reserved when placed
 }
 
+// The timeline's update on the stack of updates in progress while in scope.
+struct Entered {
+    std::vector<std::pair<std::uint32_t, std::uint64_t>>& stack;
+    Entered(std::vector<std::pair<std::uint32_t, std::uint64_t>>& s, std::uint32_t slot, std::uint64_t epoch) : stack(s) {
+        stack.push_back({slot, epoch});
+    }
+    ~Entered() { stack.pop_back(); }
+    Entered(const Entered&) = delete;
+    Entered& operator=(const Entered&) = delete;
+};
+
 struct Depth {
     int& depth;
     explicit Depth(int& d) noexcept : depth(d) { ++depth; }
@@ -137,11 +148,7 @@ void TimelineStore::settle(std::uint32_t slot) {
 bool TimelineStore::settle_tree(std::uint32_t slot) {
     if (!advance(slot, recs_[slot]->tau, false)) return false;  // the window at its time
     TimelineRec* r = recs_[slot].get();
-    stack_.push_back({slot, r->epoch});
-    struct Pop {
-        std::vector<std::pair<std::uint32_t, std::uint64_t>>& stack;
-        ~Pop() { stack.pop_back(); }
-    } pop{stack_};
+    const Entered entered(stack_, slot, r->epoch);
     const std::uint64_t window = r->rebuilds;
     const std::size_t count = r->children.size();
     // Animations outside the window were driven to their start or end when it passed them;
@@ -165,11 +172,7 @@ bool TimelineStore::settle_tree(std::uint32_t slot) {
 
 bool TimelineStore::advance(std::uint32_t slot, double tau, bool fire) {
     TimelineRec* r = recs_[slot].get();
-    stack_.push_back({slot, r->epoch});
-    struct Pop {
-        std::vector<std::pair<std::uint32_t, std::uint64_t>>& stack;
-        ~Pop() { stack.pop_back(); }
-    } pop{stack_};
+    const Entered entered(stack_, slot, r->epoch);
     if (r->dirty) rebuild(slot);
     const double from = r->tau;
     const PlayPoint a = point_of(*r, from);

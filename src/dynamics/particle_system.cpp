@@ -53,7 +53,7 @@ std::span<const DriftControl> all_drift_controls() noexcept {
     return all;
 }
 
-DriftControl drift_control_from_string(std::string_view name) {
+DriftControl parse_drift_control(std::string_view name) {
     for (DriftControl d : all_drift_controls())
         if (name == to_string(d)) return d;
     throw Error("drift control: unknown name '" + std::string(name) + "' (expected none, baumgarte or projection)");

@@ -20,7 +20,7 @@ std::string_view to_string(Integrator integrator) noexcept {
     return "unknown";
 }
 
-Integrator integrator_from_string(std::string_view name) {
+Integrator parse_integrator(std::string_view name) {
     for (Integrator i : all_integrators())
         if (name == to_string(i)) return i;
     if (name == "symplectic" || name == "symplectic_euler") return Integrator::semi_implicit_euler;

@@ -8,8 +8,8 @@ namespace grape {
 
 ParticleSystem make_particle_system(const SceneSimulation& simulation) {
     ParticleSystemDef def;
-    def.integrator = integrator_from_string(simulation.integrator);
-    def.drift.method = drift_control_from_string(simulation.drift);
+    def.integrator = parse_integrator(simulation.integrator);
+    def.drift.method = parse_drift_control(simulation.drift);
     ParticleSystem system(def);
     std::vector<ParticleId> ids;
     for (const SceneParticle& p : simulation.particles)

@@ -271,7 +271,7 @@ using namespace scene_io;
 
 std::string path_to_json(const Path& path) { return path_json(path).dump(2); }
 
-Path path_from_json(std::string_view text) {
+Path parse_path_json(std::string_view text) {
     const json j = parse_text(text, "path: ");
     return PathReader{}.read(j, "", 0);
 }

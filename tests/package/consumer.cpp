@@ -79,7 +79,7 @@ int main() {
     check(canvas.to_image().width() == 16, "canvas width");
 #endif
 #if USE_SCENE
-    check(grape::path_from_json(grape::path_to_json(line)).length() == 5, "path through scene JSON");
+    check(grape::parse_path_json(grape::path_to_json(line)).length() == 5, "path through scene JSON");
 #endif
     std::printf("grape %s (dynamics %d, render %d, scene %d; used %d %d %d): %s\n", GRAPE_VERSION_STRING,
                 GRAPE_HAS_DYNAMICS, GRAPE_HAS_RENDER, GRAPE_HAS_SCENE, USE_DYNAMICS, USE_RENDER, USE_SCENE,

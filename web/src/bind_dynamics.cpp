@@ -14,7 +14,7 @@ namespace {
 
 DriftDef drift_def(const val& o, DriftDef def) {
     const char* where = "drift options";
-    if (has(o, "drift")) def.method = drift_control_from_string(string_or(o, "drift", "", where));
+    if (has(o, "drift")) def.method = parse_drift_control(string_or(o, "drift", "", where));
     def.omega_dt = number_or(o, "omegaDt", def.omega_dt, where);
     if (has(o, "stiffness")) def.stiffness = number_or(o, "stiffness", 0.0, where);
     if (has(o, "damping")) def.damping = number_or(o, "damping", 0.0, where);
@@ -23,7 +23,7 @@ DriftDef drift_def(const val& o, DriftDef def) {
     return def;
 }
 
-LinearSolver solver_from_string(const std::string& name) {
+LinearSolver parse_solver(const std::string& name) {
     if (name == "automatic") return LinearSolver::automatic;
     if (name == "dense") return LinearSolver::dense;
     if (name == "sparse_direct") return LinearSolver::sparse_direct;
@@ -33,9 +33,9 @@ LinearSolver solver_from_string(const std::string& name) {
 
 ParticleSystemDef system_def(const val& o) {
     ParticleSystemDef def;
-    if (has(o, "integrator")) def.integrator = integrator_from_string(string_or(o, "integrator", "", "ParticleSystem"));
+    if (has(o, "integrator")) def.integrator = parse_integrator(string_or(o, "integrator", "", "ParticleSystem"));
     def.drift = drift_def(o, def.drift);
-    if (has(o, "solver")) def.solver.method = solver_from_string(string_or(o, "solver", "", "ParticleSystem"));
+    if (has(o, "solver")) def.solver.method = parse_solver(string_or(o, "solver", "", "ParticleSystem"));
     def.rk45.tolerance = number_or(o, "rk45Tolerance", def.rk45.tolerance, "ParticleSystem");
     return def;
 }
@@ -124,7 +124,7 @@ unsigned add_curve(ParticleSystem& s, unsigned a, val fn) {
 }
 double constraint_count(const ParticleSystem& s) { return double(s.constraint_count()); }
 void set_drift(ParticleSystem& s, val o) { s.set_drift(drift_def(o, s.def().drift)); }
-void set_integrator(ParticleSystem& s, std::string name) { s.set_integrator(integrator_from_string(name)); }
+void set_integrator(ParticleSystem& s, std::string name) { s.set_integrator(parse_integrator(name)); }
 val step(ParticleSystem& s, double dt) {
     const StepReport r = s.step(dt);
     val out = val::object();
@@ -168,7 +168,7 @@ BeadDef bead_def(const val& o) {
         else throw Error("Bead: option 'ends' must be stop or bounce (got '" + ends + "')");
     }
     def.restitution = number_or(o, "restitution", def.restitution, where);
-    if (has(o, "integrator")) def.integrator = integrator_from_string(string_or(o, "integrator", "", where));
+    if (has(o, "integrator")) def.integrator = parse_integrator(string_or(o, "integrator", "", where));
     return def;
 }
 

@@ -14,13 +14,13 @@ namespace {
 scenes::ParabolaSetup parabola_setup(const val& o) {
     const char* where = "parabola";
     scenes::ParabolaSetup setup;
-    if (has(o, "method")) setup.method = scenes::parabola_method_from_string(string_or(o, "method", "", where));
-    if (has(o, "integrator")) setup.integrator = integrator_from_string(string_or(o, "integrator", "", where));
+    if (has(o, "method")) setup.method = scenes::parse_parabola_method(string_or(o, "method", "", where));
+    if (has(o, "integrator")) setup.integrator = parse_integrator(string_or(o, "integrator", "", where));
     setup.x0 = number_or(o, "x0", setup.x0, where);
     setup.g = number_or(o, "g", setup.g, where);
     setup.mass = number_or(o, "mass", setup.mass, where);
     setup.force_x = number_or(o, "forceX", setup.force_x, where);
-    if (has(o, "stabilize")) setup.drift.method = drift_control_from_string(string_or(o, "stabilize", "", where));
+    if (has(o, "stabilize")) setup.drift.method = parse_drift_control(string_or(o, "stabilize", "", where));
     setup.drift.omega_dt = number_or(o, "omegaDt", setup.drift.omega_dt, where);
     return setup;
 }

@@ -12,7 +12,7 @@
 namespace grape::web {
 namespace {
 
-PlayMode mode_from_string(const std::string& name) {
+PlayMode parse_play_mode(const std::string& name) {
     if (name == "loop") return PlayMode::loop;
     if (name == "once") return PlayMode::once;
     if (name == "ping_pong" || name == "ping-pong") return PlayMode::ping_pong;
@@ -32,7 +32,7 @@ SpritePlayer* make_player(unsigned frames, val o) {
     try {
         SpritePlayerDef def;
         def.rate = number_or(o, "rate", def.rate, "SpritePlayer");
-        if (has(o, "mode")) def.mode = mode_from_string(string_or(o, "mode", "", "SpritePlayer"));
+        if (has(o, "mode")) def.mode = parse_play_mode(string_or(o, "mode", "", "SpritePlayer"));
         const double start = number_or(o, "startFrame", 0.0, "SpritePlayer");
         if (!(start >= 0.0 && start <= 4294967295.0) || start != std::floor(start))
             throw Error("SpritePlayer: startFrame must be a whole number ≥ 0 (got " + detail::number_text(start) + ")");
@@ -49,7 +49,7 @@ void advance_by(SpritePlayer& p, double dt, double fps) { p.advance(dt, fps); }
 unsigned frame(const SpritePlayer& p) { return unsigned(p.frame()); }
 void set_rate(SpritePlayer& p, double rate) { p.set_rate(rate); }
 std::string mode(const SpritePlayer& p) { return mode_name(p.mode()); }
-void set_mode(SpritePlayer& p, std::string name) { p.set_mode(mode_from_string(name)); }
+void set_mode(SpritePlayer& p, std::string name) { p.set_mode(parse_play_mode(name)); }
 unsigned frame_count(const SpritePlayer& p) { return unsigned(p.frame_count()); }
 void set_frame(SpritePlayer& p, unsigned k) { p.set_frame(k); }
 void on_frame(SpritePlayer& p, val fn) { p.on_frame([fn](std::size_t k) { fn(unsigned(k)); }); }
