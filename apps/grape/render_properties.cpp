@@ -43,7 +43,12 @@ void draw_scene_properties(Canvas& canvas, const Scene& scene, const SceneTiming
             canvas.fill_rect({left + 1.0, y - 8.0, 16.0, 9.0}, {.color = clamped});
             text += to_hex(*c);
         } else if (const Vec2* p = std::get_if<Vec2>(&v)) {
-            text += "(" + number_text(p->x) + ", " + number_text(p->y) + ")";
+            // Appended piece by piece: g++ 12 -O3 warns falsely (-Wrestrict) on "(" + string&&.
+            text += '(';
+            text += number_text(p->x);
+            text += ", ";
+            text += number_text(p->y);
+            text += ')';
         } else {
             const double x = std::get<double>(v);
             if (prop.type == ScenePropertyType::angle) {
@@ -51,7 +56,8 @@ void draw_scene_properties(Canvas& canvas, const Scene& scene, const SceneTiming
                 const Vec2 centre{left + 9.0, y - 3.5};
                 canvas.stroke_line(centre, centre + Vec2{7.0 * std::cos(radians), 7.0 * std::sin(radians)},
                                    {.color = colors::black, .width = 1.5});
-                text += number_text(x) + (prop.degrees ? "°" : " rad");
+                text += number_text(x);
+                text += prop.degrees ? "°" : " rad";
             } else {
                 text += number_text(x);
             }
