@@ -6,6 +6,8 @@
 #include "seed_dynamics.hpp"
 #include "seed_paths.hpp"
 
+#include "error_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,21 +22,8 @@ namespace {
 using namespace grape;
 using namespace grape::scenes;
 
-#ifdef NDEBUG
-constexpr bool fast_build = true;
-#else
-constexpr bool fast_build = false;  // Debug/sanitizer builds run shortened variants of long runs
-#endif
-
-template <class F>
-void expect_error(F&& f, const std::string& part) {
-    try {
-        f();
-        ADD_FAILURE() << "expected grape::Error containing '" << part << "'";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << "message: " << e.what();
-    }
-}
+using grape::testing::expect_error;
+using grape::testing::fast_build;
 
 // Complete elliptic integrals in parameter form by adaptive Gauss–Legendre quadrature of
 // their defining integrals (smooth integrands for m < 1).

@@ -6,6 +6,8 @@
 
 #include "seed_dynamics.hpp"
 
+#include "error_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,21 +21,8 @@ namespace {
 using namespace grape;
 using namespace grape::scenes;
 
-#ifdef NDEBUG
-constexpr bool fast_build = true;
-#else
-constexpr bool fast_build = false;  // Debug/sanitizer builds run shortened variants of long runs
-#endif
-
-template <class F>
-void expect_error(F&& f, const std::string& part) {
-    try {
-        f();
-        ADD_FAILURE() << "expected grape::Error containing '" << part << "'";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << "message: " << e.what();
-    }
-}
+using grape::testing::expect_error;
+using grape::testing::fast_build;
 
 double max_distance(std::span<const Vec2> a, std::span<const Vec2> b) {
     double worst = 0.0;
