@@ -6,17 +6,7 @@
 # A full disk is either a small tmpfs mounted for the case (when mounting is permitted) or a
 # temporary that is a link to /dev/full (every write fails with ENOSPC).
 set -u
-case_name=$1
-grape=$2
-work=$3/$case_name
-scenes=$4
-rm -rf "$work"
-mkdir -p "$work"
-
-fail() {
-    echo "FAIL: $*"
-    exit 1
-}
+. "$(dirname "$0")/tool_case.sh"
 # expect_error STATUS_FILE STDERR_FILE TEXT: status 2 and TEXT (fixed string) on stderr.
 expect_error() {
     status=$(cat "$1")

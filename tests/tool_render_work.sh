@@ -4,16 +4,7 @@
 # stopped with a clear message when a step cannot be trusted. Exits 0 (as expected) or 1.
 #   tests/tool_render_work.sh CASE GRAPE WORKDIR
 set -u
-case_name=$1
-grape=$2
-work=$3/$case_name
-rm -rf "$work"
-mkdir -p "$work"
-
-fail() {
-    echo "FAIL: $*"
-    exit 1
-}
+. "$(dirname "$0")/tool_case.sh"
 # run CMD...: status in $work/status, stderr in $work/err
 run() {
     "$@" >"$work/out" 2>"$work/err"

@@ -4,17 +4,7 @@
 # stdout). Each case prints what it saw and exits 0 (as expected) or 1 (not).
 #   tests/tool_sample.sh CASE GRAPE WORKDIR SCENES_DIR
 set -u
-case_name=$1
-grape=$2
-work=$3/$case_name
-scenes=$4
-rm -rf "$work"
-mkdir -p "$work"
-
-fail() {
-    echo "FAIL: $*"
-    exit 1
-}
+. "$(dirname "$0")/tool_case.sh"
 run() {  # run CMD...: status in $status, stdout in $work/out, stderr in $work/err
     "$@" >"$work/out" 2>"$work/err"
     status=$?
