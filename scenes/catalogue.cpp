@@ -9,6 +9,10 @@
 #include <grape/dynamics.hpp>
 #endif
 
+#ifdef GRAPE_SCENES_SPRITES
+#include "sprite_sheets.hpp"
+#endif
+
 #include <algorithm>
 #include <utility>
 
@@ -69,6 +73,19 @@ std::vector<Entry> build() {
                              "timeline_cutscene.json", "sprite_track.json", "typed_values.json"})
         all.push_back({.name = file, .category = Category::scene_file, .summary = "scene file scenes/" + std::string(file),
                        .file = file});
+
+#ifdef GRAPE_SCENES_SPRITES
+    all.push_back({.name = "grape_tile_sheet",
+                   .category = Category::sprite_sheet,
+                   .summary = "the grape sprite: 8 frames of 32 px on a 4 × 2 tile sheet (the demo's TileSheetSprite)",
+                   .sheet = [] { return grape_tile_sheet(8, 4, 32); }});
+#ifdef GRAPE_SCENES_SHEET_JSON
+    all.push_back({.name = "grape_packed_sheet",
+                   .category = Category::sprite_sheet,
+                   .summary = "the grape sprite trimmed and packed as Aseprite exports it, with clips and slices (tests/data/sprites)",
+                   .sheet = [] { return grape_packed_sheet(); }});
+#endif
+#endif
     return all;
 }
 
@@ -80,6 +97,7 @@ std::string_view to_string(Category category) noexcept {
         case Category::animation: return "animation";
         case Category::dynamics: return "dynamics";
         case Category::scene_file: return "scene_file";
+        case Category::sprite_sheet: return "sprite_sheet";
     }
     return "?";
 }

@@ -1,7 +1,7 @@
 // grape — the catalogue: every named scene (the original's paths, animations and physics, one
-// path of every kind, the benchmark set-ups, the scene files) with its category and how to
+// path of every kind, the benchmark set-ups, the scene files, the sprite sheets) with its category and how to
 // build it. The tests build and step every entry, `grape list` prints them, the studio lists
-// them, and the benchmarks take theirs by name; scenes/*.json are the file form of the
+// them, `grape demo` draws them, and the benchmarks take theirs by name; scenes/*.json are the file form of the
 // original's scenes, checked against the entries they share.
 #pragma once
 
@@ -18,6 +18,9 @@
 
 namespace grape {
 class ParticleSystem;
+namespace scenes {
+struct DrawnSheet;
+}
 }
 
 namespace grape::scenes {
@@ -28,9 +31,10 @@ enum class Category {
     animation,   ///< an animation of a Sprite in an Engine
     dynamics,    ///< a ParticleSystem (with grape::dynamics)
     scene_file,  ///< a scene file in scenes/ (with grape::scene)
+    sprite_sheet,  ///< a drawn sprite sheet (with grape::render; see sprite_sheets.hpp)
 };
 
-/// "path", "animation", "dynamics", "scene_file".
+/// "path", "animation", "dynamics", "scene_file", "sprite_sheet".
 std::string_view to_string(Category category) noexcept;
 
 /// One entry. The builder of its category is set; the others are empty.
@@ -42,6 +46,7 @@ struct Entry {
     std::function<Animation(Engine&, Sprite&)> animation{};  ///< Category::animation
     std::function<ParticleSystem()> system{};              ///< Category::dynamics
     std::string file{};    ///< Category::scene_file: its name in scenes/ ("seed_bezier.json")
+    std::function<DrawnSheet()> sheet{};                   ///< Category::sprite_sheet
 };
 
 /// Every entry, grouped by category, in a fixed order (built once, on first use).

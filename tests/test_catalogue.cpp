@@ -40,11 +40,16 @@ TEST(Catalogue, NamesAreUniqueAndFindable) {
         EXPECT_EQ(bool(e.animation), e.category == Category::animation) << e.name;
         EXPECT_EQ(bool(e.system), e.category == Category::dynamics) << e.name;
         EXPECT_EQ(!e.file.empty(), e.category == Category::scene_file) << e.name;
+        EXPECT_EQ(bool(e.sheet), e.category == Category::sprite_sheet) << e.name;
     }
     EXPECT_EQ(scenes::find_entry("no_such_scene"), nullptr);
     EXPECT_GE(scenes::entries_of(Category::path).size(), 25u);  // 9 of the original's, 15 kinds, 1 benchmark
     EXPECT_EQ(scenes::entries_of(Category::animation).size(), 2u);
     EXPECT_EQ(to_string(Category::scene_file), "scene_file");
+    EXPECT_EQ(to_string(Category::sprite_sheet), "sprite_sheet");
+#ifdef GRAPE_SCENES_SHEET_JSON
+    EXPECT_EQ(scenes::entries_of(Category::sprite_sheet).size(), 2u);
+#endif
 }
 
 TEST(Catalogue, EveryPathIsFiniteAndItsDescriptionRebuildsIt) {
@@ -82,7 +87,7 @@ TEST(Catalogue, EverySystemRunsTwoSecondsOnItsConstraints) {
         ParticleSystem system = e->system();
         ASSERT_GT(system.size(), 0u) << e->name;
         for (int frame = 0; frame < 120; ++frame) {
-            const StepReport r = system.step(1.0 / 60.0);
+            const StepStats r = system.step(1.0 / 60.0);
             ASSERT_EQ(r.status, SolveStatus::ok) << e->name << " frame " << frame;
         }
         for (const Vec2 x : system.positions()) ASSERT_TRUE(std::isfinite(x.x) && std::isfinite(x.y)) << e->name;

@@ -1,13 +1,17 @@
 // The demo's pictures (`grape demo`, render module): every path kind, the seed's splines,
-// the arc-length comparison, the complex paths, a tile-sheet sprite and the parabola.
+// the arc-length comparison, the complex paths, a tile-sheet sprite and the parabola. The
+// scenes come from the catalogue by name (scenes/catalogue.hpp), as the tests take them.
 #include "commands.hpp"
 
+#include <grape/error.hpp>
 #include <grape/path.hpp>
 #include <grape/render.hpp>
 #include <grape/sprite.hpp>
 
+#include "catalogue.hpp"
 #include "scene_draw.hpp"
 #include "seed_paths.hpp"
+#include "sprite_sheets.hpp"
 
 #ifdef GRAPE_TOOL_DYNAMICS
 #include <grape/dynamics.hpp>
@@ -33,19 +37,14 @@ struct Written {
     std::string figures;
 };
 
-// The seed's tile-sheet sprite, drawn here: 8 frames of a turning bar on a 4 × 2 sheet.
-Image make_tile_sheet_image() {
-    Canvas sheet(128, 64, colors::transparent);
-    for (int f = 0; f < 8; ++f) {
-        const Vec2 centre{32.0 * (f % 4) + 16.0, 32.0 * (f / 4) + 16.0};
-        const double a = f * pi / 8.0;
-        const Vec2 d{std::cos(a) * 12.0, std::sin(a) * 12.0};
-        sheet.fill_rect({32.0 * (f % 4) + 1, 32.0 * (f / 4) + 1, 30, 30}, {.color = {0.93, 0.95, 1.0}});
-        sheet.stroke_line(centre - d, centre + d, {.color = colors::purple, .width = 5});
-        sheet.dot(centre, 3, colors::orange);
-    }
-    return sheet.to_image();
+// The catalogue's builder of `name` in `category`; a missing entry is a defect of the build.
+const scenes::Entry& entry(const char* name) {
+    const scenes::Entry* e = scenes::find_entry(name);
+    if (!e) throw Error(std::string("demo: the catalogue has no entry ") + name);
+    return *e;
 }
+
+Path path_named(const char* name) { return entry(name).path(); }
 
 }  // namespace
 
@@ -63,7 +62,10 @@ void demo_pictures(const DemoContext& context) {
     {
         Canvas canvas(700, 700);
         canvas.set_transform(Affine::translation({50, 60}));
-        const auto gallery = scenes::path_gallery();
+        const std::string prefix = "gallery_";  // one path of every kind
+        std::vector<std::pair<std::string, Path>> gallery;
+        for (const scenes::Entry* e : scenes::entries_of(scenes::Category::path))
+            if (e->name.rfind(prefix, 0) == 0) gallery.emplace_back(e->name.substr(prefix.size()), e->path());
         std::size_t i = 0;
         std::vector<Vec2> labelled;  // paths that start together get their labels stacked
         for (const auto& [name, path] : gallery) {
@@ -87,9 +89,9 @@ void demo_pictures(const DemoContext& context) {
     {
         Canvas canvas(560, 560);
         canvas.set_transform(Affine::translation({10, 40}));
-        const std::pair<const char*, Path> splines[] = {{"linear", scenes::seed_linear_spline()},
-                                                        {"cosine", scenes::seed_cosine_spline()},
-                                                        {"Catmull-Rom", scenes::seed_catmull_rom_spline()}};
+        const std::pair<const char*, Path> splines[] = {{"linear", path_named("seed_linear_spline_p1")},
+                                                        {"cosine", path_named("seed_cosine_spline_p2")},
+                                                        {"Catmull-Rom", path_named("seed_catmull_rom_spline_p3")}};
         const std::array<double, 12>* points[] = {&scenes::seed_p1, &scenes::seed_p2, &scenes::seed_p3};
         std::string figures;
         for (int k = 0; k < 3; ++k) {
@@ -107,8 +109,8 @@ void demo_pictures(const DemoContext& context) {
     // 3. Arc length: the same Bézier tweened with and without reparametrization, the tween's
     //    position marked every tenth of the duration. Black: reparametrized; red: not.
     {
-        const Path plain = scenes::seed_bezier(false);
-        const Path even = scenes::seed_bezier(true);
+        const Path plain = path_named("seed_bezier");
+        const Path even = path_named("seed_bezier_reparametrized");
         Canvas canvas(660, 660);
         canvas.set_transform(Affine::translation({20, 40}));
         canvas.stroke_path(plain, {.color = colors::light_grey, .width = 6});
@@ -140,7 +142,7 @@ void demo_pictures(const DemoContext& context) {
     // 4. The two complex-path examples, with their (nested) cues marked and u-ticks.
     {
         const std::pair<const char*, Path> examples[] = {
-            {"complex.png", scenes::seed_complex()}, {"nested_complex.png", scenes::seed_nested_complex()}};
+            {"complex.png", path_named("seed_complex")}, {"nested_complex.png", path_named("seed_nested_complex")}};
         const char* titles[] = {"ComplexPath: spiral, then three segments (cues 0, 0.25, 0.5, 0.6)",
                                 "Nested ComplexPath: three circles, a Bézier and a sine wave"};
         for (int k = 0; k < 2; ++k) {
@@ -158,8 +160,9 @@ void demo_pictures(const DemoContext& context) {
 
     // 5. A tile-sheet sprite at half speed: the sheet with the current frame, and the frames shown.
     {
-        const Image sheet_image = make_tile_sheet_image();
-        const TileSheet sheet({.width = 128, .height = 64, .columns = 4, .rows = 2});
+        const scenes::DrawnSheet drawn = entry("grape_tile_sheet").sheet();  // 8 frames on a 4 × 2 grid
+        const Image& sheet_image = drawn.image;
+        const TileSheet sheet({.width = sheet_image.width(), .height = sheet_image.height(), .columns = 4, .rows = 2});
         TileSheetSprite sprite(sheet);
         SpritePlayer player(sprite, {.rate = 0.5});
         Canvas canvas(620, 200);
@@ -167,7 +170,7 @@ void demo_pictures(const DemoContext& context) {
         for (int step = 0; step < 8; ++step) {
             draw_sprite(canvas, sheet_image, sprite, {300.0 + 38.0 * (step % 8), 60.0}, 1.0, false);
             canvas.text({316.0 + 38.0 * (step % 8), 108.0}, std::to_string(sprite.current_frame()),
-                        {.size = 10, .align = TextAlign::centre});
+                        {.size = 10, .align = TextAlign::center});
             if (step == 5) draw_tile_sheet(canvas, sheet_image, sprite, {20, 50}, 2.0);
             player.advance();
         }

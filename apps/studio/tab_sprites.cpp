@@ -1,13 +1,14 @@
-// Sprites: the seed's SpritePlayer demo. One animation, drawn into a tile sheet with cairo at
-// start-up, played two ways at the same real-valued rate: blitted from the sheet
+// Sprites: the seed's SpritePlayer demo. One animation, the catalogue's grape sprite drawn into
+// a tile sheet at start-up (scenes/sprite_sheets.hpp), played two ways at the same real-valued rate: blitted from the sheet
 // (TileSheetSprite) and stepped as a list of separate frame images (a Playable of our own,
 // like the seed's MovieClip wrapper). A slider sets the rate from −(n−1) to n−1. With the
 // scene and render modules, a sheet exported from Aseprite or TexturePacker (JSON + PNG) opens
 // too: its clips are listed and the chosen one plays with its own durations at the same rate.
 #include "studio.hpp"
 
-#include "sheet.hpp"
+#include "sprite_sheets.hpp"
 
+#include <grape/render.hpp>
 #include <grape/sprite.hpp>
 
 #if defined(GRAPE_STUDIO_SCENE) && defined(GRAPE_STUDIO_RENDER)
@@ -75,8 +76,8 @@ class SpritesTab final : public Tab {
 public:
     explicit SpritesTab(std::string sheet_file)
         : sheet_file_option_(std::move(sheet_file)),
-          image_(draw_sprite_sheet(frame_count, columns, frame_size)),
-          sheet_({.width = image_.width, .height = image_.height, .columns = columns,
+          image_(scenes::grape_tile_sheet(frame_count, columns, frame_size).image),
+          sheet_({.width = image_.width(), .height = image_.height(), .columns = columns,
                   .rows = (frame_count + columns - 1) / columns, .frame_count = frame_count}),
           sprite_(sheet_),
           sheet_player_(sprite_, {.rate = rate_}),
@@ -92,11 +93,13 @@ public:
         std::snprintf(sheet_file_, sizeof sheet_file_, "%s", file.c_str());
         open_sheet();
 #endif
-        sheet_texture_ = make_texture(renderer, image_.pixels.data(), image_.width, image_.height, image_.stride);
+        const auto* pixels = reinterpret_cast<const std::uint8_t*>(image_.argb().data());
+        const int stride = 4 * image_.width();
+        sheet_texture_ = make_texture(renderer, pixels, image_.width(), image_.height(), stride);
         // The list: each frame copied out of the sheet into its own texture.
         for (const FrameRect& r : sheet_.frames()) {
-            const std::uint8_t* first = image_.pixels.data() + std::size_t(r.y) * std::size_t(image_.stride) + std::size_t(r.x) * 4;
-            list_.frames.push_back(make_texture(renderer, first, r.width, r.height, image_.stride));
+            const std::uint8_t* first = pixels + std::size_t(r.y) * std::size_t(stride) + std::size_t(r.x) * 4;
+            list_.frames.push_back(make_texture(renderer, first, r.width, r.height, stride));
         }
     }
 
@@ -199,10 +202,10 @@ public:
 
         // The whole sheet with the frame shown outlined.
         const float sy = a.y + big + 50.0f;
-        const float sheet_w = std::min(float(image_.width), max.x - min.x - 60.0f);
-        const float k = sheet_w / float(image_.width);
+        const float sheet_w = std::min(float(image_.width()), max.x - min.x - 60.0f);
+        const float k = sheet_w / float(image_.width());
         dl->AddText({a.x, sy - 20.0f}, color::ink, "the tile sheet (drawn with cairo at start-up)");
-        if (sheet_texture_) dl->AddImage(ImTextureID(sheet_texture_), {a.x, sy}, {a.x + sheet_w, sy + float(image_.height) * k});
+        if (sheet_texture_) dl->AddImage(ImTextureID(sheet_texture_), {a.x, sy}, {a.x + sheet_w, sy + float(image_.height()) * k});
         const FrameRect& r = sprite_.rect();
         dl->AddRect({a.x + float(r.x) * k, sy + float(r.y) * k},
                     {a.x + float(r.x + r.width) * k, sy + float(r.y + r.height) * k}, color::marker, 0.0f, 0, 3.0f);
@@ -323,7 +326,7 @@ private:
     int mode_ = 0;
     bool per_frame_ = false;
     [[maybe_unused]] std::string sheet_file_option_;  // --sheet ("": grape's own sheet)
-    SheetImage image_;
+    Image image_;
     TileSheet sheet_;
     TileSheetSprite sprite_;
     FrameList list_;
