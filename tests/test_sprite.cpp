@@ -238,7 +238,10 @@ TEST(SpritePlayer, FrameCallbackReportsEveryFrameEnteredAndLoopsAreCounted) {
             std::vector<std::size_t> reported;
             std::size_t loops = 0;
             player.on_frame([&](std::size_t f) { reported.push_back(f); });
-            player.on_loop([&](std::size_t cycles) { loops += cycles; });
+            player.on_loop([&](std::size_t cycle, std::size_t skipped) {
+                EXPECT_EQ(cycle, loops + skipped + 1);  // every completed cycle counted once
+                loops = cycle;
+            });
             const std::int64_t steps = 200;
             for (std::int64_t k = 0; k < steps; ++k) player.advance();
             // Every position between the start and the end, one by one, in the direction of travel.
@@ -281,12 +284,23 @@ TEST(SpritePlayer, TimeBasedAdvance) {
     EXPECT_EQ(player.remainder(), 0.0);
     // A long hitch: 10 s at 8 fps is 80 frames, ten whole cycles of 8 frames.
     std::size_t loops = 0, reported = 0;
-    player.on_loop([&](std::size_t cycles) { loops += cycles; });
+    std::size_t skipped = 0;
+    player.on_loop([&](std::size_t cycle, std::size_t s) {
+        loops = cycle;
+        skipped = s;
+    });
     player.on_frame([&](std::size_t) { ++reported; });
     player.advance(10, 8);
     EXPECT_EQ(player.frame(), 5u);
     EXPECT_EQ(loops, 10u);
+    EXPECT_EQ(skipped, 9u);   // one call for the ten cycles
     EXPECT_EQ(reported, 8u);  // at most one cycle of frame events per call
+    player.advance(1, 8);     // one more cycle of 8 frames: the count goes on
+    EXPECT_EQ(loops, 11u);
+    EXPECT_EQ(skipped, 0u);
+    player.on_loop([&](std::size_t cycle) { loops = cycle; });  // a new callback counts from 0
+    player.advance(1, 8);
+    EXPECT_EQ(loops, 1u);
     // Once mode: a long step ends the playback.
     SpritePlayer once(8, {.mode = PlayMode::once});
     bool complete = false;

@@ -76,9 +76,11 @@ public:
     using FrameCallback = std::function<void(std::size_t frame)>;
     /// Called when a PlayMode::once playback reaches its end and stops.
     using CompleteCallback = std::function<void()>;
-    /// Called after an advance that completed loop or ping-pong cycles, with how many (≥ 1;
-    /// more than one only when a time-based advance spans several cycles).
-    using LoopCallback = std::function<void(std::size_t cycles)>;
+    /// Called after an advance that completed loop or ping-pong cycles, as Animation::on_loop
+    /// is called when plays begin: `cycle` counts the cycles completed since the callback was
+    /// set (1, 2, …; saturating), `skipped` how many this advance completed before `cycle`
+    /// without a call of their own (0 unless a time-based advance spans several cycles).
+    using LoopCallback = std::function<void(std::size_t cycle, std::size_t skipped)>;
     // Callbacks run after the player's state is final for the step; they may change the
     // player (rate, frame, mode, callbacks) but must not destroy it, and must not throw.
 
@@ -145,8 +147,11 @@ public:
     void on_frame(FrameCallback callback);
     /// Sets the completion callback of PlayMode::once (empty to remove).
     void on_complete(CompleteCallback callback);
-    /// Sets the callback for completed loop or ping-pong cycles (empty to remove).
+    /// Sets the callback for completed loop or ping-pong cycles (empty to remove); its cycle
+    /// count starts again from 0.
     void on_loop(LoopCallback callback);
+    /// The same without `skipped`.
+    void on_loop(std::function<void(std::size_t cycle)> callback);
 
 private:
     struct Callbacks;

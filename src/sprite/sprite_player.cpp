@@ -47,6 +47,7 @@ struct SpritePlayer::Callbacks {
     Slot<FrameCallback> frame;
     Slot<CompleteCallback> complete;
     Slot<LoopCallback> loop;
+    std::size_t cycles_done = 0;  // since `loop` was set
 };
 
 Playable* SpritePlayer::playable_ptr() const noexcept {
@@ -235,7 +236,16 @@ SpritePlayer::Callbacks& SpritePlayer::callbacks() {
 
 void SpritePlayer::on_frame(FrameCallback callback) { callbacks().frame.assign(std::move(callback)); }
 void SpritePlayer::on_complete(CompleteCallback callback) { callbacks().complete.assign(std::move(callback)); }
-void SpritePlayer::on_loop(LoopCallback callback) { callbacks().loop.assign(std::move(callback)); }
+void SpritePlayer::on_loop(LoopCallback callback) {
+    Callbacks& cb = callbacks();
+    cb.loop.assign(std::move(callback));
+    cb.cycles_done = 0;
+}
+
+void SpritePlayer::on_loop(std::function<void(std::size_t cycle)> callback) {
+    if (!callback) return on_loop(LoopCallback{});
+    on_loop(LoopCallback([f = std::move(callback)](std::size_t cycle, std::size_t) { f(cycle); }));
+}
 
 // The seed's step: take the integer part of the rate, accumulate the fraction, carry ±1 when
 // the remainder reaches ±1. Additions and comparisons only; the carry and the wrap are
@@ -346,7 +356,11 @@ void SpritePlayer::report(std::int64_t target, std::int64_t steps, std::int64_t 
             cb.frame.fire(frame_at(q));
         }
     }
-    if (cycles > 0) cb.loop.fire(cycles);
+    if (cycles > 0) {
+        const std::size_t room = std::numeric_limits<std::size_t>::max() - cb.cycles_done;
+        cb.cycles_done += cycles < room ? cycles : room;
+        cb.loop.fire(cb.cycles_done, cycles - 1);
+    }
     if (completed) cb.complete.fire();
 }
 

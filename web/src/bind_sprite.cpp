@@ -54,7 +54,7 @@ unsigned frame_count(const SpritePlayer& p) { return unsigned(p.frame_count()); 
 void set_frame(SpritePlayer& p, unsigned k) { p.set_frame(k); }
 void on_frame(SpritePlayer& p, val fn) { p.on_frame([fn](std::size_t k) { fn(unsigned(k)); }); }
 void on_complete(SpritePlayer& p, val fn) { p.on_complete([fn] { fn(); }); }
-void on_loop(SpritePlayer& p, val fn) { p.on_loop([fn](std::size_t cycles) { fn(unsigned(cycles)); }); }
+void on_loop(SpritePlayer& p, val fn) { p.on_loop([fn](std::size_t cycle) { fn(unsigned(cycle)); }); }
 
 TileSheet* make_sheet(val o) {
     std::string message;
