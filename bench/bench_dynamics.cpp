@@ -1,7 +1,7 @@
 // Dynamics benchmarks. Steps per second of one bead (parametric) and one constrained
 // particle (implicit) (Google Benchmark), then 10 s of a chain of 10, 100 and 1,000
 // unit-mass particles 1 m apart, released horizontally from a pin, against the same chain
-// in Box2D 2.4 (small circles joined by revolute joints at the previous body's centre,
+// in Box2D 2.4 (small circles joined by revolute joints at the previous body's center,
 // default 8 velocity and 3 position iterations, 60 Hz) and, built with
 // -DGRAPE_BOX2D3_DIR=<source tree>, Box2D v3 (point masses joined by rigid distance joints,
 // its soft step with 4 sub-steps). The chains run round-robin, `--rounds R` (default 5)
@@ -12,6 +12,7 @@
 //   bench_dynamics [--rounds R] [--benchmark_filter=...]   (--rounds 0: no chains)
 #include <grape/dynamics.hpp>
 
+#include <catalogue.hpp>
 #include <seed_dynamics.hpp>
 
 #include <benchmark/benchmark.h>
@@ -41,7 +42,7 @@ constexpr double link = 1.0;  // m
 constexpr double g = 9.81;
 
 void BM_bead_parametric(benchmark::State& state) {
-    Bead bead(ParametricCurve(scenes::seed_parabola_frame), {.u = 100, .gravity = {0, 500}});
+    Bead bead(ParametricFunction(scenes::seed_parabola_frame), {.u = 100, .gravity = {0, 500}});
     for (auto _ : state) {
         bead.step(frame);
         benchmark::DoNotOptimize(bead.u());
@@ -52,9 +53,9 @@ BENCHMARK(BM_bead_parametric);
 
 void particle_implicit(benchmark::State& state, DriftControl drift) {
     ParticleSystem system({.drift = {.method = drift}});
-    const auto p = system.add_particle({.position = {100, -100}});
+    const auto p = system.create_particle({.position = {100, -100}});
     system.add_gravity({0, 500});
-    system.add_curve(p, scenes::seed_parabola_curve());
+    system.create_implicit(p, scenes::seed_parabola_curve());
     for (auto _ : state) {
         system.step(frame);
         benchmark::DoNotOptimize(system.positions()[0]);
@@ -84,8 +85,15 @@ struct ChainRun {
 // ~7 s, at 1/120 s it holds its links at round-off for the whole run.
 int rk4_substeps_for(std::size_t links) { return links >= 1000 ? 2 : 1; }
 
+// The catalogue's chain_N (1 m links, g = 9.81 m/s², as `grape list` shows and the studio
+// plays), set to the contender's integrator, drift control and sub-step rule.
 ChainRun grape_chain(std::size_t links, const ParticleSystemDef& def, int substeps) {
-    auto system = scenes::chain(links, link, g, def);
+    const scenes::Entry* entry = scenes::find_entry("chain_" + std::to_string(links));
+    if (!entry) throw Error("bench_dynamics: the catalogue has no chain_" + std::to_string(links));
+    ParticleSystem system = entry->system();
+    system.set_integrator(def.integrator);
+    system.set_drift(def.drift);
+    system.set_substeps(def.substeps);
     ChainRun run;
     for (int f = 0; f < frames; ++f) {
         const double start = thread_seconds();

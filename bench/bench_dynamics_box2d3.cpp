@@ -27,7 +27,7 @@ Box2d3Run box2d3_chain(std::size_t links, double link, double g, double frame, i
     b2BodyDef ground_def = b2DefaultBodyDef();
     std::vector<b2BodyId> bodies{b2CreateBody(world, &ground_def)};
     // Point masses like grape's particles: mass 1, no shape (nothing for the broad phase),
-    // no rotational inertia (the joints act at the centres, so rotation plays no part).
+    // no rotational inertia (the joints act at the centers, so rotation plays no part).
     const b2MassData mass{.mass = 1.0f, .center = {0.0f, 0.0f}, .rotationalInertia = 0.0f};
     for (std::size_t k = 1; k <= links; ++k) {
         b2BodyDef def = b2DefaultBodyDef();

@@ -1,5 +1,5 @@
 // A cut-scene as straight-line code: the hero walks in, waits, the door opens, five sparkles
-// burst in a stagger from the centre, and the hero bows (a nested script). The engine's tick
+// burst in a stagger from the center, and the hero bows (a nested script). The engine's tick
 // drives the script; cancelling it (or destroying it) would stop it where it waits.
 #include <grape/script.hpp>
 #include <grape/stagger.hpp>

@@ -12,9 +12,9 @@ int main() {
 
     // Implicit: write C once; its gradient and Hessian come by automatic differentiation.
     grape::ParticleSystem system({.drift = {.method = grape::DriftControl::projection}});
-    auto p = system.add_particle({.position = {100, -100}});
+    auto p = system.create_particle({.position = {100, -100}});
     system.add_gravity({0, 500});
-    system.add_curve(p, grape::ImplicitCurve::from_function([](auto x, auto y) { return x * x + 100 * y; }));
+    system.create_implicit(p, grape::ImplicitFunction::from_function([](auto x, auto y) { return x * x + 100 * y; }));
 
     for (int frame = 0; frame < 60; ++frame) {
         bead.step(1.0 / 60);

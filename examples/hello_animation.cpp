@@ -19,6 +19,6 @@ int main() {
     engine.on_tick([&](double) { /* draw view at (view.x, view.y) */ });
 
     for (int frame = 0; frame < 4 * 60; ++frame) engine.tick(1.0 / 60.0);
-    std::printf("view at (%.3f, %.3f)\n", view.x, view.y);  // the spiral's centre
+    std::printf("view at (%.3f, %.3f)\n", view.x, view.y);  // the spiral's center
     return anim.alive() ? 1 : 0;
 }

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 int main() {
-    const grape::SpiralPath spiral({100, 100}, 200, 0);  // centre, radius 200 → 0
+    const grape::SpiralPath spiral({100, 100}, 200, 0);  // center, radius 200 → 0
     const grape::CubicBezierPath bez({20, 20}, {400, 200}, {400, 600}, {600, 600});
     const grape::Path even = bez.reparametrized();        // same shape, constant speed
     const grape::ComplexPath both = grape::ComplexPath::by_length({spiral, grape::LinearPath({100, 100}, {20, 20}), bez});

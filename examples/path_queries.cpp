@@ -1,5 +1,5 @@
 // Asking a path questions: snap a dragged point to a track, the frame there, a car driving a
-// lane beside the centre line over part of the track, and a mouse drag turned into a path.
+// lane beside the center line over part of the track, and a mouse drag turned into a path.
 #include <grape/anim.hpp>
 #include <grape/path.hpp>
 #include <grape/path_query.hpp>
@@ -21,7 +21,7 @@ int main() {
     const grape::PathFrame f = grape::frame(track, near.u);
     std::printf("tangent (%.3f, %.3f), curvature %.5f /px\n", f.tangent.x, f.tangent.y, f.curvature);
 
-    // A car 12 px beside the centre line, over the middle 60% of the track, facing its way.
+    // A car 12 px beside the center line, over the middle 60% of the track, facing its way.
     grape::Engine engine;
     struct Car {
         double x = 0, y = 0, rotation = 0;

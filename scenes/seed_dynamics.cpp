@@ -9,15 +9,15 @@
 
 namespace grape::scenes {
 
-ImplicitCurve seed_parabola_curve() {
-    return ImplicitCurve::from_function([](auto x, auto y) { return seed_parabola_c(x, y); });
+ImplicitFunction seed_parabola_curve() {
+    return ImplicitFunction::from_function([](auto x, auto y) { return seed_parabola_c(x, y); });
 }
 
-ImplicitCurve seed_parabola_curve_analytic() {
-    return ImplicitCurve([](Vec2 p) { return CurveSample{p.x * p.x + 100.0 * p.y, {2.0 * p.x, 100.0}, 2.0, 0.0, 0.0}; });
+ImplicitFunction seed_parabola_curve_analytic() {
+    return ImplicitFunction([](Vec2 p) { return ImplicitSample{p.x * p.x + 100.0 * p.y, {2.0 * p.x, 100.0}, 2.0, 0.0, 0.0}; });
 }
 
-CurveFrame seed_parabola_frame(double q) noexcept { return {{q, -q * q / 100.0}, {1.0, -q / 50.0}, {0.0, -1.0 / 50.0}}; }
+ParametricSample seed_parabola_frame(double q) noexcept { return {{q, -q * q / 100.0}, {1.0, -q / 50.0}, {0.0, -1.0 / 50.0}}; }
 
 Vec2 seed_constraint_force(double mass, Vec2 x, Vec2 v, Vec2 f_ext) noexcept {
     const double fy = (-50.0 * mass * v.x * v.x - 100.0 * x.x * f_ext.x - 2500.0 * f_ext.y) / (x.x * x.x + 2500.0);
@@ -58,7 +58,7 @@ ParabolaRun::ParabolaRun(const ParabolaSetup& setup) : setup_(setup) {
     const Vec2 start{setup.x0, -setup.x0 * setup.x0 / 100.0};
     const double fx = setup.force_x;
     if (setup.method == ParabolaMethod::parametric) {
-        bead_.emplace(ParametricCurve(seed_parabola_frame),
+        bead_.emplace(ParametricFunction(seed_parabola_frame),
                       BeadDef{.u = setup.x0, .mass = setup.mass, .gravity = {0.0, setup.g},
                               .integrator = setup.integrator, .rk45 = setup.rk45});
         if (fx != 0.0) bead_->set_force([fx](double, Vec2, Vec2) { return Vec2{fx, 0.0}; });
@@ -67,13 +67,13 @@ ParabolaRun::ParabolaRun(const ParabolaSetup& setup) : setup_(setup) {
     system_.emplace(ParticleSystemDef{.integrator = setup.integrator,
                                       .drift = setup.method == ParabolaMethod::implicit ? setup.drift : DriftDef{.method = DriftControl::none},
                                       .rk45 = setup.rk45});
-    const ParticleId p = system_->add_particle({.position = start, .mass = setup.mass});
+    const ParticleId p = system_->create_particle({.position = start, .mass = setup.mass});
     system_->add_gravity({0.0, setup.g});
     if (fx != 0.0)
         system_->add_force([fx](const ForceContext& c) { c.forces[0] += Vec2{fx, 0.0}; },
                            [fx](std::span<const Vec2> x) { return -fx * x[0].x; });
     if (setup.method == ParabolaMethod::implicit) {
-        system_->add_curve(p, seed_parabola_curve());
+        system_->create_implicit(p, seed_parabola_curve());
     } else {
         // The seed's harness: all applied forces are accumulated first, then its closed form reads them.
         const double m = setup.mass;
@@ -84,7 +84,7 @@ ParabolaRun::ParabolaRun(const ParabolaSetup& setup) : setup_(setup) {
 }
 
 bool ParabolaRun::step(double dt) {
-    if (bead_) return bead_->step(dt).finite;
+    if (bead_) return bead_->step(dt).status != SolveStatus::non_finite;
     return system_->step(dt).status != SolveStatus::non_finite;
 }
 
@@ -133,19 +133,19 @@ ParabolaSummary run_parabola(const ParabolaSetup& setup, double dt, double secon
 
 ParticleSystem simple_pendulum(double length, double theta0, double g, const ParticleSystemDef& def) {
     ParticleSystem system(def);
-    const ParticleId bob = system.add_particle({.position = {length * std::sin(theta0), length * std::cos(theta0)}});
+    const ParticleId bob = system.create_particle({.position = {length * std::sin(theta0), length * std::cos(theta0)}});
     system.add_gravity({0.0, g});
-    system.add_anchor(bob, {0.0, 0.0}, length);
+    system.create_anchor(bob, {0.0, 0.0}, length);
     return system;
 }
 
 ParticleSystem double_pendulum(double length1, double length2, double g, const ParticleSystemDef& def) {
     ParticleSystem system(def);
-    const ParticleId a = system.add_particle({.position = {length1, 0.0}});
-    const ParticleId b = system.add_particle({.position = {length1 + length2, 0.0}});
+    const ParticleId a = system.create_particle({.position = {length1, 0.0}});
+    const ParticleId b = system.create_particle({.position = {length1 + length2, 0.0}});
     system.add_gravity({0.0, g});
-    system.add_anchor(a, {0.0, 0.0}, length1);
-    system.add_distance(a, b, length2);
+    system.create_anchor(a, {0.0, 0.0}, length1);
+    system.create_distance(a, b, length2);
     return system;
 }
 
@@ -155,10 +155,10 @@ ParticleSystem chain(std::size_t links, double link_length, double g, const Part
     ParticleSystem system(def);
     // Exactly along +x for the horizontal release (cos(π/2) is 6e-17, not 0).
     const Vec2 direction = release_angle == pi / 2 ? Vec2{1.0, 0.0} : Vec2{std::sin(release_angle), std::cos(release_angle)};
-    ParticleId previous = system.add_particle({.position = {0.0, 0.0}, .mass = std::numeric_limits<double>::infinity()});
+    ParticleId previous = system.create_particle({.position = {0.0, 0.0}, .mass = std::numeric_limits<double>::infinity()});
     for (std::size_t k = 1; k <= links; ++k) {
-        const ParticleId next = system.add_particle({.position = direction * (static_cast<double>(k) * link_length)});
-        system.add_distance(previous, next, link_length);
+        const ParticleId next = system.create_particle({.position = direction * (static_cast<double>(k) * link_length)});
+        system.create_distance(previous, next, link_length);
         previous = next;
     }
     system.add_gravity({0.0, g});
@@ -174,14 +174,14 @@ ParticleSystem cloth_strip(int columns, int rows, double spacing, double g, cons
     const double x0 = -0.5 * spacing * (columns - 1);
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < columns; ++c)
-            ids.push_back(system.add_particle({.position = {x0 + (c + r * std::sin(release_angle)) * spacing,
+            ids.push_back(system.create_particle({.position = {x0 + (c + r * std::sin(release_angle)) * spacing,
                                                             r * std::cos(release_angle) * spacing},
                                                .mass = r == 0 ? std::numeric_limits<double>::infinity() : 1.0}));
     auto at = [&](int c, int r) { return ids[static_cast<std::size_t>(r * columns + c)]; };
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < columns; ++c) {
-            if (c + 1 < columns && r > 0) system.add_distance(at(c, r), at(c + 1, r), spacing);
-            if (r + 1 < rows) system.add_distance(at(c, r), at(c, r + 1), spacing);
+            if (c + 1 < columns && r > 0) system.create_distance(at(c, r), at(c + 1, r), spacing);
+            if (r + 1 < rows) system.create_distance(at(c, r), at(c, r + 1), spacing);
         }
     system.add_gravity({0.0, g});
     return system;

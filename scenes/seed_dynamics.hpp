@@ -18,11 +18,11 @@ T seed_parabola_c(T x, T y) {
 }
 
 /// The parabola as an implicit curve (gradient and Hessian by automatic differentiation).
-ImplicitCurve seed_parabola_curve();
+ImplicitFunction seed_parabola_curve();
 /// The parabola with hand-written gradient (2x, 100) and Hessian diag(2, 0).
-ImplicitCurve seed_parabola_curve_analytic();
+ImplicitFunction seed_parabola_curve_analytic();
 /// The parametric form x(q) = (q, −q²/100) with its derivatives.
-CurveFrame seed_parabola_frame(double q) noexcept;
+ParametricSample seed_parabola_frame(double q) noexcept;
 
 /// The seed's closed-form constraint force, AS WRITTEN in the blog (wrong Fext.x coefficient):
 /// Fc.y = (−50 m vx² − 100 x Fext.x − 2500 Fext.y)/(x² + 2500), Fc.x = Fc.y·x/50.
@@ -118,7 +118,7 @@ ParticleSystem chain(std::size_t links, double link_length, double g, const Part
 
 /// A strip of cloth: columns × rows unit masses `spacing` apart, the top row pinned, held by
 /// distance constraints along the rows (below the top) and the columns, released sheared by
-/// `release_angle` radians (every link keeps its length) so it starts swinging; centred on
+/// `release_angle` radians (every link keeps its length) so it starts swinging; centered on
 /// x = 0, rows going down (+y). Particle (c, r) is number r·columns + c.
 ParticleSystem cloth_strip(int columns, int rows, double spacing, double g, const ParticleSystemDef& def = chain_def(),
                            double release_angle = 0.5);

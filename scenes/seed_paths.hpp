@@ -11,7 +11,7 @@
 
 namespace grape::scenes {
 
-/// The seed's spiral: centre (100, 100), radius 200 → 0 over one turn.
+/// The seed's spiral: center (100, 100), radius 200 → 0 over one turn.
 SpiralPath seed_spiral();
 
 /// The seed's four-part complex path: the spiral, then segments (100,100)→(200,200)→(200,100)

@@ -105,21 +105,21 @@ TEST(AnimationOffset, StaysAtTheOffsetFromACircle) {
     // A circle of radius 100 about (10, 20): the point beside it at offset d is on the
     // concentric circle of radius 100 ∓ d (the normal points inwards or outwards everywhere
     // alike), and the heading is the circle's tangent direction. 1e-12: ulps of 100.
-    const Vec2 centre{10, 20};
-    const Path circle = grape::CirclePath(centre, 100.0, 0.0, 2.0 * pi);
+    const Vec2 center{10, 20};
+    const Path circle = grape::CirclePath(center, 100.0, 0.0, 2.0 * pi);
     for (const double d : {7.5, -7.5, 40.0}) {
         Engine engine;
         Sprite s;
         const auto a = engine.create_2d_animation(s, circle, 3.0, {.repeat = -1, .heading = true, .offset = d});
-        const double r0 = std::hypot(s.x - centre.x, s.y - centre.y);
+        const double r0 = std::hypot(s.x - center.x, s.y - center.y);
         EXPECT_TRUE(std::abs(r0 - (100.0 - d)) < 1e-12 || std::abs(r0 - (100.0 + d)) < 1e-12) << r0;
         for (int k = 0; k < 100; ++k) {
             engine.tick(0.07);
-            const double r = std::hypot(s.x - centre.x, s.y - centre.y);
+            const double r = std::hypot(s.x - center.x, s.y - center.y);
             EXPECT_NEAR(r, r0, 1e-12) << "d " << d << " tick " << k;
             // The tangent of a counter-clockwise circle is the radius turned a quarter turn (the
             // offset point lies on the radius through the path's point, at either offset sign).
-            const double radial = std::atan2(s.y - centre.y, s.x - centre.x);
+            const double radial = std::atan2(s.y - center.y, s.x - center.x);
             const double tangent = radial + pi / 2;
             EXPECT_NEAR(std::remainder(s.rotation - tangent, 2.0 * pi), 0.0, 1e-12);
             const Vec2 expected = grape::offset_point(circle, a.progress(), d);

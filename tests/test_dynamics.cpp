@@ -112,9 +112,9 @@ struct SolverResult {
 };
 SolverResult solver_force(const ParabolaSample& s, double mass, Vec2 applied) {
     ParticleSystem system({.drift = {.method = DriftControl::none}});
-    const auto p = system.add_particle({.position = s.x, .velocity = s.v, .mass = mass});
+    const auto p = system.create_particle({.position = s.x, .velocity = s.v, .mass = mass});
     system.add_force([applied](const ForceContext& c) { c.forces[0] += applied; });
-    system.add_curve(p, seed_parabola_curve());
+    system.create_implicit(p, seed_parabola_curve());
     std::vector<Vec2> a(1);
     EXPECT_EQ(system.evaluate(a), SolveStatus::ok);
     return {system.constraint_forces()[0], a[0]};
@@ -159,7 +159,7 @@ TEST(Jet2, GradientAndHessianMatchHandDerivatives) {
     }
 }
 
-TEST(ImplicitCurve, AutomaticAndHandWrittenParabolaAgreeExactly) {
+TEST(ImplicitFunction, AutomaticAndHandWrittenParabolaAgreeExactly) {
     const auto automatic = seed_parabola_curve();
     const auto hand = seed_parabola_curve_analytic();
     for (double x : {-200.0, -3.5, 0.0, 17.25, 150.0}) {
@@ -210,18 +210,18 @@ TEST(Constraints, RateAndCurvatureTermMatchFiniteDifferencesForEveryKind) {
     auto rv = [&] { return Vec2{u(rng), u(rng)}; };
     for (int trial = 0; trial < 20; ++trial) {
         ParticleSystem system;
-        const auto a = system.add_particle({.position = rv(), .velocity = rv()});
-        const auto b = system.add_particle({.position = rv() + Vec2{2, 0}, .velocity = rv()});
-        const auto c = system.add_particle({.position = rv() - Vec2{2, 0}, .velocity = rv()});
-        system.add_distance(a, b, 1.5);
-        system.add_anchor(c, {0.3, -0.2}, 0.7);
-        system.add_fixed_point(a, {0.1, 0.2});
-        system.add_curve(b, ImplicitCurve::from_function([](auto x, auto y) { return x * x * y + sin(x) - 0.5 * y * y; }));
-        system.add_curve(c, ImplicitCurve([](Vec2 p) {  // a hand-written ellipse
-            return CurveSample{p.x * p.x / 4 + p.y * p.y - 1, {p.x / 2, 2 * p.y}, 0.5, 0.0, 2.0};
+        const auto a = system.create_particle({.position = rv(), .velocity = rv()});
+        const auto b = system.create_particle({.position = rv() + Vec2{2, 0}, .velocity = rv()});
+        const auto c = system.create_particle({.position = rv() - Vec2{2, 0}, .velocity = rv()});
+        system.create_distance(a, b, 1.5);
+        system.create_anchor(c, {0.3, -0.2}, 0.7);
+        system.create_fixed_point(a, {0.1, 0.2});
+        system.create_implicit(b, ImplicitFunction::from_function([](auto x, auto y) { return x * x * y + sin(x) - 0.5 * y * y; }));
+        system.create_implicit(c, ImplicitFunction([](Vec2 p) {  // a hand-written ellipse
+            return ImplicitSample{p.x * p.x / 4 + p.y * p.y - 1, {p.x / 2, 2 * p.y}, 0.5, 0.0, 2.0};
         }));
         // A user constraint: the signed area of triangle (a, b, c) held constant.
-        system.add_constraint({{a, b, c}, [](std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out) {
+        system.create_constraint({{a, b, c}, [](std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out) {
                                    const Vec2 e1 = x[1] - x[0], e2 = x[2] - x[0];
                                    out.value = 0.5 * cross(e1, e2) - 0.25;
                                    // ∂/∂x1 = ½ perp-ish terms of the cross product
@@ -572,17 +572,17 @@ TEST(Constraints, RedundantConstraintsAreSolvedWithoutNaN) {
         ParticleSystem twice({.solver = {.method = solver}});
         ParticleSystem once({.solver = {.method = solver}});
         for (ParticleSystem* s : {&twice, &once}) {
-            const auto a = s->add_particle({.position = {1, 0}});
-            const auto b = s->add_particle({.position = {2, 0}});
+            const auto a = s->create_particle({.position = {1, 0}});
+            const auto b = s->create_particle({.position = {2, 0}});
             s->add_gravity({0, 9.81});
-            s->add_anchor(a, {0, 0}, 1.0);
-            s->add_distance(a, b, 1.0);
+            s->create_anchor(a, {0, 0}, 1.0);
+            s->create_distance(a, b, 1.0);
             if (s == &twice) {
-                s->add_distance(b, a, 1.0);
-                s->add_anchor(a, {0, 0}, 1.0);
+                s->create_distance(b, a, 1.0);
+                s->create_anchor(a, {0, 0}, 1.0);
             }
         }
-        StepReport report;
+        StepStats report;
         for (int i = 0; i < 120; ++i) {
             report = twice.step(1.0 / 240);
             once.step(1.0 / 240);
@@ -603,11 +603,11 @@ TEST(Constraints, LargeRedundantChainFallsBackToConjugateGradient) {
     // zero pivot and its conjugate-gradient fallback solves the consistent singular system.
     auto once = chain(300, 1.0, 9.81, {.drift = {.method = DriftControl::none}});
     ParticleSystem twice({.drift = {.method = DriftControl::none}});
-    twice.add_particle({.mass = std::numeric_limits<double>::infinity()});
+    twice.create_particle({.mass = std::numeric_limits<double>::infinity()});
     for (std::uint32_t k = 1; k <= 300; ++k) {
-        twice.add_particle({.position = {static_cast<double>(k), 0.0}});
-        twice.add_distance({k - 1}, {k}, 1.0);
-        twice.add_distance({k}, {k - 1}, 1.0);  // the same link again, next to it: still banded
+        twice.create_particle({.position = {static_cast<double>(k), 0.0}});
+        twice.create_distance({k - 1}, {k}, 1.0);
+        twice.create_distance({k}, {k - 1}, 1.0);  // the same link again, next to it: still banded
     }
     twice.add_gravity({0, 9.81});
     for (int i = 0; i < 30; ++i) {  // swing a little so the velocity terms matter
@@ -632,11 +632,11 @@ TEST(Constraints, FixedPointAndUserCircleBehaveLikeTheirBuiltInEquivalents) {
     // exactly the anchor constraint's motion.
     ParticleSystem anchor, user;
     for (ParticleSystem* s : {&anchor, &user}) {
-        const auto p = s->add_particle({.position = {0.6, 0.8}, .velocity = {-1, 0.75}});
+        const auto p = s->create_particle({.position = {0.6, 0.8}, .velocity = {-1, 0.75}});
         s->add_gravity({0, 9.81});
-        if (s == &anchor) s->add_anchor(p, {0, 0}, 1.0);
+        if (s == &anchor) s->create_anchor(p, {0, 0}, 1.0);
         else
-            s->add_constraint({{p}, [](std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out) {
+            s->create_constraint({{p}, [](std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out) {
                                    out.value = 0.5 * (dot(x[0], x[0]) - 1.0);
                                    out.jacobian[0] = x[0];
                                    out.jdot_v = dot(v[0], v[0]);
@@ -649,11 +649,11 @@ TEST(Constraints, FixedPointAndUserCircleBehaveLikeTheirBuiltInEquivalents) {
     EXPECT_EQ(anchor.positions()[0], user.positions()[0]);
     // A fixed point holds against gravity and a spring.
     ParticleSystem fixed;
-    const auto a = fixed.add_particle({.position = {0, 0}});
-    const auto b = fixed.add_particle({.position = {1, 0}});
+    const auto a = fixed.create_particle({.position = {0, 0}});
+    const auto b = fixed.create_particle({.position = {1, 0}});
     fixed.add_gravity({0, 9.81});
     fixed.add_spring(a, b, {.rest_length = 0.5, .stiffness = 50});
-    fixed.add_fixed_point(a, {0, 0});
+    fixed.create_fixed_point(a, {0, 0});
     for (int i = 0; i < 240; ++i) fixed.step(1.0 / 240);
     EXPECT_LT(length(fixed.positions()[0]), 1e-9);
     EXPECT_GT(length(fixed.positions()[1] - Vec2{1, 0}), 0.1);
@@ -665,8 +665,8 @@ TEST(Constraints, FixedPointAndUserCircleBehaveLikeTheirBuiltInEquivalents) {
 
 TEST(Forces, SpringAndGravityConserveEnergyDragDissipates) {
     ParticleSystem system({.integrator = Integrator::rk4});
-    const auto a = system.add_particle({.position = {0, 0}, .mass = std::numeric_limits<double>::infinity()});
-    const auto b = system.add_particle({.position = {1.2, 0.3}, .velocity = {0, 1}, .mass = 2.0});
+    const auto a = system.create_particle({.position = {0, 0}, .mass = std::numeric_limits<double>::infinity()});
+    const auto b = system.create_particle({.position = {1.2, 0.3}, .velocity = {0, 1}, .mass = 2.0});
     system.add_gravity({0, 9.81});
     system.add_spring(a, b, {.rest_length = 1.0, .stiffness = 40.0});
     const double e0 = system.energy();
@@ -685,7 +685,7 @@ TEST(Forces, SpringAndGravityConserveEnergyDragDissipates) {
 
 TEST(Forces, ExertedForceLastsOneStepAndUserForcesSeeAccumulatedForces) {
     ParticleSystem system({.integrator = Integrator::euler});
-    const auto p = system.add_particle({.position = {0, 0}, .mass = 2.0});
+    const auto p = system.create_particle({.position = {0, 0}, .mass = 2.0});
     system.add_gravity({0, 10});
     Vec2 seen{};
     system.add_force([&seen](const ForceContext& c) { seen = c.forces[0]; });
@@ -699,10 +699,10 @@ TEST(Forces, ExertedForceLastsOneStepAndUserForcesSeeAccumulatedForces) {
 
 TEST(Forces, PinnedParticlesNeverMove) {
     ParticleSystem system;
-    const auto pin = system.add_particle({.position = {3, 4}, .velocity = {5, 5}, .mass = std::numeric_limits<double>::infinity()});
-    const auto bob = system.add_particle({.position = {4, 4}});
+    const auto pin = system.create_particle({.position = {3, 4}, .velocity = {5, 5}, .mass = std::numeric_limits<double>::infinity()});
+    const auto bob = system.create_particle({.position = {4, 4}});
     system.add_gravity({0, 9.81});
-    system.add_distance(pin, bob);
+    system.create_distance(pin, bob);
     system.exert_force(pin, {100, 100});
     for (int i = 0; i < 60; ++i) system.step(1.0 / 60);
     EXPECT_EQ(system.position(pin), (Vec2{3, 4}));
@@ -716,7 +716,7 @@ TEST(Forces, PinnedParticlesNeverMove) {
 // ---------------------------------------------------------------------------------------
 
 TEST(Bead, StartsWithTheRequestedSpeedAndConservesEnergy) {
-    Bead bead(ParametricCurve(seed_parabola_frame), {.u = -120, .speed = 300, .gravity = {0, 500}, .integrator = Integrator::rk45});
+    Bead bead(ParametricFunction(seed_parabola_frame), {.u = -120, .speed = 300, .gravity = {0, 500}, .integrator = Integrator::rk45});
     EXPECT_NEAR(bead.speed(), 300, 1e-12);
     EXPECT_NEAR(length(bead.velocity()), 300, 1e-12);
     const double e0 = bead.energy();
@@ -870,22 +870,22 @@ TEST(BeadOnPath, ClosedPathsWrapAround) {
 
 TEST(Errors, BadInputsAreRejectedWithClearMessages) {
     ParticleSystem system;
-    const auto a = system.add_particle({});
+    const auto a = system.create_particle({});
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    expect_error([&] { system.add_particle({.position = {nan, 0}}); }, "add_particle: position must be finite");
-    expect_error([&] { system.add_particle({.velocity = {0, INFINITY}}); }, "add_particle: velocity must be finite");
-    expect_error([&] { system.add_particle({.mass = 0}); }, "add_particle: mass must be positive");
-    expect_error([&] { system.add_particle({.mass = -1}); }, "(got -1)");
-    expect_error([&] { system.add_distance(a, {7}); }, "add_distance: particle 7 does not exist");
-    expect_error([&] { system.add_distance(a, a, 1); }, "add_distance: a and b must be different");
-    const auto b = system.add_particle({.position = {1, 0}});
-    expect_error([&] { system.add_distance(a, b, 0); }, "add_distance: length must be positive");
-    expect_error([&] { system.add_anchor(a, {0, 0}, -2); }, "add_anchor: length must be positive and finite (got -2)");
-    expect_error([&] { system.add_anchor(a, {nan, 0}, 1); }, "add_anchor: anchor must be finite");
-    expect_error([&] { system.add_fixed_point(a, {0, nan}); }, "add_fixed_point: point must be finite");
-    expect_error([&] { system.add_constraint({}); }, "add_constraint: particles must not be empty");
-    expect_error([&] { system.add_constraint({{a}, {}}); }, "add_constraint: evaluate must be a callable");
-    expect_error([&] { system.add_constraint({{{9}}, {}}); }, "add_constraint: particle 9 does not exist");
+    expect_error([&] { system.create_particle({.position = {nan, 0}}); }, "create_particle: position must be finite");
+    expect_error([&] { system.create_particle({.velocity = {0, INFINITY}}); }, "create_particle: velocity must be finite");
+    expect_error([&] { system.create_particle({.mass = 0}); }, "create_particle: mass must be positive");
+    expect_error([&] { system.create_particle({.mass = -1}); }, "(got -1)");
+    expect_error([&] { system.create_distance(a, {7}); }, "create_distance: particle 7 does not exist");
+    expect_error([&] { system.create_distance(a, a, 1); }, "create_distance: a and b must be different");
+    const auto b = system.create_particle({.position = {1, 0}});
+    expect_error([&] { system.create_distance(a, b, 0); }, "create_distance: length must be positive");
+    expect_error([&] { system.create_anchor(a, {0, 0}, -2); }, "create_anchor: length must be positive and finite (got -2)");
+    expect_error([&] { system.create_anchor(a, {nan, 0}, 1); }, "create_anchor: anchor must be finite");
+    expect_error([&] { system.create_fixed_point(a, {0, nan}); }, "create_fixed_point: point must be finite");
+    expect_error([&] { system.create_constraint({}); }, "create_constraint: particles must not be empty");
+    expect_error([&] { system.create_constraint({{a}, {}}); }, "create_constraint: evaluate must be a callable");
+    expect_error([&] { system.create_constraint({{{9}}, {}}); }, "create_constraint: particle 9 does not exist");
     expect_error([&] { system.add_gravity({nan, 0}); }, "add_gravity: g must be finite");
     expect_error([&] { system.add_drag(-1); }, "add_drag: k must be finite and ≥ 0 (got -1)");
     expect_error([&] { system.add_spring(a, b, {.stiffness = -3}); }, "add_spring: stiffness must be finite and ≥ 0");
@@ -903,7 +903,7 @@ TEST(Errors, BadInputsAreRejectedWithClearMessages) {
         std::vector<Vec2> too_few(1);
         system.evaluate(too_few);
     }, "evaluate: accelerations must hold one entry per particle (got 1 for 2)");
-    expect_error([&] { ImplicitCurve(std::function<CurveSample(Vec2)>{}); }, "ImplicitCurve: evaluate must be a callable");
+    expect_error([&] { ImplicitFunction(std::function<ImplicitSample(Vec2)>{}); }, "ImplicitFunction: evaluate must be a callable");
     expect_error([] { ParticleSystem({.drift = {.omega_dt = 0}}); }, "DriftDef: omega_dt must be positive and finite (got 0)");
     expect_error([] { ParticleSystem({.drift = {.stiffness = -1.0}}); }, "DriftDef: stiffness must be finite and ≥ 0");
     expect_error([] { ParticleSystem({.drift = {.damping = -1.0}}); }, "DriftDef: damping");
@@ -917,8 +917,8 @@ TEST(Errors, BadInputsAreRejectedWithClearMessages) {
     expect_error([] { parse_integrator("leapfrog"); }, "integrator: unknown name 'leapfrog'");
     expect_error([] { parse_drift_control("magic"); }, "drift control: unknown name 'magic'");
     expect_error([] { parse_parabola_method("lagrange"); }, "method: unknown name 'lagrange'");
-    expect_error([] { Bead(ParametricCurve{}, {}); }, "Bead: curve must be a callable");
-    const ParametricCurve line = [](double u) { return CurveFrame{{u, 0}, {1, 0}, {0, 0}}; };
+    expect_error([] { Bead(ParametricFunction{}, {}); }, "Bead: curve must be a callable");
+    const ParametricFunction line = [](double u) { return ParametricSample{{u, 0}, {1, 0}, {0, 0}}; };
     expect_error([&] { Bead(line, {.mass = 0}); }, "BeadDef: mass must be positive and finite (got 0)");
     expect_error([&] { Bead(line, {.u = nan}); }, "BeadDef: u must be finite");
     expect_error([&] { Bead(line, {.speed = INFINITY}); }, "BeadDef: speed must be finite");
@@ -963,33 +963,33 @@ TEST(DegenerateConstraints, APendulumStartingAtItsAnchorIsRefused) {
     // under Baumgarte feedback (−ks·C with C = −½L²) the particle was flung to |y| ~ 1e152
     // within 40 steps while every step reported ok.
     ParticleSystem system;
-    const auto bob = system.add_particle({.position = {0, 0}});
+    const auto bob = system.create_particle({.position = {0, 0}});
     system.add_gravity({0, 500});
-    expect_error([&] { system.add_anchor(bob, {0, 0}, 100); }, "add_anchor: particle 0 sits at the anchor");
-    const auto other = system.add_particle({.position = {0, 0}});
-    expect_error([&] { system.add_distance(bob, other, 10); }, "add_distance: particles 0 and 1 are at the same point");
+    expect_error([&] { system.create_anchor(bob, {0, 0}, 100); }, "create_anchor: particle 0 sits at the anchor");
+    const auto other = system.create_particle({.position = {0, 0}});
+    expect_error([&] { system.create_distance(bob, other, 10); }, "create_distance: particles 0 and 1 are at the same point");
     // Moved onto its anchor later: the step refuses, naming the constraint, and changes nothing.
     ParticleSystem moved;
-    const auto p = moved.add_particle({.position = {100, 0}});
+    const auto p = moved.create_particle({.position = {100, 0}});
     moved.add_gravity({0, 500});
-    moved.add_anchor(p, {0, 0}, 100);
+    moved.create_anchor(p, {0, 0}, 100);
     moved.set_position(p, {0, 0});
     expect_error([&] { moved.step(1.0 / 60); }, "step: constraint 0 (anchor) has a zero gradient");
     EXPECT_EQ(moved.position(p), (Vec2{0, 0}));
     EXPECT_EQ(moved.time(), 0.0);
 }
 
-TEST(DegenerateConstraints, AParticleAtTheCentreOfAnImplicitCircleIsRefused) {
-    // C = x² + y² − 100²: ∇C = 2(x, y) vanishes at the centre (conjugate gradient flung the
+TEST(DegenerateConstraints, AParticleAtTheCenterOfAnImplicitCircleIsRefused) {
+    // C = x² + y² − 100²: ∇C = 2(x, y) vanishes at the center (conjugate gradient flung the
     // particle to 1e152 from there, reporting ok).
     ParticleSystem system({.solver = {.method = LinearSolver::conjugate_gradient}});
-    const auto p = system.add_particle({.position = {0, 0}});
+    const auto p = system.create_particle({.position = {0, 0}});
     system.add_gravity({0, 500});
-    const auto circle = ImplicitCurve::from_function([](auto x, auto y) { return x * x + y * y - 10000.0; });
-    expect_error([&] { system.add_curve(p, circle); }, "add_curve: the curve's gradient is zero at particle 0");
+    const auto circle = ImplicitFunction::from_function([](auto x, auto y) { return x * x + y * y - 10000.0; });
+    expect_error([&] { system.create_implicit(p, circle); }, "create_implicit: the curve's gradient is zero at particle 0");
     // On the circle it runs, and stays on it (|C|/|∇C| small) and finite.
     system.set_position(p, {100, 0});
-    system.add_curve(p, circle);
+    system.create_implicit(p, circle);
     for (int i = 0; i < 40; ++i) EXPECT_EQ(system.step(1.0 / 60).status, SolveStatus::ok);
     EXPECT_NEAR(grape::length(system.position(p)), 100.0, 1.0);  // Baumgarte drift, far below a flung 1e152
 }
@@ -997,8 +997,8 @@ TEST(DegenerateConstraints, AParticleAtTheCentreOfAnImplicitCircleIsRefused) {
 TEST(NonFiniteStates, ADenormalMassIsRefused) {
     // 1/1e-310 = inf: every acceleration was inf·0 = NaN.
     ParticleSystem system;
-    expect_error([&] { system.add_particle({.mass = 1e-310}); }, "add_particle: mass must be at least");
-    EXPECT_NO_THROW(system.add_particle({.mass = 1e-300}));
+    expect_error([&] { system.create_particle({.mass = 1e-310}); }, "create_particle: mass must be at least");
+    EXPECT_NO_THROW(system.create_particle({.mass = 1e-300}));
 }
 
 TEST(NonFiniteStates, Rk45StopsAtOnceAndTheStateStaysAsItWas) {
@@ -1007,11 +1007,11 @@ TEST(NonFiniteStates, Rk45StopsAtOnceAndTheStateStaysAsItWas) {
     for (const Integrator integrator : {Integrator::rk45, Integrator::rk4, Integrator::euler}) {
         SCOPED_TRACE(to_string(integrator));
         ParticleSystem system({.integrator = integrator});
-        const auto p = system.add_particle({.position = {1, 0}, .velocity = {1, 0}});
+        const auto p = system.create_particle({.position = {1, 0}, .velocity = {1, 0}});
         system.add_force([](const ForceContext& c) {
             if (c.positions[0].x > 0.5) c.forces[0].x += std::numeric_limits<double>::quiet_NaN();
         });
-        const StepReport report = system.step(0.01);
+        const StepStats report = system.step(0.01);
         EXPECT_EQ(report.status, SolveStatus::non_finite);
         EXPECT_LE(report.substeps + report.rejected, 1);  // one Dormand–Prince attempt at most
         EXPECT_EQ(system.position(p), (Vec2{1, 0}));
@@ -1023,7 +1023,7 @@ TEST(NonFiniteStates, Rk45StopsAtOnceAndTheStateStaysAsItWas) {
 TEST(NonFiniteStates, AStepThatOverflowsSaysSo) {
     // An acceleration of 1e300 over dt = 1e10 leaves the doubles: the step is not taken.
     ParticleSystem system({.integrator = Integrator::rk4});
-    const auto p = system.add_particle({.position = {1, 2}});
+    const auto p = system.create_particle({.position = {1, 2}});
     system.add_gravity({0, 1e300});
     EXPECT_EQ(system.step(1e10).status, SolveStatus::non_finite);
     EXPECT_EQ(system.position(p), (Vec2{1, 2}));

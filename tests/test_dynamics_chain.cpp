@@ -41,7 +41,7 @@ TEST(Chain, CatalogueChainRunsAtSixtyHertzAsGiven) {
         double worst = 0.0;
         int most = 0;
         for (int frame = 0; frame < 600; ++frame) {
-            const StepReport report = system.step(1.0 / 60);
+            const StepStats report = system.step(1.0 / 60);
             ASSERT_EQ(report.status, SolveStatus::ok) << links << " links, frame " << frame;
             worst = std::max(worst, chain_link_error(system, 1.0));
             most = std::max(most, report.substeps);
@@ -158,12 +158,12 @@ TEST(Rattle, EnergyStaysBoundedOverManyPeriods) {
 TEST(Rattle, UserFixedPointAndCurveConstraints) {
     ParticleSystem anchor({.integrator = Integrator::rattle}), user({.integrator = Integrator::rattle});
     for (ParticleSystem* s : {&anchor, &user}) {
-        const auto p = s->add_particle({.position = {0.6, 0.8}, .velocity = {-1, 0.75}});
+        const auto p = s->create_particle({.position = {0.6, 0.8}, .velocity = {-1, 0.75}});
         s->add_gravity({0, 9.81});
         if (s == &anchor) {
-            s->add_anchor(p, {0, 0}, 1.0);
+            s->create_anchor(p, {0, 0}, 1.0);
         } else {
-            s->add_constraint({{p}, [](std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out) {
+            s->create_constraint({{p}, [](std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out) {
                                    out.value = 0.5 * (dot(x[0], x[0]) - 1.0);
                                    out.jacobian[0] = x[0];
                                    out.jdot_v = dot(v[0], v[0]);
@@ -178,11 +178,11 @@ TEST(Rattle, UserFixedPointAndCurveConstraints) {
     EXPECT_LT(anchor.max_residual().distance, 1e-14);
 
     ParticleSystem fixed({.integrator = Integrator::rattle});
-    const auto a = fixed.add_particle({.position = {0, 0}});
-    const auto b = fixed.add_particle({.position = {1, 0}});
+    const auto a = fixed.create_particle({.position = {0, 0}});
+    const auto b = fixed.create_particle({.position = {1, 0}});
     fixed.add_gravity({0, 9.81});
     fixed.add_spring(a, b, {.rest_length = 0.5, .stiffness = 50});
-    fixed.add_fixed_point(a, {0, 0});
+    fixed.create_fixed_point(a, {0, 0});
     for (int i = 0; i < 240; ++i) fixed.step(1.0 / 240);
     EXPECT_LT(length(fixed.positions()[0]), 1e-15);
     EXPECT_GT(length(fixed.positions()[1] - Vec2{1, 0}), 0.1);
@@ -215,7 +215,7 @@ TEST(Rattle, SetPositionBetweenStepsIsHonoured) {
 TEST(Substeps, LandOnTheFrameAndRespectTheirCap) {
     auto system = chain(200, 0.02, 9.81, {.integrator = Integrator::rattle, .substeps = {.automatic = true}}, 0.0);
     system.step(1.0 / 60);  // the first step has no multipliers yet: one sub-step
-    const StepReport report = system.step(1.0 / 60);
+    const StepStats report = system.step(1.0 / 60);
     // Hanging: ω = √(2·399·9.81/0.02) ≈ 626 rad/s, so ω·dt ≈ 10.4 at 60 Hz: 11 sub-steps.
     EXPECT_EQ(report.substeps, 11);
     EXPECT_DOUBLE_EQ(system.time(), 2.0 / 60);
@@ -259,7 +259,7 @@ TEST(Cloth, StripStartsWithEveryLinkAtItsLengthAndHolds) {
 // ~1e-12 of it (error ~ (ωh)⁴·d); 1e-9 of d leaves room for round-off of the exponential.
 TEST(Grab, CriticallyDampedApproachMatchesTheClosedForm) {
     ParticleSystem system({.integrator = Integrator::rk4});
-    const ParticleId p = system.add_particle({.position = {1.0, 0.0}, .mass = 2.0});
+    const ParticleId p = system.create_particle({.position = {1.0, 0.0}, .mass = 2.0});
     const double hertz = 2.0, omega = 2.0 * pi * hertz;
     system.grab(p, {0.0, 0.0}, {.hertz = hertz});
     ASSERT_EQ(system.grabbed(), std::optional<ParticleId>(p));
@@ -280,7 +280,7 @@ TEST(Grab, CriticallyDampedApproachMatchesTheClosedForm) {
 // and k is part of the stiffness bound: ω_p = √(k/m).
 TEST(Grab, TunedMassCapAndStiffness) {
     ParticleSystem system;
-    const ParticleId p = system.add_particle({.position = {3.0, 4.0}});
+    const ParticleId p = system.create_particle({.position = {3.0, 4.0}});
     const double omega = 2.0 * pi * 5.0;
     system.grab(p, {0.0, 0.0}, {.hertz = 5.0, .damping_ratio = 0.0, .mass = 100.0});
     std::vector<Vec2> a(1);

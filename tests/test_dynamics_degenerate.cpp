@@ -1,5 +1,5 @@
 // Constraints near their degenerate points: a pendulum started next to its anchor, a bead near
-// the centre of an implicit circle, Baumgarte gains beyond what a step can carry. Every state
+// the center of an implicit circle, Baumgarte gains beyond what a step can carry. Every state
 // must stay finite and bounded, and a step whose constraint could not be trusted says so.
 #include <grape/dynamics.hpp>
 
@@ -39,13 +39,13 @@ TEST(NearAnchor, EveryIntegratorAndDriftControlStaysFiniteAndBoundedAndSaysSo) {
                 const double start = std::pow(10.0, -e);
                 SCOPED_TRACE(name(integrator, drift, start));
                 ParticleSystem system({.integrator = integrator, .drift = {.method = drift}});
-                const auto bob = system.add_particle({.position = {start, 0}});
+                const auto bob = system.create_particle({.position = {start, 0}});
                 system.add_gravity({0, g});
-                system.add_anchor(bob, {0, 0}, rod);
+                system.create_anchor(bob, {0, 0}, rod);
                 double farthest = 0.0;
                 for (int k = 0; k < 600; ++k) {
                     const double r = length(system.position(bob));
-                    const StepReport report = system.step(dt);
+                    const StepStats report = system.step(dt);
                     ASSERT_NE(report.status, SolveStatus::non_finite) << "step " << k;
                     ASSERT_TRUE(finite(system.position(bob)) && finite(system.velocity(bob))) << "step " << k;
                     // A step that starts where the rod cannot be trusted is not ok: without
@@ -85,10 +85,10 @@ TEST(NearAnchor, ARodBetweenTwoParticlesCompressedToAPointRecovers) {
     for (DriftControl drift : all_drift_controls()) {
         SCOPED_TRACE(std::string(to_string(drift)));
         ParticleSystem system({.drift = {.method = drift}});
-        const auto a = system.add_particle({.position = {0, 0}, .mass = std::numeric_limits<double>::infinity()});
-        const auto b = system.add_particle({.position = {1e-9, 0}});
+        const auto a = system.create_particle({.position = {0, 0}, .mass = std::numeric_limits<double>::infinity()});
+        const auto b = system.create_particle({.position = {1e-9, 0}});
         system.add_gravity({0, g});
-        system.add_distance(a, b, 10.0);
+        system.create_distance(a, b, 10.0);
         EXPECT_EQ(system.step(dt).status, SolveStatus::singular);
         for (int k = 0; k < 600; ++k) {
             ASSERT_NE(system.step(dt).status, SolveStatus::non_finite);
@@ -101,11 +101,11 @@ TEST(NearAnchor, ARodBetweenTwoParticlesCompressedToAPointRecovers) {
     }
 }
 
-TEST(NearCentre, AnImplicitCircleSolvedByConjugateGradientStaysFiniteAndBounded) {
+TEST(NearCenter, AnImplicitCircleSolvedByConjugateGradientStaysFiniteAndBounded) {
     // C = x² + y² − R²: ∇C = 2x, H = 2I, κ = |r² − R²|/(2r²), the anchor's. Before, a
-    // particle at the centre was flung to 1e152 with every step ok.
+    // particle at the center was flung to 1e152 with every step ok.
     constexpr double radius = 100.0;
-    const auto circle = ImplicitCurve::from_function([](auto x, auto y) { return x * x + y * y - radius * radius; });
+    const auto circle = ImplicitFunction::from_function([](auto x, auto y) { return x * x + y * y - radius * radius; });
     for (DriftControl drift : all_drift_controls())
         for (Integrator integrator : {Integrator::rk4, Integrator::velocity_verlet, Integrator::rk45, Integrator::rattle})
             for (int e = 1; e <= 15; e += 2) {
@@ -114,9 +114,9 @@ TEST(NearCentre, AnImplicitCircleSolvedByConjugateGradientStaysFiniteAndBounded)
                 ParticleSystem system({.integrator = integrator,
                                        .drift = {.method = drift},
                                        .solver = {.method = LinearSolver::conjugate_gradient}});
-                const auto p = system.add_particle({.position = {0, start}});
+                const auto p = system.create_particle({.position = {0, start}});
                 system.add_gravity({0, g});
-                system.add_curve(p, circle);
+                system.create_implicit(p, circle);
                 EXPECT_EQ(system.step(dt).status, SolveStatus::singular);
                 for (int k = 0; k < 600; ++k) {
                     ASSERT_NE(system.step(dt).status, SolveStatus::non_finite) << "step " << k;
@@ -137,9 +137,9 @@ TEST(BaumgarteGains, FeedbackStrongerThanAStepCanCarryIsHeldAtOmegaDtOneHalf) {
         if (integrator == Integrator::rattle) continue;  // RATTLE has no Baumgarte feedback
         SCOPED_TRACE(std::string(to_string(integrator)));
         ParticleSystem system({.integrator = integrator, .drift = {.stiffness = 1e9}});
-        const auto bob = system.add_particle({.position = {rod + 10.0, 0}});
+        const auto bob = system.create_particle({.position = {rod + 10.0, 0}});
         system.add_gravity({0, g});
-        system.add_anchor(bob, {0, 0}, rod);
+        system.create_anchor(bob, {0, 0}, rod);
         for (int k = 0; k < 300; ++k) {
             ASSERT_EQ(system.step(dt).status, SolveStatus::ok) << "step " << k;
             ASSERT_LT(length(system.position(bob)), rod + 10.0 + 1e-9) << "step " << k;

@@ -242,7 +242,7 @@ TEST(PathLength, LengthAtAgreesWithIndependentQuadrature) {
 
 // --- the seed's examples ---------------------------------------------------------------------
 
-TEST(SeedPaths, SpiralGoesFromRadius200ToTheCentre) {
+TEST(SeedPaths, SpiralGoesFromRadius200ToTheCenter) {
     const auto spiral = grape::scenes::seed_spiral();
     EXPECT_EQ(spiral.point(0.0), (Vec2{300, 100}));
     EXPECT_NEAR(grape::distance(spiral.point(1.0), Vec2{100, 100}), 0.0, 1e-12);
@@ -657,7 +657,7 @@ TEST(PathHandle, DefaultStaysAtTheOriginAndCopiesShare) {
 
 TEST(PathHandle, AccessorsReturnTheInputs) {
     const grape::CirclePath c({1, 2}, 3, 4, 5);
-    EXPECT_EQ(c.centre(), (Vec2{1, 2}));
+    EXPECT_EQ(c.center(), (Vec2{1, 2}));
     EXPECT_EQ(c.radius(), 3);
     EXPECT_EQ(c.start_angle(), 4);
     EXPECT_EQ(c.end_angle(), 5);
@@ -743,7 +743,7 @@ TEST(PathErrors, EveryBadInputNamesTheArgumentAndReason) {
     EXPECT_ERROR(grape::CirclePath({0, 0}, -1, 0, 1), "CirclePath: radius must be positive and finite (got -1)");
     EXPECT_ERROR(grape::CirclePath({0, 0}, 0, 0, 1), "CirclePath: radius must be positive and finite (got 0)");
     EXPECT_ERROR(grape::CirclePath({0, 0}, 1, nan, 1), "CirclePath: start_angle must be finite (got nan)");
-    EXPECT_ERROR(grape::CirclePath({0, nan}, 1, 0, 1), "CirclePath: centre must be finite (got (0, nan))");
+    EXPECT_ERROR(grape::CirclePath({0, nan}, 1, 0, 1), "CirclePath: center must be finite (got (0, nan))");
     EXPECT_ERROR(grape::EllipticalArcPath({0, 0}, 1, 0, 0, 0, 1),
                  "EllipticalArcPath: ry must be positive and finite (got 0)");
     EXPECT_ERROR(grape::EllipticalArcPath({0, 0}, 1, 1, inf, 0, 1), "EllipticalArcPath: rotation must be finite (got inf)");

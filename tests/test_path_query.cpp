@@ -1,6 +1,6 @@
 // Path queries against independent truth: the nearest point against dense sampling refined by
 // golden-section search (which uses point() only), over thousands of random points near, far,
-// on the path, at cusps, at arc centres and inside loops; curvature against closed forms
+// on the path, at cusps, at arc centers and inside loops; curvature against closed forms
 // (circle 1/r, spiral, parabola) and against the turning of heading(u) by finite differences.
 #include <grape/error.hpp>
 #include <grape/path.hpp>
@@ -125,7 +125,7 @@ std::vector<Vec2> query_points(const Path& p, std::mt19937_64& rng, int count) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const grape::Bounds box = p.bounds();
     const double size = std::max(extent(p), 1e-300);
-    const Vec2 centre = 0.5 * (box.min + box.max);
+    const Vec2 center = 0.5 * (box.min + box.max);
     std::vector<Vec2> out;
     for (int i = 0; i < count; ++i) {
         const double u = unit(rng);
@@ -139,7 +139,7 @@ std::vector<Vec2> query_points(const Path& p, std::mt19937_64& rng, int count) {
             case 2: out.push_back(p.point(u)); break;
             default: {
                 const double a = 2.0 * pi * unit(rng);
-                out.push_back(centre + Vec2{std::cos(a), std::sin(a)} * (size * (2.0 + 20.0 * unit(rng))));
+                out.push_back(center + Vec2{std::cos(a), std::sin(a)} * (size * (2.0 + 20.0 * unit(rng))));
             }
         }
     }
@@ -179,27 +179,27 @@ TEST(ClosestPoint, PointsOnThePathAreFoundAtDistanceZero) {
     }
 }
 
-TEST(ClosestPoint, ArcCentreTiesGoToTheStart) {
+TEST(ClosestPoint, ArcCenterTiesGoToTheStart) {
     const grape::CirclePath circle({300, 80}, 50, 0, 1.5 * pi);
     const ClosestPoint c = grape::closest_point(circle, {300, 80});
     EXPECT_EQ(c.u, 0.0);
     EXPECT_DOUBLE_EQ(c.distance, 50.0);
-    // The same inside a complex path of concentric arcs (the seed's circles share no centre;
+    // The same inside a complex path of concentric arcs (the seed's circles share no center;
     // two half circles here do): the first part's start.
     const grape::ComplexPath halves({grape::CirclePath({0, 0}, 10, 0, pi), grape::CirclePath({0, 0}, 10, pi, 2 * pi)},
                                     {0, 0.5});
     const ClosestPoint h = grape::closest_point(halves, {0, 0});
     EXPECT_EQ(h.u, 0.0);
     EXPECT_DOUBLE_EQ(h.distance, 10.0);
-    // Two points tie (the ends of an ellipse's minor axis seen from its centre): smaller u wins.
+    // Two points tie (the ends of an ellipse's minor axis seen from its center): smaller u wins.
     const grape::EllipticalArcPath ellipse({0, 0}, 20, 10, 0, 0, 2 * pi);
     const ClosestPoint e = grape::closest_point(ellipse, {0, 0});
     EXPECT_NEAR(e.u, 0.25, 1e-9);
     EXPECT_NEAR(e.distance, 10.0, 1e-12 * 40);
 }
 
-TEST(ClosestPoint, ArcCentresAndNearCentresAgainstClosedForm) {
-    // The nearest point of a full circle to q is centre + r·(q − c)/|q − c|, at distance |r − |q − c||.
+TEST(ClosestPoint, ArcCentersAndNearCentersAgainstClosedForm) {
+    // The nearest point of a full circle to q is center + r·(q − c)/|q − c|, at distance |r − |q − c||.
     const Vec2 c{5, -3};
     const double r = 2;
     const grape::CirclePath circle(c, r, 0, -5 * pi);
@@ -337,7 +337,7 @@ TEST(Frame, CircleCurvatureIsOneOverRadiusSignedByDirection) {
             EXPECT_NEAR(grape::curvature(ccw, u), 1.0 / r, 1e-14 / r);
             EXPECT_NEAR(grape::curvature(cw, u), -1.0 / r, 1e-14 / r);
             const grape::PathFrame f = grape::frame(ccw, u);
-            // The normal of an increasing-angle circle points to its centre.
+            // The normal of an increasing-angle circle points to its center.
             const Vec2 inward = grape::normalized(Vec2{1, 2} - f.point);
             EXPECT_NEAR(f.normal.x, inward.x, 1e-12);
             EXPECT_NEAR(f.normal.y, inward.y, 1e-12);

@@ -67,7 +67,7 @@ TEST(PathSpec, RoundTripIsBitIdenticalForEveryKind) {
 TEST(PathSpec, DescribeGivesTheConstructorsArguments) {
     const auto circle = grape::path_cast<grape::CircleSpec>(grape::CirclePath({1, 2}, 3, 0.5, 4));
     ASSERT_TRUE(circle);
-    EXPECT_EQ(circle->centre, (Vec2{1, 2}));
+    EXPECT_EQ(circle->center, (Vec2{1, 2}));
     EXPECT_EQ(circle->radius, 3.0);
     EXPECT_EQ(circle->start_angle, 0.5);
     EXPECT_EQ(circle->end_angle, 4.0);
@@ -109,7 +109,7 @@ TEST(PathSpec, DescribeGivesTheConstructorsArguments) {
 
 TEST(PathSpec, FromSpecValidatesLikeTheConstructors) {
     try {
-        (void)grape::from_spec(grape::CircleSpec{.centre = {0, 0}, .radius = -1});
+        (void)grape::from_spec(grape::CircleSpec{.center = {0, 0}, .radius = -1});
         ADD_FAILURE() << "a negative radius was accepted";
     } catch (const grape::Error& e) {
         EXPECT_NE(std::string(e.what()).find("radius"), std::string::npos) << e.what();

@@ -167,14 +167,14 @@ TEST(Fit, MapsBoundsIntoViewportKeepingAspect) {
     b.add(Vec2{-200, -400});
     b.add(Vec2{200, 0});
     const grape::Affine t = grape::fit(b, {10, 20, 300, 500}, 25);
-    // 400 wide, 400 tall into 250 × 450: scale 250/400 limited by width, centred vertically.
+    // 400 wide, 400 tall into 250 × 450: scale 250/400 limited by width, centered vertically.
     const Vec2 lo = t.apply(b.min);
     const Vec2 hi = t.apply(b.max);
     EXPECT_NEAR(lo.x, 35.0, 1e-12);
     EXPECT_NEAR(hi.x, 285.0, 1e-12);
     EXPECT_NEAR(hi.y - lo.y, 250.0, 1e-12);
     EXPECT_NEAR(0.5 * (lo.y + hi.y), 270.0, 1e-12);
-    // A single point maps to the centre without NaN.
+    // A single point maps to the center without NaN.
     grape::Bounds point;
     point.add(Vec2{5, 5});
     const Vec2 c = grape::fit(point, {0, 0, 100, 60}).apply({5, 5});
@@ -245,7 +245,7 @@ TEST(Canvas, BackgroundFillsEveryPixel) {
 }
 
 // A 1-unit stroke covers points within ½ of the circle; a pixel that is more than half
-// covered has its centre within ½ + ½ (its half-diagonal is 0.71 < 1) of the circle.
+// covered has its center within ½ + ½ (its half-diagonal is 0.71 < 1) of the circle.
 TEST(Canvas, StrokedCircleLiesWithinAPixel) {
     const Vec2 c{100.3, 99.6};
     const double r = 61.7;
@@ -342,7 +342,7 @@ TEST(Canvas, StrokeWidthIgnoresTheTransform) {
 
 TEST(Canvas, TextLeavesInkNearItsAnchor) {
     Canvas canvas(200, 60);
-    canvas.text({100, 40}, "grape", {.size = 20, .align = grape::TextAlign::centre});
+    canvas.text({100, 40}, "grape", {.size = 20, .align = grape::TextAlign::center});
     const Image image = canvas.to_image();
     int left = 200, right = 0, ink_pixels = 0;
     for (int y = 0; y < 60; ++y)
@@ -355,7 +355,7 @@ TEST(Canvas, TextLeavesInkNearItsAnchor) {
                 EXPECT_GE(y, 15);  // 20-unit letters rise at most ~20 above the baseline
             }
     ASSERT_GT(ink_pixels, 20);
-    // Centred: the ink's middle is within a few pixels of the anchor (glyph side bearings).
+    // Centered: the ink's middle is within a few pixels of the anchor (glyph side bearings).
     EXPECT_NEAR(0.5 * (left + right), 100.0, 4.0);
 }
 

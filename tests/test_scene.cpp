@@ -36,9 +36,9 @@ const char* const complete_scene = R"json({
   "view": {"width": 800, "height": 600, "ticks": 0.05},
   "paths": [
     {"name": "line", "path": {"kind": "linear", "start": [0, 0], "end": [3, 4]}},
-    {"name": "circle", "path": {"kind": "circle", "centre": [150, 200], "radius": 50, "start_angle": 6.283185307179586, "end_angle": 0}},
-    {"name": "ellipse", "path": {"kind": "elliptical_arc", "centre": [0, 0], "rx": 80, "ry": 30, "rotation": 0.5, "start_angle": 0, "end_angle": 3}},
-    {"name": "spiral", "path": {"kind": "spiral", "centre": [100, 100], "start_radius": 200, "end_radius": 0}},
+    {"name": "circle", "path": {"kind": "circle", "center": [150, 200], "radius": 50, "start_angle": 6.283185307179586, "end_angle": 0}},
+    {"name": "ellipse", "path": {"kind": "elliptical_arc", "center": [0, 0], "rx": 80, "ry": 30, "rotation": 0.5, "start_angle": 0, "end_angle": 3}},
+    {"name": "spiral", "path": {"kind": "spiral", "center": [100, 100], "start_radius": 200, "end_radius": 0}},
     {"name": "sine", "path": {"kind": "sine_wave", "start": [350, 200], "end": [200, 200], "frequency": 3, "amplitude": 50}},
     {"name": "quad", "path": {"kind": "quadratic_bezier", "points": [[0, 0], [50, 100], [100, 0]]}},
     {"name": "bez", "path": {"kind": "cubic_bezier", "points": [[20, 20], [400, 200], [400, 600], [600, 600]], "reparametrize": true}},
@@ -223,15 +223,27 @@ TEST(SceneLoad, SeedScenesMatchTheCatalogue) {
     // The seed's nested example written as JSON gives the catalogue's path exactly.
     const Scene s = grape::load_scene(R"({"paths": [{"name": "nested", "path": {"kind": "complex", "cues": [0, 0.5, 0.75], "parts": [
         {"kind": "complex", "cues": [0, 0.25, 0.5], "parts": [
-            {"kind": "circle", "centre": [150, 200], "radius": 50, "start_angle": 6.283185307179586, "end_angle": 0},
-            {"kind": "circle", "centre": [250, 200], "radius": 50, "start_angle": 3.141592653589793, "end_angle": 9.42477796076938},
-            {"kind": "circle", "centre": [300, 200], "radius": 100, "start_angle": 3.141592653589793, "end_angle": 9.42477796076938}]},
+            {"kind": "circle", "center": [150, 200], "radius": 50, "start_angle": 6.283185307179586, "end_angle": 0},
+            {"kind": "circle", "center": [250, 200], "radius": 50, "start_angle": 3.141592653589793, "end_angle": 9.42477796076938},
+            {"kind": "circle", "center": [300, 200], "radius": 100, "start_angle": 3.141592653589793, "end_angle": 9.42477796076938}]},
         {"kind": "cubic_bezier", "points": [[200, 200], [350, 0], [350, 500], [350, 200]]},
         {"kind": "sine_wave", "start": [350, 200], "end": [200, 200], "frequency": 3, "amplitude": 50}]}}]})");
     expect_same_path(s.paths[0].path, grape::scenes::seed_nested_complex(), "seed nested complex");
 }
 
 // ------------------------------------------------------------------------------ round trip
+
+TEST(SceneLoad, TheOlderSpellingCentreReadsAsCenter) {
+    const auto path_of = [](const char* key) {
+        const std::string text = std::string(R"({"paths": [{"name": "s", "path": {"kind": "spiral", ")") + key +
+                                 R"(": [3, 4], "start_radius": 10, "end_radius": 2, "end_angle": 7}}]})";
+        return grape::load_scene(text).find_path("s")->path;
+    };
+    const grape::Path older = path_of("centre"), newer = path_of("center");
+    for (int k = 0; k <= 16; ++k) EXPECT_EQ(older.point(k / 16.0), newer.point(k / 16.0)) << k;
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "center": [0, 0], "centre": [0, 0], "radius": 1}}]})",
+                 "/paths/0/path/centre", "give \"center\" only");
+}
 
 TEST(SceneRoundTrip, SaveThenLoadGivesTheSameObjects) {
     const Scene first = grape::load_scene(complete_scene);
@@ -423,14 +435,14 @@ TEST(SceneErrors, NameThePointerAndTheReason) {
     expect_error(R"({"animations": [{"path": "nowhere", "duration": 1}]})", "/animations/0/path", "unknown path \"nowhere\"");
     expect_error(R"({"animations": [{"path": {"kind": "teleport"}, "duration": 1}]})", "/animations/0/path/kind",
                  "unknown path kind \"teleport\"");
-    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "centre": [0, 0]}}]})", "/paths/0/path",
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "center": [0, 0]}}]})", "/paths/0/path",
                  "missing field \"radius\"");
-    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "centre": [0], "radius": 1}}]})",
-                 "/paths/0/path/centre", "expected a point [x, y]");
-    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "centre": [0, "x"], "radius": 1}}]})",
-                 "/paths/0/path/centre/1", "expected a number, got a string");
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "center": [0], "radius": 1}}]})",
+                 "/paths/0/path/center", "expected a point [x, y]");
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "center": [0, "x"], "radius": 1}}]})",
+                 "/paths/0/path/center/1", "expected a number, got a string");
     // A path constructor's own message, placed at its object.
-    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "centre": [0, 0], "radius": -1}}]})",
+    expect_error(R"({"paths": [{"name": "c", "path": {"kind": "circle", "center": [0, 0], "radius": -1}}]})",
                  "/paths/0/path", "radius");
     expect_error(R"({"paths": [{"name": "s", "path": {"kind": "linear_spline", "points": [[0, 0]]}}]})",
                  "/paths/0/path/points", "too few points: 1 (at least 2)");
@@ -788,7 +800,7 @@ TEST(SceneSlices, AreTheLibrarysExactSlices) {
     const Scene even = one_path("{" + bez + R"(, "reparametrize": true, "slice": [0.5, 1]})");
     expect_same_path(only_path(even), grape::slice(whole.reparametrized(), 0.5, 1.0), "sliced reparametrized Bézier");
     // A complex path slices part by part; a named path can be sliced through a complex wrapper.
-    const Scene circle = one_path(R"({"kind": "circle", "centre": [0, 0], "radius": 50, "slice": [0, 0.5]})");
+    const Scene circle = one_path(R"({"kind": "circle", "center": [0, 0], "radius": 50, "slice": [0, 0.5]})");
     EXPECT_NEAR(only_path(circle).length(), grape::pi * 50, 1e-12 * 50);  // half the circle, closed form
     EXPECT_NEAR(only_path(circle).point(1.0).x, -50.0, 1e-12 * 50);
 }
@@ -809,7 +821,7 @@ TEST(SceneSlices, Errors) {
 TEST(SceneAnimation, RangeAndOffset) {
     const Scene scene = grape::load_scene(R"({"animations": [
         {"path": {"kind": "linear", "start": [0, 0], "end": [100, 0]}, "duration": 2, "range": [0.8, 0.2], "offset": 5},
-        {"path": {"kind": "circle", "centre": [0, 0], "radius": 50}, "duration": 1, "repeat": -1, "offset": 10}]})");
+        {"path": {"kind": "circle", "center": [0, 0], "radius": 50}, "duration": 1, "repeat": -1, "offset": 10}]})");
     const grape::SceneAnimation& lane = scene.animations[0];
     // Linear curve on a straight line: u = 0.8 − 0.6·t/2, the normal of +x is +y (y down).
     EXPECT_EQ(lane.position(0.0), (Vec2{80, 5}));

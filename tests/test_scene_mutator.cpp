@@ -57,9 +57,9 @@ const char* const every_field = R"json({
     {"name": "herm", "path": {"kind": "hermite_spline", "closed": true, "points": [[0, 0], [50, 10], [20, 60]], "tangents": [[10, 0], [0, 10], [-10, 0]]}},
     {"name": "cos", "path": {"kind": "cosine_spline", "closed": true, "points": [[0, 0], [50, 10], [20, 60]]}},
     {"name": "cut", "path": {"kind": "cubic_bezier", "points": [[0, 0], [10, 50], [60, 50], [80, 0]], "slice": [0.25, 0.75], "reparametrize": true}},
-    {"name": "arc", "path": {"kind": "elliptical_arc", "centre": [0, 0], "rx": 40, "ry": 20, "rotation": 0.3, "slice": [0.1, 0.9]}},
+    {"name": "arc", "path": {"kind": "elliptical_arc", "center": [0, 0], "rx": 40, "ry": 20, "rotation": 0.3, "slice": [0.1, 0.9]}},
     {"name": "svg", "path": {"kind": "svg", "data": "M0 0 C 10 20 30 20 40 0 A 20 20 0 1 1 0 0 Z"}},
-    {"name": "all", "path": {"kind": "complex", "parts": ["loop", "cut", {"kind": "spiral", "centre": [0, 0], "start_radius": 5, "end_radius": 50}], "cues": [0, 0.5, 0.75]}}
+    {"name": "all", "path": {"kind": "complex", "parts": ["loop", "cut", {"kind": "spiral", "center": [0, 0], "start_radius": 5, "end_radius": 50}], "cues": [0, 0.5, 0.75]}}
   ],
   "curves": [{"name": "soft", "curve": "cubic-bezier(0.25,0.1,0.25,1)"}],
   "animations": [
@@ -236,7 +236,7 @@ void exercise(const grape::Scene& scene, const std::string& text) {
         try {
             grape::ParticleSystem system = grape::make_particle_system(s);
             for (int k = 0; k < 3; ++k) {
-                const grape::StepReport report = system.step(s.dt);
+                const grape::StepStats report = system.step(s.dt);
                 // A step that reports ok leaves the state finite.
                 if (report.status != grape::SolveStatus::ok) continue;
                 for (grape::Vec2 p : system.positions()) {

@@ -36,9 +36,9 @@ void expect_offsets(const std::vector<double>& got, const std::vector<double>& w
 TEST(Stagger, RowsFollowGsapsRule) {
     expect_offsets(stagger_offsets(5, {.each = 0.1}), {0.0, 0.1, 0.2, 0.3, 0.4}, "start");
     expect_offsets(stagger_offsets(5, {.each = 0.1, .from = StaggerFrom::end}), {0.4, 0.3, 0.2, 0.1, 0.0}, "end");
-    // Centre of 5 at item 2: distances 2 1 0 1 2, spread 0.4.
+    // Center of 5 at item 2: distances 2 1 0 1 2, spread 0.4.
     expect_offsets(stagger_offsets(5, {.each = 0.1, .from = StaggerFrom::center}), {0.4, 0.2, 0.0, 0.2, 0.4}, "center 5");
-    // Centre of 4 at 1.5: distances 1.5 .5 .5 1.5 (range 1), spread 0.3.
+    // Center of 4 at 1.5: distances 1.5 .5 .5 1.5 (range 1), spread 0.3.
     expect_offsets(stagger_offsets(4, {.each = 0.1, .from = StaggerFrom::center}), {0.3, 0.0, 0.0, 0.3}, "center 4");
     // Edges: the same distances, the outermost first.
     expect_offsets(stagger_offsets(5, {.each = 0.1, .from = StaggerFrom::edges}), {0.0, 0.2, 0.4, 0.2, 0.0}, "edges");
@@ -52,7 +52,7 @@ TEST(Stagger, RowsFollowGsapsRule) {
 
 // A grid of C columns: item j at (j % C, j / C). GSAP's each-spread is each × max(C, n / C).
 TEST(Stagger, GridsMeasureDistanceInTwoDimensions) {
-    // 3 × 3 from the centre (1, 1): corners √2 away, edges 1, the middle 0; spread 0.3.
+    // 3 × 3 from the center (1, 1): corners √2 away, edges 1, the middle 0; spread 0.3.
     const double corner = 0.3;
     const double edge = 0.3 / std::sqrt(2.0);
     expect_offsets(stagger_offsets(9, {.each = 0.1, .from = StaggerFrom::center, .grid = {.columns = 3, .rows = 3}}),
@@ -93,7 +93,7 @@ TEST(Stagger, TheCurveDistributesTheOffsets) {
                    "quad edges");
 }
 
-// From the centre (and edges) the offsets mirror exactly: the distances are |j − (n−1)/2|,
+// From the center (and edges) the offsets mirror exactly: the distances are |j − (n−1)/2|,
 // equal in floating point for j and n − 1 − j; on a full grid, the point mirror.
 TEST(Stagger, CenterAndEdgesAreMirrorSymmetric) {
     for (std::size_t n = 1; n <= 40; ++n) {

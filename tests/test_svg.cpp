@@ -142,21 +142,21 @@ TEST(Svg, NegativeRadiiUseTheirMagnitude) {
 }
 
 TEST(Svg, ArcFlagsPickTheFourArcs) {
-    // Radius 1 from (0,0) to (1,1): centres (1,0) and (0,1); quarter or three-quarter turns.
+    // Radius 1 from (0,0) to (1,1): centers (1,0) and (0,1); quarter or three-quarter turns.
     const double quarter = 0.5 * pi;
     expect_length("M0 0 A 1 1 0 0 0 1 1", quarter);
     expect_length("M0 0 A 1 1 0 0 1 1 1", quarter);
     expect_length("M0 0 A 1 1 0 1 0 1 1", 3.0 * quarter);
     expect_length("M0 0 A 1 1 0 1 1 1 1", 3.0 * quarter);
-    // Small arc, sweep 0 (counter-clockwise on screen) goes round the centre (1, 0);
-    // sweep 1 round (0, 1). Their midpoints lie on the circles, 1/√2 off each centre.
+    // Small arc, sweep 0 (counter-clockwise on screen) goes round the center (1, 0);
+    // sweep 1 round (0, 1). Their midpoints lie on the circles, 1/√2 off each center.
     const double h = 1.0 - std::sqrt(0.5);
     expect_near(parse_svg_path("M0 0 A 1 1 0 0 0 1 1").point(0.5), {h, 1.0 - h}, 1e-15 * 8);
     expect_near(parse_svg_path("M0 0 A 1 1 0 0 1 1 1").point(0.5), {1.0 - h, h}, 1e-15 * 8);
 }
 
 // The frame where an ellipse (rx, ry, turned by φ) is a circle of radius rx: turn by −φ, then
-// stretch y by rx/ry. There the arc's centre can be found geometrically, independently of the
+// stretch y by rx/ry. There the arc's center can be found geometrically, independently of the
 // SVG notes' formulas: on the chord's bisector, √(r² − (d/2)²) away from it.
 struct CircleFrame {
     double c = 1.0, s = 0.0, stretch = 1.0;
@@ -172,7 +172,7 @@ TEST(Svg, ArcsHitTheirEndpointsAndLieOnTheirEllipses) {
     ASSERT_EQ(path.parts().size(), 9u);
     const std::vector<Vec2> corners{{600, 350}, {650, 325}, {700, 300}, {750, 275}, {800, 250},
                                     {850, 225}, {900, 200}, {950, 175}, {1000, 150}, {1050, 125}};
-    // Coordinates near 1000: 16 ulp of 1000 covers the rounding of the centre and the angles.
+    // Coordinates near 1000: 16 ulp of 1000 covers the rounding of the center and the angles.
     const double tolerance = 16 * eps * 1000.0;
     for (std::size_t i = 0; i < path.parts().size(); ++i) {
         SCOPED_TRACE(i);
@@ -194,14 +194,14 @@ TEST(Svg, ArcsHitTheirEndpointsAndLieOnTheirEllipses) {
         const double r = std::max(rx, half);  // F.6.6's scale-up
         const Vec2 n = grape::perpendicular(grape::normalized(q2 - q1));
         const double h = std::sqrt(std::max(0.0, r * r - half * half));
-        Vec2 centre = 0.5 * (q1 + q2) + h * n;
-        if (grape::cross(q1 - centre, q2 - centre) < 0.0) centre = 0.5 * (q1 + q2) - h * n;
+        Vec2 center = 0.5 * (q1 + q2) + h * n;
+        if (grape::cross(q1 - center, q2 - center) < 0.0) center = 0.5 * (q1 + q2) - h * n;
         for (int j = 0; j <= 20; ++j) {
             const double u = j / 20.0;
             const Vec2 q = frame.to_circle(part.point(u));
-            EXPECT_NEAR(grape::distance(q, centre), r, tolerance);
-            // Sweep 1: the angle about the centre increases (clockwise on screen, y down).
-            EXPECT_GT(grape::cross(q - centre, frame.to_circle(part.point(u) + part.d1(u)) - frame.to_circle(part.point(u))), 0.0);
+            EXPECT_NEAR(grape::distance(q, center), r, tolerance);
+            // Sweep 1: the angle about the center increases (clockwise on screen, y down).
+            EXPECT_GT(grape::cross(q - center, frame.to_circle(part.point(u) + part.d1(u)) - frame.to_circle(part.point(u))), 0.0);
         }
     }
 }
@@ -500,7 +500,7 @@ TEST(Svg, RandomValidDataParsesIntoContinuousSubpaths) {
         ASSERT_EQ(path.parts().size(), expected.starts.size());
         ASSERT_TRUE(std::isfinite(path.length()));
         // Coordinates ≤ 200 and arcs scaled up to at most their chord: a few hundred ulp of
-        // 1000 bounds the rounding of the arcs' centres and angles.
+        // 1000 bounds the rounding of the arcs' centers and angles.
         const double tolerance = 256 * eps * 1000.0;
         for (std::size_t i = 0; i < path.parts().size(); ++i) {
             const Path& part = path.parts()[i];
@@ -522,7 +522,7 @@ TEST(Svg, RandomValidDataParsesIntoContinuousSubpaths) {
 // the arc is x = rx·sin t, y = ry·(1 − cos t)-like around the top, t in [−t0, t0] with
 // sin t0 = 11/rx; composite Simpson over 4000 intervals of this smooth speed is good to ~1e-15
 // relative. The speed itself is only known to ~5e-13 relative (cancellation in the arc's
-// centre, 1e8 away), hence 1e-12.
+// center, 1e8 away), hence 1e-12.
 TEST(Svg, HugeFlatEllipseArcParsesQuickly) {
     const ComplexPath p = parse_svg_path("M0 0 A 25625 100000000 0 0 1 22 0");
     const double rx = 25625.0;
@@ -669,7 +669,7 @@ TEST(SvgErrorRule, ASegmentThatCannotBeAPathEndsThePrefix) {
 TEST(SvgJustReachingArcs, HalfCircleFromItsDiameterIsExact) {
     // Radius 49 over a chord of 98: a half circle about (49, 0). Length 49π, the midpoint
     // at the bottom, y = 49 (computed with Λ through 1/rx this came out as 153.93804148621365
-    // and y = 49.00000073: the centre offset √(1/Λ − 1) turned 1 − 2⁻⁵³ into 1.5e-8).
+    // and y = 49.00000073: the center offset √(1/Λ − 1) turned 1 − 2⁻⁵³ into 1.5e-8).
     const ComplexPath path = parse_svg_path("M 98 0 A 49 49 0 1 1 0 0");
     EXPECT_NEAR(path.length(), 49.0 * pi, 4 * eps * 154.0);  // a few ulps of 154
     EXPECT_NEAR(path.point(0.5).x, 49.0, 4 * eps * 98.0);
@@ -688,7 +688,7 @@ TEST(SvgJustReachingArcs, DecimalDataThatOnlyRoundsToReachingIsSnapped) {
                          Case{"M 0.53 28.33 A 7.46 7.46 0 1 0 0.53 13.41 A 7.46 7.46 0 1 0 0.53 28.33", 7.46}}) {
         SCOPED_TRACE(c.data);
         const ComplexPath path = parse_svg_path(c.data);
-        // Snapped, the centre is the chord's midpoint: the error is the rounding of the data
+        // Snapped, the center is the chord's midpoint: the error is the rounding of the data
         // (a few ulps of the coordinates), not the 1e-8 of an unsnapped square root.
         EXPECT_NEAR(path.length(), 2.0 * pi * c.radius, 1e-13 * c.radius);
         EXPECT_NEAR(grape::distance(path.point(0.25), path.point(0.75)), 2.0 * c.radius, 1e-13 * c.radius);

@@ -183,10 +183,10 @@ TEST(Threads, ParallelTickOnFourThreadsMatchesOne) {
 // A chain of pendulums under Baumgarte drift control and a bead on a shared path, per thread.
 std::vector<double> run_dynamics(const grape::Path& wire) {
     grape::ParticleSystem system({.integrator = grape::Integrator::rk4});
-    auto previous = system.add_particle({.position = {0, 0}, .mass = HUGE_VAL});
+    auto previous = system.create_particle({.position = {0, 0}, .mass = HUGE_VAL});
     for (int i = 1; i <= 8; ++i) {
-        const auto p = system.add_particle({.position = {20.0 * i, 0}});
-        system.add_distance(previous, p, 20.0);
+        const auto p = system.create_particle({.position = {20.0 * i, 0}});
+        system.create_distance(previous, p, 20.0);
         previous = p;
     }
     system.add_gravity({0, 500});

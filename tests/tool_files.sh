@@ -130,7 +130,7 @@ progress)
     run "$grape" simulate parabola --integrator euler --dt 1e-5 --seconds 2
     [ ! -s "$work/err" ] || fail "progress written to a file: $(cat "$work/err")"
     # Frames of a 2000 × 2000 view (a fraction of a second each): progress per frame.
-    printf '{"view": {"width": 2000, "height": 2000}, "paths": [{"name": "a", "path": {"kind": "circle", "centre": [0, 0], "radius": 100}}]}\n' >"$work/big.json"
+    printf '{"view": {"width": 2000, "height": 2000}, "paths": [{"name": "a", "path": {"kind": "circle", "center": [0, 0], "radius": 100}}]}\n' >"$work/big.json"
     on_tty render "^render: frame [0-9]+ of 8 \([0-9]+%\)" "'$grape' render '$work/big.json' -o '$work/big.png' --frames 8"
     grep -q "wrote 8 frames" "$work/tty" || fail "frames not written: $(cat "$work/tty")"
     ;;
@@ -173,11 +173,11 @@ huge_view)
 long_paths)
     # A circle of 1,592 turns (10000 rad) drawn 200 units wide is 2e6 units of stroke: minutes
     # of cairo's time. Refused with the numbers; a radius of 1e12 fits the view and is drawn.
-    printf '{"view": {"width": 640, "height": 480}, "paths": [{"name": "coil", "path": {"kind": "circle", "centre": [0, 0], "radius": 100, "start_angle": 0, "end_angle": 10000}}]}\n' >"$work/coil.json"
+    printf '{"view": {"width": 640, "height": 480}, "paths": [{"name": "coil", "path": {"kind": "circle", "center": [0, 0], "radius": 100, "start_angle": 0, "end_angle": 10000}}]}\n' >"$work/coil.json"
     run "$grape" render "$work/coil.json" -o "$work/coil.png"
     expect_error "$work/status" "$work/err" "render: the scene's paths are 2.1e+06 units long on the picture (path 'coil': 2.1e+06), more than the budget of 1e+06 units a picture (use --force to render them anyway)"
     [ ! -e "$work/coil.png" ] || fail "output written"
-    printf '{"view": {"width": 640, "height": 480}, "paths": [{"name": "arc", "path": {"kind": "circle", "centre": [0, 0], "radius": 1e12, "start_angle": 0, "end_angle": 1}}]}\n' >"$work/arc.json"
+    printf '{"view": {"width": 640, "height": 480}, "paths": [{"name": "arc", "path": {"kind": "circle", "center": [0, 0], "radius": 1e12, "start_angle": 0, "end_angle": 1}}]}\n' >"$work/arc.json"
     run "$grape" render "$work/arc.json" -o "$work/arc.png"
     [ "$(cat "$work/status")" = 0 ] || fail "the huge arc was refused: $(cat "$work/err")"
     ;;

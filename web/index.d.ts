@@ -67,9 +67,9 @@ export interface ComplexPath extends Path {
 export interface PathStatic {
   new(): Path;
   linear(start: Vec2, end: Vec2): Path;
-  circle(centre: Vec2, radius: number, startAngle: number, endAngle: number): Path;
-  ellipticalArc(centre: Vec2, rx: number, ry: number, rotation: number, startAngle: number, endAngle: number): Path;
-  spiral(centre: Vec2, startRadius: number, endRadius: number, startAngle: number, endAngle: number): Path;
+  circle(center: Vec2, radius: number, startAngle: number, endAngle: number): Path;
+  ellipticalArc(center: Vec2, rx: number, ry: number, rotation: number, startAngle: number, endAngle: number): Path;
+  spiral(center: Vec2, startRadius: number, endRadius: number, startAngle: number, endAngle: number): Path;
   sineWave(start: Vec2, end: Vec2, frequency: number, amplitude: number): Path;
   quadraticBezier(p0: Vec2, p1: Vec2, p2: Vec2, reparametrize: boolean): Path;
   cubicBezier(p0: Vec2, p1: Vec2, p2: Vec2, p3: Vec2, reparametrize: boolean): Path;
@@ -200,7 +200,7 @@ export interface ParticleSystemOptions extends DriftOptions {
   solver?: 'automatic' | 'dense' | 'sparse_direct' | 'conjugate_gradient';
   rk45Tolerance?: number;
 }
-export interface StepReport {
+export interface StepStats {
   status: 'ok' | 'singular' | 'not_converged';
   evaluations: number; substeps: number; rejected: number; projectionIterations: number; cgIterations: number;
 }
@@ -237,7 +237,7 @@ export interface ParticleSystem extends Deletable {
   constraintCount(): number;
   setDrift(options: DriftOptions): void;
   setIntegrator(name: IntegratorName): void;
-  step(dt: number): StepReport;
+  step(dt: number): StepStats;
   /** n steps of dt, no report. */
   steps(dt: number, n: number): void;
   time(): number;
@@ -330,7 +330,7 @@ export interface SpritePlayer extends Deletable {
   mode(): string; setMode(mode: 'loop' | 'once' | 'ping_pong'): void;
   frameCount(): number; setFrame(k: number): void;
   playing(): boolean; pause(): void; play(): void;
-  onFrame(f: (frame: number) => void): void; onComplete(f: () => void): void; onLoop(f: (cycles: number) => void): void;
+  onFrame(f: (frame: number) => void): void; onComplete(f: () => void): void; onLoop(f: (cycle: number) => void): void;
 }
 export interface SpritePlayerStatic { new(frameCount: number, options?: SpritePlayerOptions): SpritePlayer; }
 

@@ -53,8 +53,8 @@ void draw_scene_properties(Canvas& canvas, const Scene& scene, const SceneTiming
             const double x = std::get<double>(v);
             if (prop.type == ScenePropertyType::angle) {
                 const double radians = prop.degrees ? x * pi / 180.0 : x;
-                const Vec2 centre{left + 9.0, y - 3.5};
-                canvas.stroke_line(centre, centre + Vec2{7.0 * std::cos(radians), 7.0 * std::sin(radians)},
+                const Vec2 center{left + 9.0, y - 3.5};
+                canvas.stroke_line(center, center + Vec2{7.0 * std::cos(radians), 7.0 * std::sin(radians)},
                                    {.color = colors::black, .width = 1.5});
                 text += number_text(x);
                 text += prop.degrees ? "°" : " rad";

@@ -13,8 +13,8 @@ ViewCanvas::ViewCanvas(ImDrawList* draw_list, ImVec2 screen_min, ImVec2 screen_m
     const double h = std::max(1.0, double(screen_max.y - screen_min.y) - 2.0 * margin_px);
     const Vec2 size = world_max - world_min;
     scale_ = std::min(w / std::max(size.x, 1e-9), h / std::max(size.y, 1e-9));
-    const Vec2 screen_centre{0.5 * (screen_min.x + screen_max.x), 0.5 * (screen_min.y + screen_max.y)};
-    offset_ = screen_centre - 0.5 * (world_min + world_max) * scale_;
+    const Vec2 screen_center{0.5 * (screen_min.x + screen_max.x), 0.5 * (screen_min.y + screen_max.y)};
+    offset_ = screen_center - 0.5 * (world_min + world_max) * scale_;
     // Hovered means over the canvas and not over a widget window on top of it.
     const ImVec2 m = ImGui::GetIO().MousePos;
     hovered_ = m.x >= screen_min.x && m.x < screen_max.x && m.y >= screen_min.y && m.y < screen_max.y &&

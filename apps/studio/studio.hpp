@@ -42,7 +42,7 @@ struct Options {
 /// (uniform scale, y down in both) and the mouse state in world units.
 class ViewCanvas {
 public:
-    /// Maps the world box [world_min, world_max] into the screen rectangle, centred, with a margin.
+    /// Maps the world box [world_min, world_max] into the screen rectangle, centered, with a margin.
     ViewCanvas(ImDrawList* draw_list, ImVec2 screen_min, ImVec2 screen_max, Vec2 world_min, Vec2 world_max,
                double margin_px = 24.0);
 

@@ -53,7 +53,7 @@ public:
     void advance(double dt) override {
         const auto start = std::chrono::steady_clock::now();
         if (system_->grabbed()) system_->move_grab(mouse_);
-        const StepReport r = system_->step(dt);
+        const StepStats r = system_->step(dt);
         status_ = r.status;
         substeps_ = r.substeps;
         step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -19,22 +19,22 @@
 // Units: any consistent set (the seed uses pixels, seconds, mass 1, y down, g = (0, +g)).
 //
 //   grape::ParticleSystem system({.integrator = grape::Integrator::rk4});
-//   auto bob = system.add_particle({.position = {100, 0}});
+//   auto bob = system.create_particle({.position = {100, 0}});
 //   system.add_gravity({0, 500});
-//   system.add_anchor(bob, {0, 0}, 100);       // a pendulum of length 100
+//   system.create_anchor(bob, {0, 0}, 100);       // a pendulum of length 100
 //   for (int i = 0; i < 60; ++i) system.step(1.0 / 60);
 //
 // Threads: a ParticleSystem, a Bead and a Stepper each belong to one thread (step, add,
 // queries and the force functions they call). Separate systems and beads share nothing and
 // may step on separate threads at once, also when they read the same Path (shared
-// read-only), or the same ImplicitCurve if its function is safe to call concurrently.
+// read-only), or the same ImplicitFunction if its function is safe to call concurrently.
 // The parse_* and to_string functions may be called from any thread.
 //
 // The parts, one idea per header (this one includes them all):
-//   <grape/dynamics_implicit.hpp>   ImplicitCurve, CurveSample (and <grape/jet.hpp>: Jet2)
+//   <grape/dynamics_implicit.hpp>   ImplicitFunction, ImplicitSample (and <grape/jet.hpp>: Jet2)
 //   <grape/dynamics_ode.hpp>        Integrator, Stepper, SecondOrderSystem, StepStats
 //   <grape/dynamics_particles.hpp>  ParticleSystem, constraints, drift, GrabDef, SubstepDef
-//   <grape/dynamics_bead.hpp>       Bead, CurveFrame, ParametricCurve
+//   <grape/dynamics_bead.hpp>       Bead, ParametricSample, ParametricFunction
 #pragma once
 
 #include <grape/dynamics_bead.hpp>

@@ -18,18 +18,18 @@ namespace grape {
 // ---------------------------------------------------------------------------------------
 
 /// A parametric curve's point and its first two derivatives at one parameter value.
-struct CurveFrame {
+struct ParametricSample {
     Vec2 point{};  ///< x(u)
     Vec2 d1{};     ///< x′(u)
     Vec2 d2{};     ///< x″(u)
 };
 
 /// A user parametric curve: u ↦ (x, x′, x″), e.g. the seed's parabola (u, −u²/100).
-using ParametricCurve = std::function<CurveFrame(double u)>;
+using ParametricFunction = std::function<ParametricSample(double u)>;
 
 /// The bead's coordinate acceleration: ü = (x′·F/m − (x′·x″) u̇²)/|x′|², 0 where x′ = 0
 /// (the bead rests at a cusp rather than producing NaN).
-inline double bead_acceleration(const CurveFrame& frame, Vec2 force, double mass, double u_rate) noexcept {
+inline double bead_acceleration(const ParametricSample& frame, Vec2 force, double mass, double u_rate) noexcept {
     const double s2 = length_squared(frame.d1);
     if (!(s2 > 0.0)) return 0.0;
     return (dot(frame.d1, force) / mass - dot(frame.d1, frame.d2) * u_rate * u_rate) / s2;
@@ -70,7 +70,7 @@ public:
     /// On a ComplexPath: the same as Bead(const Path&, def).
     Bead(const ComplexPath& path, const BeadDef& def);
     /// On a user curve (u unbounded). Throws grape::Error if `curve` is empty or def is bad.
-    Bead(ParametricCurve curve, const BeadDef& def);
+    Bead(ParametricFunction curve, const BeadDef& def);
 
     /// An extra force F(t, x, v) on the bead (e.g. wind, a mouse spring); empty to remove.
     void set_force(std::function<Vec2(double t, Vec2 x, Vec2 v)> force) { force_ = std::move(force); }
@@ -97,10 +97,10 @@ public:
 
 private:
     // One smooth piece: its curve (a Path captured by value) and its span of the whole u.
-    struct Part { ParametricCurve curve; double u0, u1; };
+    struct Part { ParametricFunction curve; double u0, u1; };
     class Ode;
     void init_parts(std::vector<Part> parts, const BeadDef& def);
-    CurveFrame frame(double local_u) const noexcept;
+    ParametricSample frame(double local_u) const noexcept;
     Vec2 applied_force(double t, Vec2 x, Vec2 v) const noexcept;
     void transfer(double speed, int direction);
 

@@ -16,7 +16,7 @@ namespace grape {
 // ---------------------------------------------------------------------------------------
 
 /// C and its first and second derivatives at one point.
-struct CurveSample {
+struct ImplicitSample {
     double value = 0.0;  ///< C(x, y), in the curve's own units
     Vec2 gradient{};     ///< ∇C
     double hxx = 0.0;    ///< ∂²C/∂x²
@@ -26,26 +26,26 @@ struct CurveSample {
 
 /// A curve C(x, y) = 0 that a particle is held on. Value, gradient and Hessian come either
 /// from the user or from one templated function differentiated automatically (Jet2).
-class ImplicitCurve {
+class ImplicitFunction {
 public:
     /// User-supplied value, gradient and Hessian. Throws grape::Error if `evaluate` is empty.
-    explicit ImplicitCurve(std::function<CurveSample(Vec2)> evaluate);
+    explicit ImplicitFunction(std::function<ImplicitSample(Vec2)> evaluate);
 
     /// From C written once for any number type: `[](auto x, auto y) { return x*x + 100*y; }`.
     /// Gradient and Hessian by forward-mode automatic differentiation.
     template <class F>
-    static ImplicitCurve from_function(F function) {
-        return ImplicitCurve(std::function<CurveSample(Vec2)>([function](Vec2 p) {
+    static ImplicitFunction from_function(F function) {
+        return ImplicitFunction(std::function<ImplicitSample(Vec2)>([function](Vec2 p) {
             const Jet2 c = function(Jet2::x(p.x), Jet2::y(p.y));
-            return CurveSample{c.v, {c.gx, c.gy}, c.hxx, c.hxy, c.hyy};
+            return ImplicitSample{c.v, {c.gx, c.gy}, c.hxx, c.hxy, c.hyy};
         }));
     }
 
     /// C, ∇C and the Hessian at p.
-    CurveSample operator()(Vec2 p) const { return evaluate_(p); }
+    ImplicitSample operator()(Vec2 p) const { return evaluate_(p); }
 
 private:
-    std::function<CurveSample(Vec2)> evaluate_{};
+    std::function<ImplicitSample(Vec2)> evaluate_{};
 };
 
 }  // namespace grape

@@ -51,7 +51,7 @@ struct Rk45Def {
     double min_step = 1e-12;   ///< seconds; below it a sub-step is accepted anyway (and counted)
     /// Sub-steps (accepted and rejected) per step() at most, a guard against stiffness and
     /// against a dt far beyond the tolerance: when reached, the rest of the step is taken in
-    /// one sub-step without error control and the step says so (StepStats::limited).
+    /// one sub-step without error control and the step says so (StepStats::status is substep_limit).
     int max_substeps = 100000;
 };
 
@@ -66,19 +66,42 @@ public:
                               std::span<double> a) noexcept = 0;
 };
 
-/// What one Stepper::step did.
+/// How a step went, from best to worst: a step reports the worst over its sub-steps and solves.
+enum class SolveStatus {
+    ok,             ///< the step succeeded (and every J W Jᵀ was regular)
+    /// redundant or degenerate constraints: a least-squares/CG solution was used, or a row
+    /// could not be trusted at the current positions (see ParticleSystem::step)
+    singular,
+    not_converged,  ///< conjugate gradient stopped at its iteration limit
+    /// rk45 reached Rk45Def::max_substeps within the step: the rest of dt was taken without
+    /// error control (a dt far too long for the tolerance, or a stiff system)
+    substep_limit,
+    non_finite,     ///< the state left the finite range: the step was not taken (state and time unchanged)
+};
+
+/// The status name ("ok", "singular", "not_converged", "substep_limit", "non_finite").
+std::string_view to_string(SolveStatus status) noexcept;
+
+/// What one step did: Stepper::step, Bead::step and ParticleSystem::step all report it.
 struct StepStats {
-    int evaluations = 0;  ///< calls of acceleration()
+    /// The worst outcome over the step. Stepper and Bead give ok, substep_limit (rk45 reached
+    /// Rk45Def::max_substeps: the rest of the step was one sub-step without error control, not
+    /// to be trusted) or non_finite (the state or rk45's error estimate left the finite range:
+    /// the step stopped there, at once, and q, v are as before); a ParticleSystem's solves
+    /// add singular and not_converged.
+    SolveStatus status = SolveStatus::ok;
+    int evaluations = 0;  ///< calls of acceleration() (a ParticleSystem: constraint solves)
     int substeps = 0;     ///< accepted sub-steps (1 for fixed-step integrators)
     int rejected = 0;     ///< rk45 sub-steps rejected by error control
     int forced = 0;       ///< rk45 sub-steps accepted at min_step despite the error
-    /// rk45 reached Rk45Def::max_substeps: the rest of the step was one sub-step without
-    /// error control (its result is not to be trusted).
-    bool limited = false;
-    /// False when the state or rk45's error estimate left the finite range: the step stopped
-    /// there (rk45 at once, without rejecting sub-steps to max_substeps) and q, v are as before.
-    bool finite = true;
+    int projection_iterations = 0;  ///< ParticleSystem: Newton iterations of the position projection
+    int cg_iterations = 0;          ///< ParticleSystem: conjugate-gradient iterations, summed
 };
+
+/// The worse of two outcomes (SolveStatus is ordered from best to worst).
+constexpr SolveStatus worse(SolveStatus a, SolveStatus b) noexcept {
+    return static_cast<int>(a) >= static_cast<int>(b) ? a : b;
+}
 
 /// Advances any SecondOrderSystem by one step of the chosen integrator. Holds its scratch
 /// buffers (allocated when the system size first grows), so steps do not allocate.

@@ -117,31 +117,7 @@ struct ParticleSystemDef {
     SubstepDef substeps{};                      ///< see SubstepDef
 };
 
-/// Outcome of the last constraint solve(s).
-enum class SolveStatus {
-    ok,             ///< J W Jᵀ was regular and the solve succeeded
-    /// redundant or degenerate constraints: a least-squares/CG solution was used, or a row
-    /// could not be trusted at the current positions (see ParticleSystem::step)
-    singular,
-    not_converged,  ///< conjugate gradient stopped at its iteration limit
-    /// rk45 reached Rk45Def::max_substeps within the step: the rest of dt was taken without
-    /// error control (a dt far too long for the tolerance, or a stiff system)
-    substep_limit,
-    non_finite,     ///< the state left the finite range: the step was not taken (state and time unchanged)
-};
 
-/// The status name ("ok", "singular", "not_converged", "substep_limit", "non_finite").
-std::string_view to_string(SolveStatus status) noexcept;
-
-/// What one ParticleSystem::step did.
-struct StepReport {
-    SolveStatus status = SolveStatus::ok;  ///< worst status over the step's solves
-    int evaluations = 0;                   ///< constraint solves inside the integrator
-    int substeps = 0;                      ///< integrator sub-steps (rk45, or SubstepDef::automatic)
-    int rejected = 0;                      ///< rk45 rejected sub-steps
-    int projection_iterations = 0;         ///< Newton iterations of the position projection
-    int cg_iterations = 0;                 ///< conjugate-gradient iterations, summed
-};
 
 /// Residuals of one constraint (for a two-row constraint, the larger row).
 struct ConstraintResidual {
@@ -221,7 +197,7 @@ public:
     // -- particles --
     /// Adds a particle. Throws grape::Error if position or velocity is not finite or the mass
     /// is not positive (infinity pins it; its velocity is then set to zero).
-    ParticleId add_particle(const ParticleDef& def);
+    ParticleId create_particle(const ParticleDef& def);
     /// Number of particles.
     std::size_t size() const noexcept;
     /// Positions, velocities, inverse masses (0 = pinned) and the forces of the last evaluation.
@@ -267,19 +243,19 @@ public:
     // -- constraints --
     /// |xa − xb| = length (C = ½(|d|² − L²)). Throws for unknown ids, a == b, length ≤ 0, or
     /// particles at the same point.
-    ConstraintId add_distance(ParticleId a, ParticleId b, double length);
+    ConstraintId create_distance(ParticleId a, ParticleId b, double length);
     /// |xa − xb| held at its current value.
-    ConstraintId add_distance(ParticleId a, ParticleId b);
+    ConstraintId create_distance(ParticleId a, ParticleId b);
     /// |xa − anchor| = length: a pendulum rod to a fixed point. Throws if length ≤ 0 or the
     /// particle sits at the anchor (the rod would have no direction).
-    ConstraintId add_anchor(ParticleId a, Vec2 anchor, double length);
+    ConstraintId create_anchor(ParticleId a, Vec2 anchor, double length);
     /// xa = point (two rows). Throws for an unknown id or a non-finite point.
-    ConstraintId add_fixed_point(ParticleId a, Vec2 point);
-    /// C(xa) = 0 for an implicit curve. Throws if ∇C is zero at the particle (the centre of a
+    ConstraintId create_fixed_point(ParticleId a, Vec2 point);
+    /// C(xa) = 0 for an implicit curve. Throws if ∇C is zero at the particle (the center of a
     /// circle: the constraint force would have no direction).
-    ConstraintId add_curve(ParticleId a, ImplicitCurve curve);
+    ConstraintId create_implicit(ParticleId a, ImplicitFunction curve);
     /// A user constraint. Throws if it has no particles, an unknown id or no function.
-    ConstraintId add_constraint(UserConstraint constraint);
+    ConstraintId create_constraint(UserConstraint constraint);
     /// Number of constraints (a fixed point counts once).
     std::size_t constraint_count() const noexcept;
 
@@ -287,6 +263,8 @@ public:
     const ParticleSystemDef& def() const noexcept;
     /// Changes the drift control (validated as in the constructor).
     void set_drift(const DriftDef& drift);
+    /// Changes the sub-step rule (validated as in the constructor).
+    void set_substeps(const SubstepDef& substeps);
     /// Changes the integrator (its rk45 step memory restarts).
     void set_integrator(Integrator integrator);
     /// Changes the rk45 settings (validated as in Stepper; its step memory restarts).
@@ -297,17 +275,17 @@ public:
     /// constraint forces at every stage, projects when drift control says so, clears exerted forces.
     /// A step that would leave the finite range is not taken (status non_finite). Throws
     /// grape::Error when a constraint's gradient is zero at the current positions (a particle
-    /// at its anchor or on top of its distance partner, at the centre of a circle): its force
+    /// at its anchor or on top of its distance partner, at the center of a circle): its force
     /// would have no direction, and Baumgarte feedback would fling the particle away.
     /// Near such a point (a rod compressed far below its length, a bead near a circle's
-    /// centre) a row is judged by κ = |C|·|H·n̂|/|∇C|² (H the Hessian of C, n̂ the gradient's
+    /// center) a row is judged by κ = |C|·|H·n̂|/|∇C|² (H the Hessian of C, n̂ the gradient's
     /// direction; rods and anchors exactly, curves from their second derivatives, user rows
     /// not at all): for κ > 1 the gradient may vanish within the correction's reach, so
     /// Baumgarte feedback and projection aim only at |C| = |∇C|²/|H·n̂| (a trust region the
     /// next step widens), RATTLE leaves the row out of the step, and for κ ≥ 100 (an anchor's
     /// particle within L/14 of it) the row is left out of the solve; such steps report
     /// singular. The particle then moves under its other forces until the row is trusted.
-    StepReport step(double dt);
+    StepStats step(double dt);
     /// Simulated time in seconds.
     double time() const noexcept;
 
@@ -334,7 +312,7 @@ public:
 
 private:
     std::uint32_t checked(ParticleId id, std::string_view where) const;
-    StepReport single_step(double dt);
+    StepStats single_step(double dt);
     void refuse_degenerate_rows(bool evaluated);  // throws for a violated row with ∇C = 0
     std::unique_ptr<detail::ParticleState> state_;  // model, state and solver (src/dynamics/particle_state.hpp)
 };

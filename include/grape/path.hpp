@@ -128,27 +128,27 @@ public:
     Vec2 end() const noexcept;  ///< point at u = 1
 };
 
-/// An arc of a circle: point = centre + radius·(cos θ, sin θ), θ from `start_angle` to
+/// An arc of a circle: point = center + radius·(cos θ, sin θ), θ from `start_angle` to
 /// `end_angle` radians. Either direction, and more than one turn when the angles are more
 /// than 2π apart. With y down, increasing angles turn clockwise on screen.
 class CirclePath : public Path {
 public:
-    CirclePath(Vec2 centre, double radius, double start_angle, double end_angle);  ///< radius > 0; angles in radians
-    Vec2 centre() const noexcept;  ///< centre, world units
+    CirclePath(Vec2 center, double radius, double start_angle, double end_angle);  ///< radius > 0; angles in radians
+    Vec2 center() const noexcept;  ///< center, world units
     double radius() const noexcept;  ///< radius, world units
     double start_angle() const noexcept;  ///< angle at u = 0, radians
     double end_angle() const noexcept;  ///< angle at u = 1, radians
 };
 
 /// An arc of an ellipse with semi-axes `rx` and `ry` turned by `rotation` radians about
-/// `centre`: point = centre + R(rotation)·(rx·cos θ, ry·sin θ), θ from `start_angle` to
+/// `center`: point = center + R(rotation)·(rx·cos θ, ry·sin θ), θ from `start_angle` to
 /// `end_angle` (either direction, several turns allowed). SVG's `A` command becomes one.
 class EllipticalArcPath : public Path {
 public:
     /// rx, ry > 0; angles in radians.
-    EllipticalArcPath(Vec2 centre, double rx, double ry, double rotation, double start_angle,
+    EllipticalArcPath(Vec2 center, double rx, double ry, double rotation, double start_angle,
                       double end_angle);
-    Vec2 centre() const noexcept;  ///< centre, world units
+    Vec2 center() const noexcept;  ///< center, world units
     double rx() const noexcept;  ///< semi-axis along the rotated x, world units
     double ry() const noexcept;  ///< semi-axis along the rotated y, world units
     double rotation() const noexcept;  ///< rotation of the axes, radians
@@ -161,9 +161,9 @@ public:
 class SpiralPath : public Path {
 public:
     /// Radii ≥ 0; angles in radians.
-    SpiralPath(Vec2 centre, double start_radius, double end_radius, double start_angle = 0.0,
+    SpiralPath(Vec2 center, double start_radius, double end_radius, double start_angle = 0.0,
                double end_angle = 2.0 * pi);
-    Vec2 centre() const noexcept;  ///< centre, world units
+    Vec2 center() const noexcept;  ///< center, world units
     double start_radius() const noexcept;  ///< radius at u = 0 (≥ 0)
     double end_radius() const noexcept;  ///< radius at u = 1 (≥ 0)
     double start_angle() const noexcept;  ///< angle at u = 0, radians
@@ -287,14 +287,14 @@ struct LinearSpec {
 };
 /// CirclePath's parameters (angles in radians).
 struct CircleSpec {
-    Vec2 centre;
+    Vec2 center;
     double radius = 1.0;
     double start_angle = 0.0;
     double end_angle = 2.0 * pi;
 };
 /// EllipticalArcPath's parameters (angles in radians).
 struct EllipticalArcSpec {
-    Vec2 centre;
+    Vec2 center;
     double rx = 1.0;
     double ry = 1.0;
     double rotation = 0.0;
@@ -303,7 +303,7 @@ struct EllipticalArcSpec {
 };
 /// SpiralPath's parameters (angles in radians).
 struct SpiralSpec {
-    Vec2 centre;
+    Vec2 center;
     double start_radius = 0.0;
     double end_radius = 1.0;
     double start_angle = 0.0;

@@ -24,7 +24,7 @@ struct ClosestPoint {
 /// branch and bound over the smooth pieces with proven bounds on |x″| and |x‴| per span, so no
 /// nearer point can hide between the spans it discards; Newton on the analytic derivatives
 /// finishes where the squared distance is provably convex. Ties (points whose distances agree
-/// within 1e-13 of the path's size) go to the smallest u: the centre of a circle gives its
+/// within 1e-13 of the path's size) go to the smallest u: the center of a circle gives its
 /// start. Where the parts of a complex path do not meet, a part's end is reached just before
 /// the cue of the next (u one double below it). A q that is not finite gives u = 0 and an
 /// infinite distance. Allocation-free; work is bounded.

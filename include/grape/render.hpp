@@ -79,7 +79,7 @@ struct Affine {
 
 /// The map that fits `world` into `viewport` (output units) with `margin` on every side,
 /// keeping the aspect ratio and centring. A degenerate box (a point or a line) still maps
-/// to the viewport's centre without dividing by zero.
+/// to the viewport's center without dividing by zero.
 Affine fit(const Bounds& world, const Rect& viewport, double margin = 0.0) noexcept;
 
 /// How line ends look.
@@ -109,9 +109,9 @@ struct FillStyle {
 };
 
 /// Horizontal placement of a text label relative to its anchor point.
-enum class TextAlign { left, centre, right };
+enum class TextAlign { left, center, right };
 
-/// How text labels look. The anchor is the left/centre/right end of the baseline.
+/// How text labels look. The anchor is the left/center/right end of the baseline.
 struct TextStyle {
     Color color = colors::black;       ///< text colour
     double size = 12.0;                ///< font size (output units)
@@ -191,13 +191,13 @@ public:
     void stroke_polyline(std::span<const Vec2> points, const StrokeStyle& style, bool closed = false);
     /// The polygon through the points, filled.
     void fill_polygon(std::span<const Vec2> points, const FillStyle& style);
-    /// A circle's outline (centre and radius in world units).
-    void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style);
-    /// A filled circle (centre and radius in world units).
-    void fill_circle(Vec2 centre, double radius, const FillStyle& style);
-    /// A filled disc of `radius` output units at world point `centre`: a marker that keeps
+    /// A circle's outline (center and radius in world units).
+    void stroke_circle(Vec2 center, double radius, const StrokeStyle& style);
+    /// A filled circle (center and radius in world units).
+    void fill_circle(Vec2 center, double radius, const FillStyle& style);
+    /// A filled disc of `radius` output units at world point `center`: a marker that keeps
     /// its size however the world is scaled.
-    void dot(Vec2 centre, double radius, Color color);
+    void dot(Vec2 center, double radius, Color color);
     /// A rectangle's outline (world units).
     void stroke_rect(const Rect& rect, const StrokeStyle& style);
     /// A filled rectangle (world units).

@@ -10,12 +10,12 @@
 // The rule (GSAP's `distribute`, in seconds): item j sits at column j % C and row j / C of a
 // grid of C columns (without a grid: one row, C = count). Its distance d_j to the origin is
 // measured in cells, in 2-D (or along one axis), from an origin: the corner half a cell
-// before the first item (start, random), half a cell past the last (end), the centre of the
+// before the first item (start, random), half a cell past the last (end), the center of the
 // row or grid (center, edges), or the index item's cell (index). With
 // the normalized distance n_j = (d_j − min d) / (max d − min d) (0 when all are equal) and the
 // total spread V (`amount`, or `each` × (count − 1) without a grid; GSAP's each × max(C, count / C)
 // with one, × count / C along y, × C along x), item j starts at V·curve(n_j). So `each` is
-// the time between neighbours from the start or the end; from the centre the outermost items
+// the time between neighbours from the start or the end; from the center the outermost items
 // start each × (count − 1) after the middle one, as in GSAP. `edges`, and a negative V, start
 // item j at |V|·curve(1 − n_j): the farthest first.
 // `random` gives the offsets of a corner origin in a shuffled order: a permutation of what `start`
@@ -38,7 +38,7 @@ namespace grape {
 enum class StaggerFrom : std::uint8_t {
     start,   ///< the first item first
     end,     ///< the last item first
-    center,  ///< the middle first (a row's centre, or the grid's), outwards
+    center,  ///< the middle first (a row's center, or the grid's), outwards
     edges,   ///< the outermost first, inwards
     index,   ///< StaggerDef::index first, outwards from it
     random,  ///< a seeded random order (StaggerDef::seed)
@@ -54,7 +54,7 @@ enum class StaggerAxis : std::uint8_t {
 /// Items laid out row by row in `columns` columns (0: no grid, one row).
 struct StaggerGrid {
     std::size_t columns = 0;  ///< items per row
-    std::size_t rows = 0;     ///< 0: as many as the items need; else ≥ that (centre of the grid)
+    std::size_t rows = 0;     ///< 0: as many as the items need; else ≥ that (center of the grid)
 };
 
 /// A stagger; fill with designated initializers: `{.each = 0.1, .from = StaggerFrom::center}`.

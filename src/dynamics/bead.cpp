@@ -20,7 +20,7 @@ public:
     std::size_t size() const noexcept override { return 1; }
     void acceleration(double t, std::span<const double> q, std::span<const double> v,
                       std::span<double> a) noexcept override {
-        const CurveFrame f = bead_.frame(q[0]);
+        const ParametricSample f = bead_.frame(q[0]);
         const Vec2 force = bead_.applied_force(t, f.point, f.d1 * v[0]);
         a[0] = bead_acceleration(f, force, bead_.def_.mass, v[0]);
     }
@@ -29,7 +29,7 @@ private:
     const Bead& bead_;
 };
 
-Bead::Bead(ParametricCurve curve, const BeadDef& def) {
+Bead::Bead(ParametricFunction curve, const BeadDef& def) {
     if (!curve) throw Error("Bead: curve must be a callable (got an empty function)");
     std::vector<Part> parts;
     parts.push_back({std::move(curve), 0.0, 1.0});
@@ -69,7 +69,7 @@ void Bead::init_parts(std::vector<Part> parts, const BeadDef& def) {
     local_rate_ = s > 0.0 ? def.speed / s : 0.0;
 }
 
-CurveFrame Bead::frame(double local_u) const noexcept { return parts_[part_].curve(local_u); }
+ParametricSample Bead::frame(double local_u) const noexcept { return parts_[part_].curve(local_u); }
 
 Vec2 Bead::applied_force(double t, Vec2 x, Vec2 v) const noexcept {
     Vec2 f = def_.mass * def_.gravity - def_.drag * v;
@@ -92,13 +92,13 @@ Vec2 Bead::velocity() const noexcept { return frame(local_u_).d1 * local_rate_; 
 double Bead::speed() const noexcept { return length(frame(local_u_).d1) * local_rate_; }
 
 double Bead::energy() const noexcept {
-    const CurveFrame f = frame(local_u_);
+    const ParametricSample f = frame(local_u_);
     const Vec2 v = f.d1 * local_rate_;
     return 0.5 * def_.mass * length_squared(v) - def_.mass * dot(def_.gravity, f.point);
 }
 
 double Bead::acceleration() const noexcept {
-    const CurveFrame f = frame(local_u_);
+    const ParametricSample f = frame(local_u_);
     return bead_acceleration(f, applied_force(time_, f.point, f.d1 * local_rate_), def_.mass, local_rate_);
 }
 
@@ -135,6 +135,7 @@ StepStats Bead::step(double dt) {
         total.substeps += s.substeps;
         total.rejected += s.rejected;
         total.forced += s.forced;
+        total.status = worse(total.status, s.status);
     };
     Ode ode(*this);
     double remaining = dt;

@@ -12,8 +12,8 @@ void require_length(const Path& path) {
         throw Error("Bead: the path has length 0 (it stands at one point), so there is nothing to slide along");
 }
 
-ParametricCurve curve_of(const Path& path) {
-    return [path](double u) { return CurveFrame{path.point(u), path.d1(u), path.d2(u)}; };
+ParametricFunction curve_of(const Path& path) {
+    return [path](double u) { return ParametricSample{path.point(u), path.d1(u), path.d2(u)}; };
 }
 }  // namespace
 

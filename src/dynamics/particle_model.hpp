@@ -37,7 +37,7 @@ struct SystemView {
     std::span<const Vec2> positions;  // at the step's start (the springs' stretch for the stiffness bound)
     std::span<const double> inverse_masses;
     std::span<const ConstraintRecord> constraints;
-    std::span<const ImplicitCurve> curves;
+    std::span<const ImplicitFunction> curves;
     std::span<const UserConstraint> users;
     std::span<const Spring> springs;
     const Grab* grab = nullptr;

@@ -21,7 +21,7 @@ struct ParticleState {
     std::vector<UserForce> user_forces;
     std::optional<Grab> grab;
     std::vector<ConstraintRecord> constraints;
-    std::vector<ImplicitCurve> curves;
+    std::vector<ImplicitFunction> curves;
     std::vector<UserConstraint> users;
     Stepper stepper{};
     SolverWorkspace solver{};

@@ -40,12 +40,12 @@ void ParticleSystem::refuse_degenerate_rows(bool evaluated) {
     }
 }
 
-StepReport ParticleSystem::step(double dt) {
+StepStats ParticleSystem::step(double dt) {
     if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("step: dt must be positive and finite (got " + number_text(dt) + ")");
     if (!state_->def.substeps.automatic) return single_step(dt);
     // Equal sub-steps over what is left of dt, re-chosen after each from the latest forces.
     auto& s = state_->solver;
-    StepReport report;
+    StepStats report;
     double done = 0.0;
     int taken = 0;
     const SubstepDef& rule = state_->def.substeps;
@@ -57,13 +57,14 @@ StepReport ParticleSystem::step(double dt) {
         const int count = std::clamp(static_cast<int>(std::min(wanted, 1e9)), 1, std::max(1, rule.max - taken));
         const bool last = count == 1;
         const double h = last ? left : left / count;
-        const StepReport r = single_step(h);
+        const StepStats r = single_step(h);
         ++taken;
         report.evaluations += r.evaluations;
         report.rejected += r.rejected;
+        report.forced += r.forced;
         report.projection_iterations += r.projection_iterations;
         report.cg_iterations += r.cg_iterations;
-        if (static_cast<int>(r.status) > static_cast<int>(report.status)) report.status = r.status;
+        report.status = worse(report.status, r.status);
         if (r.status == SolveStatus::non_finite) break;
         done = last ? dt : done + h;
     }
@@ -71,10 +72,10 @@ StepReport ParticleSystem::step(double dt) {
     return report;
 }
 
-StepReport ParticleSystem::single_step(double dt) {
+StepStats ParticleSystem::single_step(double dt) {
     auto& s = state_->solver;
     s.prepare(state_->view(), dt);
-    StepReport report;
+    StepStats report;
     if (state_->def.integrator == Integrator::rattle) {
         if (s.rows > 0) s.evaluate_rows(state_->positions, state_->velocities);  // the step's start, as rattle_step reads it
         refuse_degenerate_rows(true);
@@ -98,7 +99,8 @@ StepReport ParticleSystem::single_step(double dt) {
     report.evaluations = s.evaluations;
     report.substeps = stats.substeps;
     report.rejected = stats.rejected;
-    if (!stats.finite) {
+    report.forced = stats.forced;
+    if (stats.status == SolveStatus::non_finite) {
         // The stepper left q and v as they were: say so, and do not advance the clock.
         report.status = SolveStatus::non_finite;
         report.cg_iterations = s.cg_iterations;
@@ -106,7 +108,7 @@ StepReport ParticleSystem::single_step(double dt) {
         return report;
     }
     state_->time += dt;
-    if (stats.limited) s.note(SolveStatus::substep_limit);
+    if (stats.status == SolveStatus::substep_limit) s.note(SolveStatus::substep_limit);
     if (state_->def.drift.method == DriftControl::projection) {
         const std::vector<Vec2> x0 = state_->positions, v0 = state_->velocities;
         report.projection_iterations = s.project(state_->positions, state_->velocities);

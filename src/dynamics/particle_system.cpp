@@ -23,6 +23,12 @@ using detail::number_text;
 
 bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 
+void validate(const SubstepDef& substeps) {
+    if (!(substeps.omega_h > 0.0) || !std::isfinite(substeps.omega_h))
+        throw Error("SubstepDef: omega_h must be positive and finite (got " + number_text(substeps.omega_h) + ")");
+    if (substeps.max < 1) throw Error("SubstepDef: max must be at least 1 (got " + std::to_string(substeps.max) + ")");
+}
+
 void validate(const DriftDef& d) {
     if (!(d.omega_dt > 0.0) || !std::isfinite(d.omega_dt))
         throw Error("DriftDef: omega_dt must be positive and finite (got " + number_text(d.omega_dt) + ")");
@@ -70,8 +76,8 @@ std::string_view to_string(SolveStatus status) noexcept {
     return "unknown";
 }
 
-ImplicitCurve::ImplicitCurve(std::function<CurveSample(Vec2)> evaluate) : evaluate_(std::move(evaluate)) {
-    if (!evaluate_) throw Error("ImplicitCurve: evaluate must be a callable (got an empty function)");
+ImplicitFunction::ImplicitFunction(std::function<ImplicitSample(Vec2)> evaluate) : evaluate_(std::move(evaluate)) {
+    if (!evaluate_) throw Error("ImplicitFunction: evaluate must be a callable (got an empty function)");
 }
 
 ParticleSystem::ParticleSystem(ParticleSystemDef def) : state_(std::make_unique<detail::ParticleState>()) {
@@ -80,10 +86,7 @@ ParticleSystem::ParticleSystem(ParticleSystemDef def) : state_(std::make_unique<
     validate(def.drift);
     if (!(def.solver.cg_tolerance > 0.0) || !std::isfinite(def.solver.cg_tolerance))
         throw Error("SolverDef: cg_tolerance must be positive and finite (got " + number_text(def.solver.cg_tolerance) + ")");
-    if (!(def.substeps.omega_h > 0.0) || !std::isfinite(def.substeps.omega_h))
-        throw Error("SubstepDef: omega_h must be positive and finite (got " + number_text(def.substeps.omega_h) + ")");
-    if (def.substeps.max < 1)
-        throw Error("SubstepDef: max must be at least 1 (got " + std::to_string(def.substeps.max) + ")");
+    validate(def.substeps);
     if (def.solver.cg_max_iterations < 0)
         throw Error("SolverDef: cg_max_iterations must be ≥ 0 (got " + std::to_string(def.solver.cg_max_iterations) + ")");
 }
@@ -102,16 +105,16 @@ double ParticleSystem::time() const noexcept { return state_->time; }
 ParticleSystem::ParticleSystem(ParticleSystem&&) noexcept = default;
 ParticleSystem& ParticleSystem::operator=(ParticleSystem&&) noexcept = default;
 
-ParticleId ParticleSystem::add_particle(const ParticleDef& def) {
+ParticleId ParticleSystem::create_particle(const ParticleDef& def) {
     if (!finite(def.position))
-        throw Error("add_particle: position must be finite (got " + number_text(def.position.x) + ", " + number_text(def.position.y) + ")");
+        throw Error("create_particle: position must be finite (got " + number_text(def.position.x) + ", " + number_text(def.position.y) + ")");
     if (!finite(def.velocity))
-        throw Error("add_particle: velocity must be finite (got " + number_text(def.velocity.x) + ", " + number_text(def.velocity.y) + ")");
+        throw Error("create_particle: velocity must be finite (got " + number_text(def.velocity.x) + ", " + number_text(def.velocity.y) + ")");
     if (!(def.mass > 0.0))
-        throw Error("add_particle: mass must be positive, or infinity to pin (got " + number_text(def.mass) + ")");
+        throw Error("create_particle: mass must be positive, or infinity to pin (got " + number_text(def.mass) + ")");
     // A denormal mass has an infinite inverse: every acceleration would be inf or NaN.
     if (!std::isinf(def.mass) && !std::isfinite(1.0 / def.mass))
-        throw Error("add_particle: mass must be at least " + number_text(1.0 / std::numeric_limits<double>::max()) +
+        throw Error("create_particle: mass must be at least " + number_text(1.0 / std::numeric_limits<double>::max()) +
                     " (its inverse overflows; got " + number_text(def.mass) + ")");
     const bool pinned = std::isinf(def.mass);
     state_->positions.push_back(def.position);
@@ -196,54 +199,54 @@ ConstraintId push_constraint(detail::ParticleState& state, const detail::Constra
 }
 }  // namespace
 
-ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b, double length) {
-    const auto ia = checked(a, "add_distance"), ib = checked(b, "add_distance");
-    if (ia == ib) throw Error("add_distance: a and b must be different particles (both " + std::to_string(ia) + ")");
+ConstraintId ParticleSystem::create_distance(ParticleId a, ParticleId b, double length) {
+    const auto ia = checked(a, "create_distance"), ib = checked(b, "create_distance");
+    if (ia == ib) throw Error("create_distance: a and b must be different particles (both " + std::to_string(ia) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
-        throw Error("add_distance: length must be positive and finite (got " + number_text(length) + ")");
+        throw Error("create_distance: length must be positive and finite (got " + number_text(length) + ")");
     if (state_->positions[ia] == state_->positions[ib])
-        throw Error("add_distance: particles " + std::to_string(ia) + " and " + std::to_string(ib) +
+        throw Error("create_distance: particles " + std::to_string(ia) + " and " + std::to_string(ib) +
                     " are at the same point, where the rod has no direction; start them apart");
     return push_constraint(*state_, {ConstraintKind::distance, ia, ib, {}, length, 0});
 }
 
-ConstraintId ParticleSystem::add_distance(ParticleId a, ParticleId b) {
-    const auto ia = checked(a, "add_distance"), ib = checked(b, "add_distance");
-    return add_distance(a, b, distance(state_->positions[ia], state_->positions[ib]));
+ConstraintId ParticleSystem::create_distance(ParticleId a, ParticleId b) {
+    const auto ia = checked(a, "create_distance"), ib = checked(b, "create_distance");
+    return create_distance(a, b, distance(state_->positions[ia], state_->positions[ib]));
 }
 
-ConstraintId ParticleSystem::add_anchor(ParticleId a, Vec2 anchor, double length) {
-    const auto ia = checked(a, "add_anchor");
-    if (!finite(anchor)) throw Error("add_anchor: anchor must be finite (got " + number_text(anchor.x) + ", " + number_text(anchor.y) + ")");
+ConstraintId ParticleSystem::create_anchor(ParticleId a, Vec2 anchor, double length) {
+    const auto ia = checked(a, "create_anchor");
+    if (!finite(anchor)) throw Error("create_anchor: anchor must be finite (got " + number_text(anchor.x) + ", " + number_text(anchor.y) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
-        throw Error("add_anchor: length must be positive and finite (got " + number_text(length) + ")");
+        throw Error("create_anchor: length must be positive and finite (got " + number_text(length) + ")");
     if (state_->positions[ia] == anchor)
-        throw Error("add_anchor: particle " + std::to_string(ia) +
+        throw Error("create_anchor: particle " + std::to_string(ia) +
                     " sits at the anchor, where the rod has no direction; start it at a distance");
     return push_constraint(*state_, {ConstraintKind::anchor, ia, 0, anchor, length, 0});
 }
 
-ConstraintId ParticleSystem::add_fixed_point(ParticleId a, Vec2 point) {
-    const auto ia = checked(a, "add_fixed_point");
-    if (!finite(point)) throw Error("add_fixed_point: point must be finite (got " + number_text(point.x) + ", " + number_text(point.y) + ")");
+ConstraintId ParticleSystem::create_fixed_point(ParticleId a, Vec2 point) {
+    const auto ia = checked(a, "create_fixed_point");
+    if (!finite(point)) throw Error("create_fixed_point: point must be finite (got " + number_text(point.x) + ", " + number_text(point.y) + ")");
     return push_constraint(*state_, {ConstraintKind::fixed_point, ia, 0, point, 0.0, 0});
 }
 
-ConstraintId ParticleSystem::add_curve(ParticleId a, ImplicitCurve curve) {
-    const auto ia = checked(a, "add_curve");
-    const CurveSample at = curve(state_->positions[ia]);
+ConstraintId ParticleSystem::create_implicit(ParticleId a, ImplicitFunction curve) {
+    const auto ia = checked(a, "create_implicit");
+    const ImplicitSample at = curve(state_->positions[ia]);
     if (at.gradient == Vec2{} && at.value != 0.0)
-        throw Error("add_curve: the curve's gradient is zero at particle " + std::to_string(ia) +
-                    " (C = " + number_text(at.value) + ", as at the centre of a circle), so its force has no direction; "
+        throw Error("create_implicit: the curve's gradient is zero at particle " + std::to_string(ia) +
+                    " (C = " + number_text(at.value) + ", as at the center of a circle), so its force has no direction; "
                     "start the particle elsewhere");
     state_->curves.push_back(std::move(curve));
     return push_constraint(*state_, {ConstraintKind::curve, ia, 0, {}, 0.0, static_cast<std::uint32_t>(state_->curves.size() - 1)});
 }
 
-ConstraintId ParticleSystem::add_constraint(UserConstraint constraint) {
-    if (constraint.particles.empty()) throw Error("add_constraint: particles must not be empty");
-    for (ParticleId p : constraint.particles) checked(p, "add_constraint");
-    if (!constraint.evaluate) throw Error("add_constraint: evaluate must be a callable (got an empty function)");
+ConstraintId ParticleSystem::create_constraint(UserConstraint constraint) {
+    if (constraint.particles.empty()) throw Error("create_constraint: particles must not be empty");
+    for (ParticleId p : constraint.particles) checked(p, "create_constraint");
+    if (!constraint.evaluate) throw Error("create_constraint: evaluate must be a callable (got an empty function)");
     state_->users.push_back(std::move(constraint));
     return push_constraint(*state_, {ConstraintKind::user, 0, 0, {}, 0.0, static_cast<std::uint32_t>(state_->users.size() - 1)});
 }
@@ -251,6 +254,11 @@ ConstraintId ParticleSystem::add_constraint(UserConstraint constraint) {
 void ParticleSystem::set_drift(const DriftDef& drift) {
     validate(drift);
     state_->def.drift = drift;
+}
+
+void ParticleSystem::set_substeps(const SubstepDef& substeps) {
+    validate(substeps);
+    state_->def.substeps = substeps;
 }
 
 void ParticleSystem::set_integrator(Integrator integrator) {

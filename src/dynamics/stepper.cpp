@@ -200,7 +200,7 @@ StepStats Stepper::step(SecondOrderSystem& system, double t, std::span<double> q
             // A non-finite state or error estimate does not improve with smaller sub-steps
             // (a NaN stays NaN): stop now instead of rejecting until max_substeps.
             if (!finite) {
-                stats.finite = false;
+                stats.status = SolveStatus::non_finite;
                 break;
             }
             const bool forced = h <= rk45_.min_step || stats.substeps + stats.rejected >= rk45_.max_substeps;
@@ -222,7 +222,7 @@ StepStats Stepper::step(SecondOrderSystem& system, double t, std::span<double> q
                 last_rejected = false;
                 if (stats.substeps + stats.rejected >= rk45_.max_substeps && done < dt) {
                     h = dt - done;  // give up control: finish the frame in one sub-step
-                    stats.limited = true;
+                    stats.status = SolveStatus::substep_limit;
                 }
             } else {
                 ++stats.rejected;
@@ -234,8 +234,10 @@ StepStats Stepper::step(SecondOrderSystem& system, double t, std::span<double> q
         break;
     }
     }
-    for (std::size_t i = 0; i < N && stats.finite; ++i) stats.finite = std::isfinite(y[i]);
-    if (stats.finite) {  // otherwise q and v stay as they were
+    bool finite = stats.status != SolveStatus::non_finite;
+    for (std::size_t i = 0; i < N && finite; ++i) finite = std::isfinite(y[i]);
+    if (!finite) stats.status = SolveStatus::non_finite;
+    if (finite) {  // otherwise q and v stay as they were
         std::copy(y, y + n, q.begin());
         std::copy(y + n, y + N, v.begin());
     }

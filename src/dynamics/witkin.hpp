@@ -106,7 +106,7 @@ struct SolverWorkspace final : SecondOrderSystem {
     // The conditioning of a row, κ = |C|·h/|∇C|²: over the Newton step s = |C|/|∇C| the
     // gradient changes by h·s (exactly for the quadratic rods and anchors), so for κ < 1 it
     // cannot vanish before C does, while for κ ≥ 1 the linearization overshoots (a rod
-    // compressed below 1/√3 of its length, a bead near a circle's centre) and Baumgarte's
+    // compressed below 1/√3 of its length, a bead near a circle's center) and Baumgarte's
     // −ks·C along a short gradient flings the particle away.
     // C limited to κ ≤ 1, |C| ≤ |∇C|²/h: what position corrections (Baumgarte's ks·C, the
     // Newton steps of the projection and of RATTLE) aim at, a trust region that the next

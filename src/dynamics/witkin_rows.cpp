@@ -52,7 +52,7 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
             gradient_norm2[row] = 1.0;
             break;
         case ConstraintKind::curve: {
-            const CurveSample sample = view.curves[r.extra](x[r.a]);
+            const ImplicitSample sample = view.curves[r.extra](x[r.a]);
             const Vec2 u = v[r.a];
             c[row] = sample.value;
             jacobian[b] = sample.gradient;

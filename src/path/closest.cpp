@@ -175,16 +175,16 @@ struct Leaf {
     }
 };
 
-// A circle arc (or a spiral of constant radius): the nearest angle is that of q − centre,
+// A circle arc (or a spiral of constant radius): the nearest angle is that of q − center,
 // unimodally; the candidates are the first such angle in the range and the range's ends.
-// At the centre every point ties and the range's start wins.
-void circle(const PathNode& n, Vec2 centre, double rotation, double a0, double a1, double lo, double hi, Map map,
+// At the center every point ties and the range's start wins.
+void circle(const PathNode& n, Vec2 center, double rotation, double a0, double a1, double lo, double hi, Map map,
             Search& s) noexcept {
     auto offer = [&](double v) { s.offer(map(v), n.point(v)); };
     offer(lo);
     offer(hi);
     const double span = a1 - a0;
-    const Vec2 d = s.q - centre;
+    const Vec2 d = s.q - center;
     if (span == 0.0 || (d.x == 0.0 && d.y == 0.0)) return;
     const double phi = std::atan2(d.y, d.x) - rotation;
     const double t_lo = a0 + span * lo, t_hi = a0 + span * hi;
@@ -280,7 +280,7 @@ void search(const PathNode& node, double lo, double hi, Map map, Search& s) noex
         case PathKind::elliptical_arc: {
             const auto& arc = static_cast<const ArcNode&>(node);
             if (arc.rx == arc.ry) {
-                circle(node, arc.centre, arc.rotation, arc.a0, arc.a1, lo, hi, map, s);
+                circle(node, arc.center, arc.rotation, arc.a0, arc.a1, lo, hi, map, s);
                 return;
             }
             break;
@@ -288,7 +288,7 @@ void search(const PathNode& node, double lo, double hi, Map map, Search& s) noex
         case PathKind::spiral: {
             const auto& sp = static_cast<const SpiralNode&>(node);
             if (sp.r0 == sp.r1) {
-                circle(node, sp.centre, 0.0, sp.a0, sp.a1, lo, hi, map, s);
+                circle(node, sp.center, 0.0, sp.a0, sp.a1, lo, hi, map, s);
                 return;
             }
             break;

@@ -108,9 +108,9 @@ struct Fitter {
                 }
             }
         }
-        const Vec2 centre = normalized(pts[split - 1] - pts[split + 1]);
-        fit(first, split, t1, centre);
-        fit(split, last, -centre, t2);
+        const Vec2 center = normalized(pts[split - 1] - pts[split + 1]);
+        fit(first, split, t1, center);
+        fit(split, last, -center, t2);
     }
 };
 

@@ -35,9 +35,9 @@ std::size_t spline_segment(double u, std::size_t segments, double& t) noexcept {
 
 // --- ArcNode ------------------------------------------------------------------------------
 
-ArcNode::ArcNode(PathKind kind, Vec2 centre, double rx, double ry, double rotation, double a0, double a1) noexcept
+ArcNode::ArcNode(PathKind kind, Vec2 center, double rx, double ry, double rotation, double a0, double a1) noexcept
     : PathNode(kind),
-      centre(centre),
+      center(center),
       rx(rx),
       ry(ry),
       rotation(rotation),
@@ -53,7 +53,7 @@ ArcNode::ArcNode(PathKind kind, Vec2 centre, double rx, double ry, double rotati
 }
 
 Vec2 ArcNode::at_angle(double theta) const noexcept {
-    return centre + ex_ * std::cos(theta) + ey_ * std::sin(theta);
+    return center + ex_ * std::cos(theta) + ey_ * std::sin(theta);
 }
 
 Vec2 ArcNode::point(double u) const noexcept { return at_angle(a0 + span_ * u); }
@@ -104,8 +104,8 @@ void ArcNode::append_flattened(double tolerance, std::vector<Vec2>& out) const {
 
 // --- SpiralNode ---------------------------------------------------------------------------
 
-SpiralNode::SpiralNode(Vec2 centre, double r0, double r1, double a0, double a1) noexcept
-    : PathNode(PathKind::spiral), centre(centre), r0(r0), r1(r1), a0(a0), a1(a1) {
+SpiralNode::SpiralNode(Vec2 center, double r0, double r1, double a0, double a1) noexcept
+    : PathNode(PathKind::spiral), center(center), r0(r0), r1(r1), a0(a0), a1(a1) {
     // (F(r1) − F(r0))/ρ loses about log10(r/ρ) digits: near-constant radii use quadrature.
     const double rho = r1 - r0;
     closed_ = a1 == a0 || rho == 0.0 || std::abs(rho) >= 0.01 * std::max(r0, r1);
@@ -114,7 +114,7 @@ SpiralNode::SpiralNode(Vec2 centre, double r0, double r1, double a0, double a1) 
 Vec2 SpiralNode::point(double u) const noexcept {
     const double r = r0 + (r1 - r0) * u;
     const double theta = a0 + (a1 - a0) * u;
-    return centre + Vec2{std::cos(theta), std::sin(theta)} * r;
+    return center + Vec2{std::cos(theta), std::sin(theta)} * r;
 }
 
 Vec2 SpiralNode::d1(double u) const noexcept {

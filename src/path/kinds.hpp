@@ -29,7 +29,7 @@ inline std::size_t segment_of(double x, std::size_t count, double& local) noexce
 /// An arc of an ellipse (a circle when rx == ry and rotation == 0).
 class ArcNode final : public PathNode {
 public:
-    ArcNode(PathKind kind, Vec2 centre, double rx, double ry, double rotation, double a0, double a1) noexcept;
+    ArcNode(PathKind kind, Vec2 center, double rx, double ry, double rotation, double a0, double a1) noexcept;
     Vec2 point(double u) const noexcept override;
     Vec2 d1(double u) const noexcept override;
     Vec2 d2(double u) const noexcept override;
@@ -37,7 +37,7 @@ public:
     double length_at(double u) const noexcept override;
     void append_flattened(double tolerance, std::vector<Vec2>& out) const override;
 
-    const Vec2 centre;
+    const Vec2 center;
     const double rx, ry, rotation, a0, a1;
 
     /// Position at angle θ.
@@ -56,14 +56,14 @@ private:
 /// A circle with a radius interpolated linearly.
 class SpiralNode final : public PathNode {
 public:
-    SpiralNode(Vec2 centre, double r0, double r1, double a0, double a1) noexcept;
+    SpiralNode(Vec2 center, double r0, double r1, double a0, double a1) noexcept;
     Vec2 point(double u) const noexcept override;
     Vec2 d1(double u) const noexcept override;
     Vec2 d2(double u) const noexcept override;
     DerivativeBounds derivative_bounds(double a, double b) const noexcept override;
     double length_at(double u) const noexcept override;
 
-    const Vec2 centre;
+    const Vec2 center;
     const double r0, r1, a0, a1;
 
 protected:

@@ -203,9 +203,9 @@ Vec2 LinearPath::end() const noexcept { return static_cast<const detail::LinearN
 
 namespace {
 
-std::shared_ptr<const detail::ArcNode> arc(const char* who, PathKind kind, Vec2 centre, double rx, double ry,
+std::shared_ptr<const detail::ArcNode> arc(const char* who, PathKind kind, Vec2 center, double rx, double ry,
                                            double rotation, double a0, double a1) {
-    require_finite(who, "centre", centre);
+    require_finite(who, "center", center);
     if (kind == PathKind::circle) {
         if (!(rx > 0.0) || !std::isfinite(rx)) fail(who, "radius must be positive and finite (got " + text(rx) + ")");
     } else {
@@ -216,32 +216,32 @@ std::shared_ptr<const detail::ArcNode> arc(const char* who, PathKind kind, Vec2 
     require_finite(who, "start_angle", a0);
     require_finite(who, "end_angle", a1);
     require_turns(who, a0, a1);
-    return make_node<detail::ArcNode>(kind, centre, rx, ry, rotation, a0, a1);
+    return make_node<detail::ArcNode>(kind, center, rx, ry, rotation, a0, a1);
 }
 
 }  // namespace
 
-CirclePath::CirclePath(Vec2 centre, double radius, double start_angle, double end_angle)
-    : Path(arc("CirclePath", PathKind::circle, centre, radius, radius, 0.0, start_angle, end_angle)) {}
-Vec2 CirclePath::centre() const noexcept { return static_cast<const detail::ArcNode&>(*node_).centre; }
+CirclePath::CirclePath(Vec2 center, double radius, double start_angle, double end_angle)
+    : Path(arc("CirclePath", PathKind::circle, center, radius, radius, 0.0, start_angle, end_angle)) {}
+Vec2 CirclePath::center() const noexcept { return static_cast<const detail::ArcNode&>(*node_).center; }
 double CirclePath::radius() const noexcept { return static_cast<const detail::ArcNode&>(*node_).rx; }
 double CirclePath::start_angle() const noexcept { return static_cast<const detail::ArcNode&>(*node_).a0; }
 double CirclePath::end_angle() const noexcept { return static_cast<const detail::ArcNode&>(*node_).a1; }
 
-EllipticalArcPath::EllipticalArcPath(Vec2 centre, double rx, double ry, double rotation, double start_angle,
+EllipticalArcPath::EllipticalArcPath(Vec2 center, double rx, double ry, double rotation, double start_angle,
                                      double end_angle)
-    : Path(arc("EllipticalArcPath", PathKind::elliptical_arc, centre, rx, ry, rotation, start_angle, end_angle)) {}
-Vec2 EllipticalArcPath::centre() const noexcept { return static_cast<const detail::ArcNode&>(*node_).centre; }
+    : Path(arc("EllipticalArcPath", PathKind::elliptical_arc, center, rx, ry, rotation, start_angle, end_angle)) {}
+Vec2 EllipticalArcPath::center() const noexcept { return static_cast<const detail::ArcNode&>(*node_).center; }
 double EllipticalArcPath::rx() const noexcept { return static_cast<const detail::ArcNode&>(*node_).rx; }
 double EllipticalArcPath::ry() const noexcept { return static_cast<const detail::ArcNode&>(*node_).ry; }
 double EllipticalArcPath::rotation() const noexcept { return static_cast<const detail::ArcNode&>(*node_).rotation; }
 double EllipticalArcPath::start_angle() const noexcept { return static_cast<const detail::ArcNode&>(*node_).a0; }
 double EllipticalArcPath::end_angle() const noexcept { return static_cast<const detail::ArcNode&>(*node_).a1; }
 
-SpiralPath::SpiralPath(Vec2 centre, double start_radius, double end_radius, double start_angle, double end_angle)
+SpiralPath::SpiralPath(Vec2 center, double start_radius, double end_radius, double start_angle, double end_angle)
     : Path([&] {
           const char* who = "SpiralPath";
-          require_finite(who, "centre", centre);
+          require_finite(who, "center", center);
           if (!(start_radius >= 0.0) || !std::isfinite(start_radius)) {
               fail(who, "start_radius must be non-negative and finite (got " + text(start_radius) + ")");
           }
@@ -251,9 +251,9 @@ SpiralPath::SpiralPath(Vec2 centre, double start_radius, double end_radius, doub
           require_finite(who, "start_angle", start_angle);
           require_finite(who, "end_angle", end_angle);
           require_turns(who, start_angle, end_angle);
-          return make_node<detail::SpiralNode>(centre, start_radius, end_radius, start_angle, end_angle);
+          return make_node<detail::SpiralNode>(center, start_radius, end_radius, start_angle, end_angle);
       }()) {}
-Vec2 SpiralPath::centre() const noexcept { return static_cast<const detail::SpiralNode&>(*node_).centre; }
+Vec2 SpiralPath::center() const noexcept { return static_cast<const detail::SpiralNode&>(*node_).center; }
 double SpiralPath::start_radius() const noexcept { return static_cast<const detail::SpiralNode&>(*node_).r0; }
 double SpiralPath::end_radius() const noexcept { return static_cast<const detail::SpiralNode&>(*node_).r1; }
 double SpiralPath::start_angle() const noexcept { return static_cast<const detail::SpiralNode&>(*node_).a0; }

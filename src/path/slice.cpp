@@ -94,13 +94,13 @@ Path cut(const Path& path, double u0, double u1) {
         case PathKind::elliptical_arc: {
             const auto& a = static_cast<const ArcNode&>(node);
             const double t0 = a.a0 + (a.a1 - a.a0) * u0, t1 = u1 == 1.0 ? a.a1 : a.a0 + (a.a1 - a.a0) * u1;
-            if (node.kind() == PathKind::circle) return CirclePath(a.centre, a.rx, t0, t1);
-            return EllipticalArcPath(a.centre, a.rx, a.ry, a.rotation, t0, t1);
+            if (node.kind() == PathKind::circle) return CirclePath(a.center, a.rx, t0, t1);
+            return EllipticalArcPath(a.center, a.rx, a.ry, a.rotation, t0, t1);
         }
         case PathKind::spiral: {
             const auto& s = static_cast<const SpiralNode&>(node);
             auto at = [](double from, double to, double u) { return u == 1.0 ? to : from + (to - from) * u; };
-            return SpiralPath(s.centre, std::max(0.0, at(s.r0, s.r1, u0)), std::max(0.0, at(s.r0, s.r1, u1)),
+            return SpiralPath(s.center, std::max(0.0, at(s.r0, s.r1, u0)), std::max(0.0, at(s.r0, s.r1, u1)),
                               at(s.a0, s.a1, u0), at(s.a0, s.a1, u1));
         }
         case PathKind::quadratic_bezier: {
@@ -182,7 +182,7 @@ struct SvgWriter {
         }
         pen = points.size() ? *(points.end() - 1) : pen;
     }
-    // A part that starts where the pen is (to rounding: the parser's arc centres and ends agree
+    // A part that starts where the pen is (to rounding: the parser's arc centers and ends agree
     // to a few ulps) continues the subpath.
     void move_to(Vec2 p) {
         const double scale = std::max({std::abs(p.x), std::abs(p.y), 1.0});
@@ -191,7 +191,7 @@ struct SvgWriter {
 
     void arc(const ArcNode& a) {
         const double span = a.a1 - a.a0;
-        // Pieces of at most a quarter turn: the large-arc flag is 0, and a reader's centre from the
+        // Pieces of at most a quarter turn: the large-arc flag is 0, and a reader's center from the
         // end points stays well conditioned (it is not near a half turn).
         const int n = std::max(1, static_cast<int>(std::ceil(std::abs(span) / (0.5 * pi))));
         for (int k = 1; k <= n; ++k) {

@@ -33,15 +33,15 @@ PathSpec describe(const Path& path) {
         }
         case PathKind::circle: {
             const auto& n = static_cast<const ArcNode&>(node);
-            return CircleSpec{n.centre, n.rx, n.a0, n.a1};
+            return CircleSpec{n.center, n.rx, n.a0, n.a1};
         }
         case PathKind::elliptical_arc: {
             const auto& n = static_cast<const ArcNode&>(node);
-            return EllipticalArcSpec{n.centre, n.rx, n.ry, n.rotation, n.a0, n.a1};
+            return EllipticalArcSpec{n.center, n.rx, n.ry, n.rotation, n.a0, n.a1};
         }
         case PathKind::spiral: {
             const auto& n = static_cast<const SpiralNode&>(node);
-            return SpiralSpec{n.centre, n.r0, n.r1, n.a0, n.a1};
+            return SpiralSpec{n.center, n.r0, n.r1, n.a0, n.a1};
         }
         case PathKind::sine_wave: {
             const auto& n = static_cast<const SineWaveNode&>(node);
@@ -79,12 +79,12 @@ PathSpec describe(const Path& path) {
 Path from_spec(const PathSpec& spec) {
     struct Build {
         Path operator()(const LinearSpec& s) const { return LinearPath(s.start, s.end); }
-        Path operator()(const CircleSpec& s) const { return CirclePath(s.centre, s.radius, s.start_angle, s.end_angle); }
+        Path operator()(const CircleSpec& s) const { return CirclePath(s.center, s.radius, s.start_angle, s.end_angle); }
         Path operator()(const EllipticalArcSpec& s) const {
-            return EllipticalArcPath(s.centre, s.rx, s.ry, s.rotation, s.start_angle, s.end_angle);
+            return EllipticalArcPath(s.center, s.rx, s.ry, s.rotation, s.start_angle, s.end_angle);
         }
         Path operator()(const SpiralSpec& s) const {
-            return SpiralPath(s.centre, s.start_radius, s.end_radius, s.start_angle, s.end_angle);
+            return SpiralPath(s.center, s.start_radius, s.end_radius, s.start_angle, s.end_angle);
         }
         Path operator()(const SineWaveSpec& s) const { return SineWavePath(s.start, s.end, s.frequency, s.amplitude); }
         Path operator()(const QuadraticBezierSpec& s) const {

@@ -380,7 +380,7 @@ private:
         // F.6.2: an arc whose endpoints coincide is omitted; a zero radius makes it a line.
         if (end == current_) return;
         SvgSegment s = segment(SvgSegment::Kind::arc);
-        if (!svg_arc_to_centre(current_, end, rx, ry, rotation, large_arc, sweep, s)) {
+        if (!svg_arc_to_center(current_, end, rx, ry, rotation, large_arc, sweep, s)) {
             line(end);
             return;
         }
@@ -409,7 +409,7 @@ private:
 
 }  // namespace
 
-bool svg_arc_to_centre(Vec2 from, Vec2 to, double rx, double ry, double rotation_degrees, bool large_arc,
+bool svg_arc_to_center(Vec2 from, Vec2 to, double rx, double ry, double rotation_degrees, bool large_arc,
                        bool sweep, SvgSegment& out) noexcept {
     rx = std::abs(rx);
     ry = std::abs(ry);
@@ -437,11 +437,11 @@ bool svg_arc_to_centre(Vec2 from, Vec2 to, double rx, double ry, double rotation
     // n² is the SVG notes' Λ: above 1 the radii are too small to reach and are scaled up (F.6.6).
     // Divided directly, x1/rx is exact for the common just-reaching arc (a half circle drawn
     // from its diameter); h·hypot(xu/rx, yu/ry) rounds 1 to 1 − 2⁻⁵³ there, and the square
-    // root below turns that into a centre offset of 1.5e-8 radii. An overflow gives n = inf:
+    // root below turns that into a center offset of 1.5e-8 radii. An overflow gives n = inf:
     // scaled up; an underflow gives n ≈ 0, where the offset is √(1 − n²) ≈ 1 anyway.
     const double n = std::hypot(x1 / rx, y1 / ry);
     // Radii that reach to within a few ulps (decimal data that only rounds to just-reaching:
-    // icons draw circles as two half-arcs) reach exactly: the centre is the chord's midpoint.
+    // icons draw circles as two half-arcs) reach exactly: the center is the chord's midpoint.
     constexpr double reach_tolerance = 8.0 * std::numeric_limits<double>::epsilon();
     const bool just_reaching = std::abs(1.0 - n * n) <= reach_tolerance;
     double cx = 0.0;
@@ -453,7 +453,7 @@ bool svg_arc_to_centre(Vec2 from, Vec2 to, double rx, double ry, double rotation
         ry = h * std::hypot(xu / q, yu);
         if (!std::isfinite(rx) || !std::isfinite(ry)) return false;
     } else {
-        // F.6.5.2 divided through by rx²·ry²: the centre sits sqrt(1/Λ − 1) half-chords off.
+        // F.6.5.2 divided through by rx²·ry²: the center sits sqrt(1/Λ − 1) half-chords off.
         const double k = std::sqrt((1.0 - n) * (1.0 + n)) * (large_arc == sweep ? -1.0 : 1.0);
         cx = k * rx * (yu / std::hypot(xu / q, yu));
         cy = -k * ry * (xu / std::hypot(xu, yu * q));
@@ -474,13 +474,13 @@ bool svg_arc_to_centre(Vec2 from, Vec2 to, double rx, double ry, double rotation
     out.kind = SvgSegment::Kind::arc;
     out.p[0] = from;
     out.p[1] = to;
-    out.centre = Vec2{c * cx - s * cy, s * cx + c * cy} + mid;
+    out.center = Vec2{c * cx - s * cy, s * cx + c * cy} + mid;
     out.rx = rx;
     out.ry = ry;
     out.rotation = degrees * (pi / 180.0);
     out.start_angle = theta1;
     out.end_angle = theta1 + delta;
-    return finite(out.centre);
+    return finite(out.center);
 }
 
 SvgCommands parse_svg_segments(std::string_view data) {
@@ -505,9 +505,9 @@ Path to_path(const detail::SvgSegment& s) {
         // A circular arc is a CirclePath (its rotation only shifts the angles); anything
         // else is the exact ellipse.
         if (s.rx == s.ry) {
-            return CirclePath(s.centre, s.rx, s.start_angle + s.rotation, s.end_angle + s.rotation);
+            return CirclePath(s.center, s.rx, s.start_angle + s.rotation, s.end_angle + s.rotation);
         }
-        return EllipticalArcPath(s.centre, s.rx, s.ry, s.rotation, s.start_angle, s.end_angle);
+        return EllipticalArcPath(s.center, s.rx, s.ry, s.rotation, s.start_angle, s.end_angle);
     }
     return LinearPath(s.p[0], s.p[1]);
 }

@@ -1,7 +1,7 @@
 // SVG path data → a flat list of drawing commands (private to the path module; in svg.cpp).
 //
 // The parser knows nothing about Path objects: it turns the text into absolute geometry
-// (moves, lines, quadratic and cubic Béziers, centre-parametrized elliptical arcs, closes),
+// (moves, lines, quadratic and cubic Béziers, center-parametrized elliptical arcs, closes),
 // so that parse_svg_path only has to wrap each drawn segment in its path kind, and the
 // grammar can be read on its own. The same list, kept beside the path, lets render draw the
 // data as SVG does (closed subpaths get joins, zero-length subpaths get round-cap dots).
@@ -34,11 +34,11 @@ struct SvgCommands {
 /// grape::Error.
 SvgCommands parse_svg_segments(std::string_view data);
 
-/// The SVG implementation notes' endpoint → centre conversion (F.6.5, F.6.6) for an arc from
+/// The SVG implementation notes' endpoint → center conversion (F.6.5, F.6.6) for an arc from
 /// `from` to `to`. Returns false when the arc is a straight line (a zero radius, or endpoints
 /// too close for the radii to matter) and true after filling the arc fields of `out`.
 /// Callers have already dropped arcs whose endpoints coincide.
-bool svg_arc_to_centre(Vec2 from, Vec2 to, double rx, double ry, double rotation_degrees,
+bool svg_arc_to_center(Vec2 from, Vec2 to, double rx, double ry, double rotation_degrees,
                        bool large_arc, bool sweep, SvgSegment& out) noexcept;
 
 /// A ComplexPath made from SVG path data: the parts and cues as any complex path, plus the

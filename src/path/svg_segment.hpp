@@ -17,9 +17,9 @@ struct SvgSegment {
     Kind kind = Kind::line;
     /// Line: p[0..1]; quadratic: p[0..2]; cubic: p[0..3]; arc: p[0] start, p[1] end (as written).
     std::array<Vec2, 4> p{};
-    /// Arc only: point = centre + R(rotation)·(rx·cos θ, ry·sin θ), θ from start_angle to
+    /// Arc only: point = center + R(rotation)·(rx·cos θ, ry·sin θ), θ from start_angle to
     /// end_angle (radians; increasing θ turns clockwise on screen, as SVG's sweep flag 1).
-    Vec2 centre{};
+    Vec2 center{};
     double rx = 0.0;
     double ry = 0.0;
     double rotation = 0.0;  ///< radians, in [0, 2π)

@@ -149,15 +149,15 @@ double Affine::max_stretch() const noexcept {
 Affine fit(const Bounds& world, const Rect& viewport, double margin) noexcept {
     const double w = std::max(0.0, viewport.width - 2.0 * margin);
     const double h = std::max(0.0, viewport.height - 2.0 * margin);
-    const Vec2 centre{viewport.x + 0.5 * viewport.width, viewport.y + 0.5 * viewport.height};
-    if (!is_finite(world.min) || !is_finite(world.max)) return Affine::translation(centre);
+    const Vec2 center{viewport.x + 0.5 * viewport.width, viewport.y + 0.5 * viewport.height};
+    if (!is_finite(world.min) || !is_finite(world.max)) return Affine::translation(center);
     const Vec2 size = world.size();
     double scale = 1.0;
     if (size.x > 0.0 && size.y > 0.0) scale = std::min(w / size.x, h / size.y);
     else if (size.x > 0.0) scale = w / size.x;
     else if (size.y > 0.0) scale = h / size.y;
     const Vec2 mid = (world.min + world.max) * 0.5;
-    return Affine::translation(centre) * Affine::scaling(scale, scale) * Affine::translation(-mid);
+    return Affine::translation(center) * Affine::scaling(scale, scale) * Affine::translation(-mid);
 }
 
 // ----------------------------------------------------------------------------------- Image
@@ -304,25 +304,25 @@ void Canvas::fill_polygon(std::span<const Vec2> points, const FillStyle& style) 
     detail::fill(cr, style);
 }
 
-void Canvas::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style) {
-    if (!is_finite(centre) || !std::isfinite(radius) || radius <= 0.0) return;
+void Canvas::stroke_circle(Vec2 center, double radius, const StrokeStyle& style) {
+    if (!is_finite(center) || !std::isfinite(radius) || radius <= 0.0) return;
     cairo_new_path(state_->cr);
-    cairo_arc(state_->cr, centre.x, centre.y, radius, 0.0, 2.0 * pi);
+    cairo_arc(state_->cr, center.x, center.y, radius, 0.0, 2.0 * pi);
     cairo_close_path(state_->cr);
     detail::stroke(state_->cr, style);
 }
 
-void Canvas::fill_circle(Vec2 centre, double radius, const FillStyle& style) {
-    if (!is_finite(centre) || !std::isfinite(radius) || radius <= 0.0) return;
+void Canvas::fill_circle(Vec2 center, double radius, const FillStyle& style) {
+    if (!is_finite(center) || !std::isfinite(radius) || radius <= 0.0) return;
     cairo_new_path(state_->cr);
-    cairo_arc(state_->cr, centre.x, centre.y, radius, 0.0, 2.0 * pi);
+    cairo_arc(state_->cr, center.x, center.y, radius, 0.0, 2.0 * pi);
     cairo_close_path(state_->cr);
     detail::fill(state_->cr, style);
 }
 
-void Canvas::dot(Vec2 centre, double radius, Color color) {
-    if (!is_finite(centre) || !std::isfinite(radius) || radius <= 0.0) return;
-    const Vec2 d = transform().apply(centre);
+void Canvas::dot(Vec2 center, double radius, Color color) {
+    if (!is_finite(center) || !std::isfinite(radius) || radius <= 0.0) return;
+    const Vec2 d = transform().apply(center);
     cairo_t* cr = state_->cr;
     cairo_save(cr);
     cairo_identity_matrix(cr);
@@ -391,7 +391,7 @@ void Canvas::text(Vec2 at, std::string_view utf8, const TextStyle& style) {
     cairo_text_extents_t e;
     cairo_text_extents(cr, s.c_str(), &e);
     const double shift = style.align == TextAlign::left     ? 0.0
-                         : style.align == TextAlign::centre ? 0.5 * e.x_advance
+                         : style.align == TextAlign::center ? 0.5 * e.x_advance
                                                             : e.x_advance;
     cairo_move_to(cr, d.x - shift, d.y);
     cairo_set_source_rgba(cr, style.color.r, style.color.g, style.color.b, style.color.a);

@@ -122,7 +122,7 @@ struct HugeArc {
 
 // Draws the arc c + N·(cos θ, sin θ), θ in [0, ω] (world units) as HugeArc when its device
 // radius is beyond huge_arc_radius; false otherwise.
-bool add_huge_arc(cairo_t* cr, Vec2 centre, Vec2 col0, Vec2 col1, double omega, double tolerance) {
+bool add_huge_arc(cairo_t* cr, Vec2 center, Vec2 col0, Vec2 col1, double omega, double tolerance) {
     cairo_matrix_t m;
     cairo_get_matrix(cr, &m);
     const auto linear = [&](Vec2 v) { return Vec2{m.xx * v.x + m.xy * v.y, m.yx * v.x + m.yy * v.y}; };
@@ -139,7 +139,7 @@ bool add_huge_arc(cairo_t* cr, Vec2 centre, Vec2 col0, Vec2 col1, double omega, 
     cairo_identity_matrix(cr);
     cairo_clip_extents(cr, &x1, &y1, &x2, &y2);
     constexpr double margin = 64.0;  // device units: wide strokes and their caps stay outside
-    const HugeArc arc{cr, Vec2{m.xx * centre.x + m.xy * centre.y + m.x0, m.yx * centre.x + m.yy * centre.y + m.y0}, a, b,
+    const HugeArc arc{cr, Vec2{m.xx * center.x + m.xy * center.y + m.x0, m.yx * center.x + m.yy * center.y + m.y0}, a, b,
                       radius, tolerance * stretch, {x1 - margin, y1 - margin, x2 - x1 + 2 * margin, y2 - y1 + 2 * margin}};
     arc.piece(0.0, arc.at(0.0), omega, arc.at(omega), 0);  // the caller began the subpath at x(0)
     cairo_restore(cr);
@@ -167,18 +167,18 @@ void add_arc(cairo_t* cr, const Path& path, double tolerance) {
         return;
     }
     const double omega = std::sqrt(omega2);
-    const Vec2 centre = p0 + a0 / omega2;
-    const Vec2 col0 = p0 - centre;
+    const Vec2 center = p0 + a0 / omega2;
+    const Vec2 col0 = p0 - center;
     const Vec2 col1 = path.d1(0.0) / omega;
     if (!(std::abs(cross(col0, col1)) > 0.0)) {
         add_flattened(cr, path, tolerance);
         return;
     }
     begin_at(cr, p0, tolerance);
-    if (add_huge_arc(cr, centre, col0, col1, omega, tolerance)) return;
+    if (add_huge_arc(cr, center, col0, col1, omega, tolerance)) return;
     cairo_matrix_t saved;
     cairo_get_matrix(cr, &saved);
-    const cairo_matrix_t n{col0.x, col0.y, col1.x, col1.y, centre.x, centre.y};
+    const cairo_matrix_t n{col0.x, col0.y, col1.x, col1.y, center.x, center.y};
     cairo_transform(cr, &n);
     cairo_arc(cr, 0.0, 0.0, 1.0, 0.0, omega);
     cairo_set_matrix(cr, &saved);
@@ -208,8 +208,8 @@ void add_svg(cairo_t* cr, const std::vector<SvgSegment>& commands, double tolera
                 // back to flattening for arcs too thin for cairo's matrices).
                 std::optional<Path> arc;
                 try {
-                    if (c.rx == c.ry) arc = CirclePath(c.centre, c.rx, c.start_angle + c.rotation, c.end_angle + c.rotation);
-                    else arc = EllipticalArcPath(c.centre, c.rx, c.ry, c.rotation, c.start_angle, c.end_angle);
+                    if (c.rx == c.ry) arc = CirclePath(c.center, c.rx, c.start_angle + c.rotation, c.end_angle + c.rotation);
+                    else arc = EllipticalArcPath(c.center, c.rx, c.ry, c.rotation, c.start_angle, c.end_angle);
                 } catch (const Error&) {
                 }
                 if (arc) add_arc(cr, *arc, tolerance);
@@ -438,7 +438,7 @@ void draw_plot(Canvas& canvas, const Rect& area, std::span<const PlotSeries> ser
         for (std::size_t i = 0; i < n; ++i)
             if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) box.add(Vec2{s.x[i], s.y[i]});
     }
-    if (!title.empty()) canvas.text({area.x + 0.5 * area.width, area.y + 16.0}, title, {.size = 13.0, .align = TextAlign::centre, .bold = true});
+    if (!title.empty()) canvas.text({area.x + 0.5 * area.width, area.y + 16.0}, title, {.size = 13.0, .align = TextAlign::center, .bold = true});
     const StrokeStyle axis{.color = colors::grey, .width = 1.0, .cap = LineCap::butt};
     canvas.stroke_line({left, top}, {left, bottom}, axis);
     canvas.stroke_line({left, bottom}, {right, bottom}, axis);

@@ -27,6 +27,13 @@ Path PathReader::read(const json& j, const std::string& pointer, int depth) cons
     }
     if (!j.is_object()) fail(pointer, "expected a path object or a path name, got " + type_of(j));
     const std::string kind = string_value(required(j, pointer, "kind"), child(pointer, "kind"));
+    if (const auto old = j.find("centre"); old != j.end()) {  // the key's older spelling, still read
+        if (j.contains("center")) fail(child(pointer, "centre"), "give \"center\" only (\"centre\" is its older spelling)");
+        json renamed = j;
+        renamed["center"] = *old;
+        renamed.erase("centre");
+        return read(renamed, pointer, depth);
+    }
     try {
         const auto s = j.find("slice");
         if (s == j.end()) return read_kind(j, pointer, kind, depth);
@@ -59,21 +66,21 @@ Path PathReader::read_kind(const json& j, const std::string& pointer, const std:
         return done(LinearPath(vec2_field(j, pointer, "start"), vec2_field(j, pointer, "end")));
     }
     if (kind == "circle") {
-        object(j, pointer, {"kind", "centre", "radius", "start_angle", "end_angle", "reparametrize"});
-        return done(CirclePath(vec2_field(j, pointer, "centre"), number_field(j, pointer, "radius"),
+        object(j, pointer, {"kind", "center", "radius", "start_angle", "end_angle", "reparametrize"});
+        return done(CirclePath(vec2_field(j, pointer, "center"), number_field(j, pointer, "radius"),
                                number_field(j, pointer, "start_angle", 0.0),
                                number_field(j, pointer, "end_angle", 2.0 * pi)));
     }
     if (kind == "elliptical_arc") {
-        object(j, pointer, {"kind", "centre", "rx", "ry", "rotation", "start_angle", "end_angle", "reparametrize"});
-        return done(EllipticalArcPath(vec2_field(j, pointer, "centre"), number_field(j, pointer, "rx"),
+        object(j, pointer, {"kind", "center", "rx", "ry", "rotation", "start_angle", "end_angle", "reparametrize"});
+        return done(EllipticalArcPath(vec2_field(j, pointer, "center"), number_field(j, pointer, "rx"),
                                       number_field(j, pointer, "ry"), number_field(j, pointer, "rotation", 0.0),
                                       number_field(j, pointer, "start_angle", 0.0),
                                       number_field(j, pointer, "end_angle", 2.0 * pi)));
     }
     if (kind == "spiral") {
-        object(j, pointer, {"kind", "centre", "start_radius", "end_radius", "start_angle", "end_angle", "reparametrize"});
-        return done(SpiralPath(vec2_field(j, pointer, "centre"), number_field(j, pointer, "start_radius"),
+        object(j, pointer, {"kind", "center", "start_radius", "end_radius", "start_angle", "end_angle", "reparametrize"});
+        return done(SpiralPath(vec2_field(j, pointer, "center"), number_field(j, pointer, "start_radius"),
                                number_field(j, pointer, "end_radius"), number_field(j, pointer, "start_angle", 0.0),
                                number_field(j, pointer, "end_angle", 2.0 * pi)));
     }
@@ -192,15 +199,15 @@ struct SpecJson {
         return {{"kind", "linear"}, {"start", point_json(s.start)}, {"end", point_json(s.end)}};
     }
     ordered operator()(const CircleSpec& s) const {
-        return {{"kind", "circle"}, {"centre", point_json(s.centre)}, {"radius", s.radius},
+        return {{"kind", "circle"}, {"center", point_json(s.center)}, {"radius", s.radius},
                 {"start_angle", s.start_angle}, {"end_angle", s.end_angle}};
     }
     ordered operator()(const EllipticalArcSpec& s) const {
-        return {{"kind", "elliptical_arc"}, {"centre", point_json(s.centre)}, {"rx", s.rx}, {"ry", s.ry},
+        return {{"kind", "elliptical_arc"}, {"center", point_json(s.center)}, {"rx", s.rx}, {"ry", s.ry},
                 {"rotation", s.rotation}, {"start_angle", s.start_angle}, {"end_angle", s.end_angle}};
     }
     ordered operator()(const SpiralSpec& s) const {
-        return {{"kind", "spiral"}, {"centre", point_json(s.centre)}, {"start_radius", s.start_radius},
+        return {{"kind", "spiral"}, {"center", point_json(s.center)}, {"start_radius", s.start_radius},
                 {"end_radius", s.end_radius}, {"start_angle", s.start_angle}, {"end_angle", s.end_angle}};
     }
     ordered operator()(const SineWaveSpec& s) const {

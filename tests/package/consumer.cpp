@@ -69,7 +69,7 @@ int main() {
     // A free particle under gravity g for t: y = g·t²/2. RK4 (the default) integrates a
     // quadratic exactly, so only round-off remains: 1e-9 is thousands of ulps of 5.
     grape::ParticleSystem system;
-    const auto p = system.add_particle({.position = {0, 0}});
+    const auto p = system.create_particle({.position = {0, 0}});
     system.add_gravity({0, 10});
     for (int i = 0; i < 100; ++i) system.step(0.01);
     check(std::abs(system.position(p).y - 5) < 1e-9, "particle fallen g·t²/2 in 1 s");

@@ -51,12 +51,12 @@ val residual_object(const ConstraintResidual& r) {
 
 // C = a·x² + b·x·y + c·y² + d·x + e·y + f: every conic, with its exact gradient and Hessian
 // (the seed's parabola x² + 100y is [1, 0, 0, 0, 100, 0]).
-ImplicitCurve conic(const std::vector<double>& k) {
+ImplicitFunction conic(const std::vector<double>& k) {
     if (k.size() != 6) throw Error("addConic: needs 6 coefficients a, b, c, d, e, f (got " + std::to_string(k.size()) + ")");
     for (double v : k)
         if (!std::isfinite(v)) throw Error("addConic: coefficients must be finite");
-    return ImplicitCurve([a = k[0], b = k[1], c = k[2], d = k[3], e = k[4], f = k[5]](Vec2 p) {
-        return CurveSample{.value = a * p.x * p.x + b * p.x * p.y + c * p.y * p.y + d * p.x + e * p.y + f,
+    return ImplicitFunction([a = k[0], b = k[1], c = k[2], d = k[3], e = k[4], f = k[5]](Vec2 p) {
+        return ImplicitSample{.value = a * p.x * p.x + b * p.x * p.y + c * p.y * p.y + d * p.x + e * p.y + f,
                            .gradient = {2 * a * p.x + b * p.y + d, b * p.x + 2 * c * p.y + e},
                            .hxx = 2 * a,
                            .hxy = b,
@@ -79,8 +79,8 @@ ParticleSystem* make_system(val options) {
     throw_js(message);
 }
 ParticleSystem* make_default_system() { return make_system(val::undefined()); }
-unsigned add_particle(ParticleSystem& s, Vec2 position, Vec2 velocity, double mass) {
-    return s.add_particle({.position = position, .velocity = velocity, .mass = mass}).index;
+unsigned create_particle(ParticleSystem& s, Vec2 position, Vec2 velocity, double mass) {
+    return s.create_particle({.position = position, .velocity = velocity, .mass = mass}).index;
 }
 double size(const ParticleSystem& s) { return double(s.size()); }
 val positions(const ParticleSystem& s) { return view(s.positions()); }
@@ -100,22 +100,22 @@ void add_spring(ParticleSystem& s, unsigned a, unsigned b, double rest, double k
     s.add_spring(pid(s, a), pid(s, b), {.rest_length = rest, .stiffness = k, .damping = c});
 }
 // length undefined: held at the current distance.
-unsigned add_distance(ParticleSystem& s, unsigned a, unsigned b, val length) {
-    if (length.isUndefined() || length.isNull()) return s.add_distance(pid(s, a), pid(s, b)).index;
-    return s.add_distance(pid(s, a), pid(s, b), length.as<double>()).index;
+unsigned create_distance(ParticleSystem& s, unsigned a, unsigned b, val length) {
+    if (length.isUndefined() || length.isNull()) return s.create_distance(pid(s, a), pid(s, b)).index;
+    return s.create_distance(pid(s, a), pid(s, b), length.as<double>()).index;
 }
-unsigned add_held_distance(ParticleSystem& s, unsigned a, unsigned b) { return s.add_distance(pid(s, a), pid(s, b)).index; }
-unsigned add_anchor(ParticleSystem& s, unsigned a, Vec2 anchor, double length) {
-    return s.add_anchor(pid(s, a), anchor, length).index;
+unsigned add_held_distance(ParticleSystem& s, unsigned a, unsigned b) { return s.create_distance(pid(s, a), pid(s, b)).index; }
+unsigned create_anchor(ParticleSystem& s, unsigned a, Vec2 anchor, double length) {
+    return s.create_anchor(pid(s, a), anchor, length).index;
 }
-unsigned add_fixed_point(ParticleSystem& s, unsigned a, Vec2 p) { return s.add_fixed_point(pid(s, a), p).index; }
-unsigned add_conic(ParticleSystem& s, unsigned a, val k) { return s.add_curve(pid(s, a), conic(numbers(k))).index; }
+unsigned create_fixed_point(ParticleSystem& s, unsigned a, Vec2 p) { return s.create_fixed_point(pid(s, a), p).index; }
+unsigned add_conic(ParticleSystem& s, unsigned a, val k) { return s.create_implicit(pid(s, a), conic(numbers(k))).index; }
 // fn(x, y) → {value, gx, gy, hxx, hxy, hyy}: called at every integrator stage.
-unsigned add_curve(ParticleSystem& s, unsigned a, val fn) {
+unsigned create_implicit(ParticleSystem& s, unsigned a, val fn) {
     if (fn.typeOf().as<std::string>() != "function") throw Error("addCurve: needs a function (x, y) => {value, gx, gy, hxx, hxy, hyy}");
-    return s.add_curve(pid(s, a), ImplicitCurve([fn](Vec2 p) {
+    return s.create_implicit(pid(s, a), ImplicitFunction([fn](Vec2 p) {
                            const val r = fn(p.x, p.y);
-                           return CurveSample{.value = r["value"].as<double>(),
+                           return ImplicitSample{.value = r["value"].as<double>(),
                                               .gradient = {r["gx"].as<double>(), r["gy"].as<double>()},
                                               .hxx = r["hxx"].as<double>(),
                                               .hxy = r["hxy"].as<double>(),
@@ -126,7 +126,7 @@ double constraint_count(const ParticleSystem& s) { return double(s.constraint_co
 void set_drift(ParticleSystem& s, val o) { s.set_drift(drift_def(o, s.def().drift)); }
 void set_integrator(ParticleSystem& s, std::string name) { s.set_integrator(parse_integrator(name)); }
 val step(ParticleSystem& s, double dt) {
-    const StepReport r = s.step(dt);
+    const StepStats r = s.step(dt);
     val out = val::object();
     out.set("status", std::string(to_string(r.status)));
     out.set("evaluations", r.evaluations);
@@ -214,7 +214,7 @@ EMSCRIPTEN_BINDINGS(grape_dynamics) {
     class_<ParticleSystem>("ParticleSystem")
         .constructor(&make_system, allow_raw_pointers())
         .constructor(&make_default_system, allow_raw_pointers())
-        .function("addParticle", guarded<&add_particle>)
+        .function("addParticle", guarded<&create_particle>)
         .function("size", &size)
         .function("positions", &positions)
         .function("velocities", &velocities)
@@ -228,12 +228,12 @@ EMSCRIPTEN_BINDINGS(grape_dynamics) {
         .function("addGravity", guarded<&add_gravity>)
         .function("addDrag", guarded<&add_drag>)
         .function("addSpring", guarded<&add_spring>)
-        .function("addDistance", guarded<&add_distance>)
+        .function("addDistance", guarded<&create_distance>)
         .function("addDistance", guarded<&add_held_distance>)
-        .function("addAnchor", guarded<&add_anchor>)
-        .function("addFixedPoint", guarded<&add_fixed_point>)
+        .function("addAnchor", guarded<&create_anchor>)
+        .function("addFixedPoint", guarded<&create_fixed_point>)
         .function("addConic", guarded<&add_conic>)
-        .function("addCurve", guarded<&add_curve>)
+        .function("addCurve", guarded<&create_implicit>)
         .function("constraintCount", &constraint_count)
         .function("setDrift", guarded<&set_drift>)
         .function("setIntegrator", guarded<&set_integrator>)
