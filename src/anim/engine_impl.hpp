@@ -231,6 +231,7 @@ private:
 
     std::vector<PathEntry> paths_;
     std::vector<PathFast> path_fast_;  // same index as paths_
+    std::size_t arc_paths_ = 0;        // entries with an arc-length table (plain_run batches then)
     std::vector<std::uint32_t> free_paths_;
     std::unordered_map<const void*, std::uint32_t> path_index_;
     std::vector<CurveEntry> curves_;
