@@ -392,11 +392,19 @@ int main(int argc, char** argv) {
     // the floor (1 = as fast as the hand-written loop); medians over repetitions.
     std::printf("\nengine storage per 2-D animation: %zu bytes (hot + cold + handle slot)\n",
                 grape::Engine::bytes_per_animation());
-    std::printf("%-22s %9s %12s %12s %14s %12s\n", "contender", "N", "ns/update", "bytes/anim",
-                "x tweeny_quad", "floor/this");
+    // A ratio to a contender that was not run (filtered out) prints as "-", not as 0.
+    std::printf("%-26s %9s %12s %12s %14s %12s %14s\n", "contender", "N", "ns/update", "bytes/anim",
+                "x tweeny_quad", "floor/this", "traffic/this");
+    auto ratio_text = [](const std::map<std::string, Result>::const_iterator& ref, double r) {
+        if (ref == results.end() || !(r > 0.0)) return std::string("-");
+        char text[32];
+        std::snprintf(text, sizeof text, "%.2f", ref->second.median() / r);
+        return std::string(text);
+    };
     for (std::int64_t n : {1000, 100000, 1000000}) {
         const auto tw = results.find(key("tweeny_quad", n));
         const auto fl = results.find(key("floor", n));
+        const auto tf = results.find(key("traffic_floor", n));
         for (const char* name : {"floor", "traffic_floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "grape_cubic_spread",
                                  "grape_reparam_cubic_spread", "tweeny_linear", "tweeny_quad", "grape_color",
                                  "grape_color_oklab", "grape_user_type", "grape_typed_double",
@@ -404,9 +412,9 @@ int main(int argc, char** argv) {
             const auto it = results.find(key(name, n));
             if (it == results.end()) continue;
             const double r = it->second.median();
-            std::printf("%-22s %9lld %12.2f %12.1f %14.2f %12.2f\n", name, static_cast<long long>(n), r,
-                        it->second.bytes_per_animation, tw != results.end() ? tw->second.median() / r : 0.0,
-                        fl != results.end() ? fl->second.median() / r : 0.0);
+            std::printf("%-26s %9lld %12.2f %12.1f %14s %12s %14s\n", name, static_cast<long long>(n), r,
+                        it->second.bytes_per_animation, ratio_text(tw, r).c_str(), ratio_text(fl, r).c_str(),
+                        ratio_text(tf, r).c_str());
         }
     }
     // Arc length against the plain cubic kind, per repetition and size: median and min–max of

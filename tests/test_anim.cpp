@@ -237,6 +237,60 @@ TEST(Engine, ArcLengthBezierMatchesThePathWithinItsTolerance) {
     EXPECT_NEAR(a.value().y, 48.352395, 1e-6);
 }
 
+TEST(Engine, ManyArcLengthAnimationsAtSpreadPhasesMatchTheirPaths) {
+    // The tick advances records in batches and reads each arc-length path's table piece
+    // found ahead of the write; here arc-length, plain cubic and linear paths alternate,
+    // phases are spread, curves differ (formulas, one with parameters), and every fifth
+    // animation takes the general path each play (loop handlers) or sits paused, so batches
+    // stop anywhere. Each target against Path::point at the animation's own progress:
+    // 2e-10·L for arc length (the table's contract), equal for cubics, rounding for lines.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> coordinate(0.0, 1000.0), unit(0.0, 1.0);
+    std::vector<grape::Path> paths;
+    for (int k = 0; k < 48; ++k) {
+        const Vec2 a{coordinate(rng), coordinate(rng)}, d{coordinate(rng), coordinate(rng)};
+        const Vec2 side = grape::perpendicular(d - a) * (0.2 + 0.3 * unit(rng));
+        const Vec2 b = a + (d - a) / 3.0 + side, c = a + (d - a) * (2.0 / 3.0) - side;
+        if (k % 3 == 2) paths.push_back(grape::LinearPath(a, d));
+        else paths.push_back(grape::CubicBezierPath(a, b, c, d, k % 3 == 0));
+    }
+    const Curve curves[] = {Curve::quad_in_out(), Curve::linear(), grape::parse_curve("back-in-out"),
+                            grape::parse_curve("cubic-bezier(0.3, 0.1, 0.2, 1)")};
+    constexpr int count = 700;
+    std::vector<Point> targets(count);
+    std::vector<Animation> anims;
+    int loops = 0;
+    Engine engine;
+    for (int i = 0; i < count; ++i) {
+        const AnimationDef def{.curve = curves[i % 4], .delay = i % 7 == 3 ? 0.5 : 0.0, .repeat = -1, .yoyo = i % 2 == 0};
+        anims.push_back(engine.create_2d_animation(targets[i], paths[i % paths.size()], 0.5 + 2.0 * unit(rng), def));
+        if (i % 5 == 1) anims.back().on_loop([&loops](int, std::uint64_t) { ++loops; });
+    }
+    engine.tick(123.456);  // spread the phases
+    for (int i = 4; i < count; i += 10) anims[i].pause();
+    int arc_checked = 0;
+    for (int frame = 0; frame < 120; ++frame) {
+        engine.tick(0.04 * unit(rng));
+        for (int i = 0; i < count; ++i) {
+            const grape::Path& path = paths[i % paths.size()];
+            const Vec2 truth = path.point(anims[i].progress());
+            const Vec2 got{targets[i].x, targets[i].y};
+            if (path.kind() == grape::PathKind::reparametrized) {
+                ASSERT_LE(grape::distance(got, truth), 2e-10 * path.length()) << i << " frame " << frame;
+                ++arc_checked;
+            } else if (path.kind() == grape::PathKind::cubic_bezier) {
+                ASSERT_EQ(got.x, truth.x) << i << " frame " << frame;
+                ASSERT_EQ(got.y, truth.y) << i << " frame " << frame;
+            } else {  // a + (b − a)·u against lerp's a·(1 − u) + b·u: 2e-12, 4 ulps of 2000
+                ASSERT_NEAR(got.x, truth.x, 2e-12) << i << " frame " << frame;
+                ASSERT_NEAR(got.y, truth.y, 2e-12) << i << " frame " << frame;
+            }
+        }
+    }
+    EXPECT_GT(loops, 100);                  // the general path ran between the batches
+    EXPECT_GT(arc_checked, 120 * count / 4);  // a third of the paths are arc-length ones
+}
+
 TEST(Engine, ReversedPlaysTheSameStatesBackwards) {
     const auto bez = unit_bezier();
     const Curve curve = grape::parse_curve("cubic-in");

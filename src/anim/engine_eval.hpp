@@ -20,18 +20,17 @@ inline double EngineImpl::ease(CurveKind kind, std::uint16_t curve, double x) co
     return has_parameters(kind) ? curves_[curve].curve(x) : detail::ease_formula(kind, x);
 }
 
-// The kernel's formulas on copied coefficients (Path::point bit for bit for lines and cubics).
+// The kernel's formulas on copied coefficients (Path::point bit for bit for cubics, to rounding
+// for lines), the arc-length table's points for reparametrized ones.
 inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
     if (u >= 0.0 && u <= 1.0) {
         const PathFast& f = path_fast_[path];
         switch (f.fast) {
             case KernelKind::linear: return f.c[0] + f.c[1] * u;
             case KernelKind::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
-            case KernelKind::reparam_cubic: {
-                const double v = ArcLengthTable::evaluate(f.table, f.steps, u);
-                return ((f.c[3] * v + f.c[2]) * v + f.c[1]) * v + f.c[0];
-            }
-            case KernelKind::reparam_linear: return f.c[0] + f.c[1] * ArcLengthTable::evaluate(f.table, f.steps, u);
+            case KernelKind::reparam_cubic:
+            case KernelKind::reparam_linear:  // the ends exact, as Path::point has them
+                return u >= 1.0 ? f.c[1] : u <= 0.0 ? f.c[0] : ArcLengthTable::evaluate(f.table, f.steps, u);
             case KernelKind::generic: break;
         }
     }
@@ -51,9 +50,12 @@ inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept {
 
 // The common case of a tick: playing, not paused, dead or custom, a target to write, no play
 // end that anybody listens for. Reads and writes record i alone (and its target), so records
-// may run on separate threads; the general path takes everything else.
+// may run on separate threads; the general path takes everything else. In two stages, so
+// that a loop can advance a batch of records before it writes any (see plain_run): advance
+// moves the record's time and gives the eased progress u (false, with nothing changed, when
+// the record needs the general path), write puts the point at u into the target.
 template <bool phase1>
-inline bool EngineImpl::plain_step(Hot* hot, Cold* cold, const PathFast* fast, std::size_t i, double dt) const noexcept {
+inline bool EngineImpl::plain_advance(Hot* hot, Cold* cold, std::size_t i, double dt, double& u) const noexcept {
     Hot& h = hot[i];
     double phase = h.phase + dt * h.rate;
     if ((h.flags & (flag_paused | flag_dead | flag_custom)) || !(phase >= 0.0) || !h.target ||
@@ -70,13 +72,44 @@ inline bool EngineImpl::plain_step(Hot* hot, Cold* cold, const PathFast* fast, s
     }
     h.phase = phase;
     const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;
-    const double u = has_parameters(h.kind) ? curves_[cold[i].curve].curve(x) : detail::ease_formula(h.kind, x);
+    u = has_parameters(h.kind) ? curves_[cold[i].curve].curve(x) : detail::ease_formula(h.kind, x);
+    return true;
+}
+
+inline void EngineImpl::plain_write(const Hot& h, const PathFast* fast, double u) const noexcept {
     const PathFast& f = fast[h.path];
     Vec2 p;
     if (f.fast == KernelKind::linear && u >= 0.0 && u <= 1.0) p = f.c[0] + f.c[1] * u;
     else if (f.fast == KernelKind::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
     else p = point(h.path, u);
     write_2d(h, p);
+}
+
+// An arc-length path's piece at u, found before the write: where it starts (null for the
+// other kinds and at the ends, which plain_write takes) and u's place x in it; its lines
+// are asked for now (shared tables of many paths do not stay in L1), read by the write.
+struct PieceAt {
+    const double* piece;
+    double x;
+};
+inline PieceAt plain_piece(const Hot& h, const PathFast* fast, double u) noexcept {
+    const PathFast& f = fast[h.path];
+    const bool arc = f.fast == KernelKind::reparam_cubic || f.fast == KernelKind::reparam_linear;
+    if (!arc || !(u > 0.0 && u < 1.0)) return {nullptr, 0.0};
+    const double s = u * f.steps;  // as ArcLengthTable::evaluate finds it
+    const auto k = static_cast<std::int64_t>(s);
+    const double* c = f.table + ArcLengthTable::stride * static_cast<std::size_t>(k);
+#if defined(__GNUC__) || defined(__clang__)
+    for (std::size_t line = 0; line < ArcLengthTable::stride; line += 8) __builtin_prefetch(c + line);
+#endif
+    return {c, 2.0 * (s - static_cast<double>(k)) - 1.0};
+}
+
+template <bool phase1>
+inline bool EngineImpl::plain_step(Hot* hot, Cold* cold, const PathFast* fast, std::size_t i, double dt) const noexcept {
+    double u;
+    if (!plain_advance<phase1>(hot, cold, i, dt, u)) return false;
+    plain_write(hot[i], fast, u);
     return true;
 }
 

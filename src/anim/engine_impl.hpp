@@ -132,12 +132,13 @@ struct PathEntry {
 
 /// What the hot loop reads of a shared path, the linear and cubic coefficients copied in so
 /// that most updates never leave the engine's storage. Line-aligned with the kind first: a
-/// line reads one cache line (kind, c[0], c[1]), a cubic two.
+/// line reads one cache line (kind, c[0], c[1]), a cubic two, a reparametrized path one and
+/// the two of its table's piece.
 struct alignas(64) PathFast {
     KernelKind fast = KernelKind::generic;
     const double* table = nullptr;   // reparametrized: the kernel's ArcLengthTable values
     double steps = 0.0;
-    Vec2 c[4];                       // PathKernel::c
+    Vec2 c[4];                       // PathKernel::c (reparametrized: the end points)
 };
 
 struct CurveEntry {
@@ -230,6 +231,7 @@ private:
 
     std::vector<PathEntry> paths_;
     std::vector<PathFast> path_fast_;  // same index as paths_
+    std::size_t arc_paths_ = 0;        // entries with an arc-length table (plain_run batches then)
     std::vector<std::uint32_t> free_paths_;
     std::unordered_map<const void*, std::uint32_t> path_index_;
     std::vector<CurveEntry> curves_;
@@ -307,6 +309,9 @@ private:
     // needs the general path. phase1: also leaves function curves (user code) to the general path.
     template <bool phase1>
     bool plain_step(Hot* hot, Cold* cold, const PathFast* fast, std::size_t i, double dt) const noexcept;
+    template <bool phase1>
+    bool plain_advance(Hot* hot, Cold* cold, std::size_t i, double dt, double& u) const noexcept;
+    void plain_write(const Hot& h, const PathFast* fast, double u) const noexcept;
     std::size_t plain_run(std::size_t i, std::size_t n, double dt) noexcept;
     void advance_general(std::uint32_t dense, double dt);
     void plain_phase(double dt);

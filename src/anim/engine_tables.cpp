@@ -41,6 +41,7 @@ std::uint32_t EngineImpl::acquire_path(const Path& path) {
         free_paths_.reserve(paths_.size());  // so releasing during a tick never allocates
     }
     path_index_.emplace(shape, index);
+    if (fast.table) ++arc_paths_;
     return index;
 }
 
@@ -48,6 +49,7 @@ void EngineImpl::release_path(std::uint32_t index) noexcept {
     PathEntry& e = paths_[index];
     if (--e.refs != 0) return;
     path_index_.erase(e.shape);
+    if (path_fast_[index].table) --arc_paths_;
     e = PathEntry();                // drops the shape if nobody else holds it
     path_fast_[index] = PathFast();
     free_paths_.push_back(index);   // capacity reserved at creation

@@ -143,12 +143,33 @@ void EngineImpl::tick(double dt) {
 
 // Records from i on while plain_step takes them; returns the first it does not (or n). Flattened
 // so that the easing switch and the path formulas are inlined into the loop (compilers
-// otherwise call curve.hpp's ease_formula out of line, a fifth of the loop's time).
+// otherwise call curve.hpp's ease_formula out of line, a fifth of the loop's time). Where the
+// engine holds arc-length paths, in batches of 32: every record of a batch is advanced, and its arc-length piece found and asked for,
+// before any is written, so that the misses on shared tables overlap instead of stalling each
+// record in turn (nothing but the batch's own records sees the order; the results are
+// plain_step's, bit for bit).
 GRAPE_FLATTEN std::size_t EngineImpl::plain_run(std::size_t i, std::size_t n, double dt) noexcept {
     Hot* const hot = hot_.data();
     Cold* const cold = cold_.data();
     const PathFast* const fast = path_fast_.data();
-    while (i < n && plain_step<false>(hot, cold, fast, i, dt)) ++i;
+    if (arc_paths_ == 0) {  // lines and cubics only: nothing to ask for ahead, one record at a time
+        while (i < n && plain_step<false>(hot, cold, fast, i, dt)) ++i;
+        return i;
+    }
+    constexpr std::size_t batch = 32;
+    double u[batch];
+    PieceAt piece[batch];
+    while (i < n) {
+        const std::size_t m = std::min(batch, n - i);
+        std::size_t k = 0;
+        for (; k < m && plain_advance<false>(hot, cold, i + k, dt, u[k]); ++k) piece[k] = plain_piece(hot[i + k], fast, u[k]);
+        for (std::size_t j = 0; j < k; ++j) {
+            if (piece[j].piece) write_2d(hot[i + j], ArcLengthTable::evaluate_piece(piece[j].piece, piece[j].x));
+            else plain_write(hot[i + j], fast, u[j]);
+        }
+        i += k;
+        if (k < m) break;  // record i needs the general path
+    }
     return i;
 }
 

@@ -5,32 +5,22 @@
 #include "svg_parser.hpp"
 
 #include <cmath>
-#include <cstring>
 
 namespace grape::detail {
 
 namespace {
 
-// v(u) on one piece [u0, u0 + du] as a degree-11 polynomial in x = 2(u − u0)/du − 1:
+// The point on one piece [u0, u0 + du] as two degree-11 polynomials in x = 2(u − u0)/du − 1:
 // interpolated at the Chebyshev–Lobatto points (which include both ends, so neighbouring
-// pieces meet), its Chebyshev coefficients turned into powers of x; stored as
+// pieces meet), their Chebyshev coefficients turned into powers of x; stored as
 // ArcLengthTable::evaluate reads them.
 template <class F>
-void fit_piece(F&& v_of_u, double u0, double du, double* out) {
+void fit_piece(F&& point_of_u, double u0, double du, double* out) {
     constexpr int n = ArcLengthTable::degree;
-    double f[n + 1];
+    Vec2 f[n + 1];
     for (int j = 0; j <= n; ++j) {
         const double x = j == 0 ? 1.0 : j == n ? -1.0 : std::cos(j * pi / n);
-        f[j] = v_of_u(u0 + du * 0.5 * (x + 1.0));
-    }
-    double a[n + 1];  // Chebyshev coefficients (discrete cosine transform of the Lobatto values)
-    for (int m = 0; m <= n; ++m) {
-        double sum = 0.0;
-        for (int j = 0; j <= n; ++j) {
-            const double w = j == 0 || j == n ? 0.5 : 1.0;
-            sum += w * f[j] * std::cos(m * j * pi / n);
-        }
-        a[m] = (m == 0 || m == n ? 1.0 : 2.0) * sum / n;
+        f[j] = point_of_u(u0 + du * 0.5 * (x + 1.0));
     }
     double tm[n + 1][n + 1] = {};  // T_m(x) in powers of x, by T_{m+1} = 2x·T_m − T_{m−1}
     tm[0][0] = 1.0;
@@ -38,48 +28,52 @@ void fit_piece(F&& v_of_u, double u0, double du, double* out) {
     for (int m = 1; m < n; ++m) {
         for (int i = 0; i <= n; ++i) tm[m + 1][i] = (i > 0 ? 2.0 * tm[m][i - 1] : 0.0) - tm[m - 1][i];
     }
-    double b[n + 1] = {};  // in powers of x
-    for (int m = 0; m <= n; ++m) {
-        for (int i = 0; i <= n; ++i) b[i] += a[m] * tm[m][i];
+    for (int d = 0; d < 2; ++d) {
+        double a[n + 1];  // Chebyshev coefficients (discrete cosine transform of the Lobatto values)
+        for (int m = 0; m <= n; ++m) {
+            double sum = 0.0;
+            for (int j = 0; j <= n; ++j) {
+                const double w = j == 0 || j == n ? 0.5 : 1.0;
+                sum += w * (d == 0 ? f[j].x : f[j].y) * std::cos(m * j * pi / n);
+            }
+            a[m] = (m == 0 || m == n ? 1.0 : 2.0) * sum / n;
+        }
+        double b[n + 1] = {};  // in powers of x
+        for (int m = 0; m <= n; ++m) {
+            for (int i = 0; i <= n; ++i) b[i] += a[m] * tm[m][i];
+        }
+        for (int i = 0; i <= n; ++i) out[2 * i + d] = b[i];
     }
-    // The order ArcLengthTable::evaluate reads: (c0, c2), (c1, c3), then the floats
-    // (c4, c6), (c5, c7), (c8, c10), (c9, c11).
-    constexpr int order[12] = {0, 2, 1, 3, 4, 6, 5, 7, 8, 10, 9, 11};
-    for (int i = 0; i < 4; ++i) out[i] = b[order[i]];
-    float low[8];
-    for (int i = 0; i < 8; ++i) low[i] = static_cast<float>(b[order[4 + i]]);
-    std::memcpy(out + 4, low, sizeof low);
 }
 
 }  // namespace
 
-// Doubles K until every piece's polynomial lands within 1e-10·length of the node's own
-// solve at 23 points inside it (12 evenly spaced, and the 11 between the Lobatto points,
+// Doubles K until every piece's polynomials land within 1e-10·length of the path's own
+// point at 23 places inside it (12 evenly spaced, and the 11 between the Lobatto points,
 // where an interpolant's error peaks); gives up past 4096 pieces.
 std::optional<ArcLengthTable> ArcLengthTable::build(const Path& reparametrized) {
     const PathNode& node = NodeAccess::node(reparametrized);
     if (node.kind() != PathKind::reparametrized) return std::nullopt;
-    const auto& r = static_cast<const ReparametrizedNode&>(node);
-    const PathNode& source = NodeAccess::node(r.source());
-    const double length = r.length();
+    const double length = node.length();
     if (!(length > 0.0)) return std::nullopt;
-    auto v_of_u = [&r](double u) noexcept { return r.source_u(u); };
+    auto point_of_u = [&node](double u) noexcept { return node.point(u); };
     for (int steps = 1; steps <= max_steps; steps *= 2) {
         const double k_steps = steps;
         ArcLengthTable out;
         out.values_.assign(stride * static_cast<std::size_t>(steps), 0.0);
         out.steps_ = k_steps;
+        out.start_ = node.point(0.0);
+        out.end_ = node.point(1.0);
         bool good = true;
         for (int k = 0; k < steps && good; ++k) {
             double* c = out.values_.data() + stride * static_cast<std::size_t>(k);
-            fit_piece(v_of_u, k / k_steps, 1.0 / k_steps, c);
+            fit_piece(point_of_u, k / k_steps, 1.0 / k_steps, c);
             for (int i = 0; i < 23 && good; ++i) {
                 const double t = i < 12 ? (i + 0.5) / 12.0
                                         : 0.5 + 0.25 * (std::cos((i - 12) * pi / degree) + std::cos((i - 11) * pi / degree));
                 const double u = (k + t) / k_steps;
-                const Vec2 exact = source.point(r.source_u(u));
-                const Vec2 fast = source.point(evaluate(out.values_.data(), k_steps, u));
-                good = std::isfinite(fast.x) && std::isfinite(fast.y) && distance(exact, fast) <= 1e-10 * length;
+                const Vec2 fast = evaluate(out.values_.data(), k_steps, u);
+                good = std::isfinite(fast.x) && std::isfinite(fast.y) && distance(node.point(u), fast) <= 1e-10 * length;
             }
         }
         if (good) return out;
@@ -118,7 +112,8 @@ PathKernel make_kernel(const Path& path) {
             if (source.kind() != PathKind::linear && source.kind() != PathKind::cubic_bezier) return kernel;
             kernel.table = ArcLengthTable::build(path);
             if (!kernel.table) return kernel;
-            copy_coefficients(source, kernel.c);
+            kernel.c[0] = kernel.table->start();
+            kernel.c[1] = kernel.table->end();
             kernel.kind = source.kind() == PathKind::linear ? KernelKind::reparam_linear : KernelKind::reparam_cubic;
             return kernel;
         }

@@ -22,67 +22,71 @@
 
 namespace grape::detail {
 
-/// v(u) of a reparametrized path (u: fraction of arc length, v: the source's parameter) as
-/// K even pieces (K a power of two), each a degree-11 polynomial in the piece's own x in
-/// [−1, 1] held in one 64-byte cache line: the four leading coefficients as doubles, the
-/// eight others as floats (each below ~1e-6 there, so float's 6e-8 relative rounding adds
-/// under 1e-12 to v, against the 1e-10 budget; checked by the build and the tests). A lookup costs a floor and a dozen
-/// multiply-adds in a shallow tree, where the path's own solve costs a bucket search and a
-/// quintic; a typical cubic needs 8 pieces (512 bytes), so a thousand tables stay in L2.
+/// The point at u of a reparametrized path (u: fraction of arc length) as K even pieces (K a
+/// power of two), each a degree-11 polynomial in the piece's own x in [−1, 1] for x(u) and
+/// y(u) at once: twelve (x, y) coefficient pairs of doubles, three 64-byte cache lines. A
+/// lookup costs a floor and a dozen two-lane multiply-adds in a shallow tree, with no table
+/// walk and no Bézier after it (the path's own solve costs a bucket search, a quintic and
+/// the cubic); a typical cubic needs 8 pieces (1.5 KB). Doubles throughout: floats for the
+/// small high-order coefficients would halve the bytes, but their conversions cost more of
+/// the tick than the third line's traffic does (the tick prefetches the lines).
 class ArcLengthTable {
 public:
-    static constexpr int degree = 11;                 ///< of each piece's polynomial
-    static constexpr std::size_t stride = 8;          ///< storage words (64 bytes) per piece
-    static constexpr int max_steps = 4096;            ///< 256 KB of table at most
+    static constexpr int degree = 11;                 ///< of each piece's polynomials
+    static constexpr std::size_t stride = 24;         ///< storage words (192 bytes) per piece
+    static constexpr int max_steps = 4096;            ///< 768 KB of table at most
 
     /// The fewest pieces (K = 1, 2, 4, ... 4096) whose points, at 23 places inside every
-    /// piece, land within 1e-10·length of the path's own solve (so within 2e-10·length
+    /// piece, land within 1e-10·length of the path's own point (so within 2e-10·length
     /// anywhere: tested); nullopt when the path is not reparametrized, has no length or
     /// needs more than 4096 pieces (a source that stops somewhere: dv/du unbounded).
     static std::optional<ArcLengthTable> build(const Path& reparametrized);
 
-    /// The source parameter at u: 0 at or below 0 (and for NaN), 1 at or above 1.
-    double source_u(double u) const noexcept {
-        if (!(u > 0.0)) return 0.0;
+    /// The point at u: the path's own end points at or below 0 (and for NaN) and at or above 1.
+    Vec2 point(double u) const noexcept {
+        if (u >= 1.0) return end_;
+        if (!(u > 0.0)) return start_;
         return evaluate(values_.data(), steps_, u);
     }
     /// K, the number of pieces.
     double steps() const noexcept { return steps_; }
-    /// The pieces' storage, piece after piece (8·K words, 64-byte aligned: a piece is one
-    /// cache line): words 0–3 the coefficients of x⁰, x², x¹, x³, words 4–7 the floats of
-    /// x⁴, x⁶, x⁵, x⁷, x⁸, x¹⁰, x⁹, x¹¹ (the pairs evaluate reads two at a time).
+    /// Path::point at 0 and 1 (the ends, exact: animations start and land on them).
+    Vec2 start() const noexcept { return start_; }
+    Vec2 end() const noexcept { return end_; }
+    /// The pieces' storage, piece after piece (24·K words, 64-byte aligned: a piece is three
+    /// cache lines): the (x, y) coefficients of x⁰, x¹, … x¹¹.
     std::span<const double> values() const noexcept { return {values_.data(), values_.size()}; }
 
-    /// source_u on a table's raw storage (for callers that keep a pointer in a hot record),
-    /// u in [0, 1]. The ends are exact (0 and 1), so that animations start and land on the
-    /// end points; K is a power of two, so u·K is exact and u < 1 never reads past the
-    /// last piece.
-    static double evaluate(const double* values, double steps, double u) noexcept {
-        if (u >= 1.0) return 1.0;
-        if (u <= 0.0) return 0.0;
+    /// point on a table's raw storage (for callers that keep a pointer in a hot record), u
+    /// strictly inside (0, 1). K is a power of two, so u·K is exact and u < 1 never reads
+    /// past the last piece.
+    static Vec2 evaluate(const double* values, double steps, double u) noexcept {
         const double s = u * steps;
         const auto k = static_cast<std::int64_t>(s);  // s > 0: truncation is the floor, one instruction
         const double x = 2.0 * (s - static_cast<double>(k)) - 1.0;
-        const double* c = values + stride * static_cast<std::size_t>(k);
-        // Estrin's scheme on the pairs (q0, q1) = (c0, c2) + (c1, c3)·x, (q2, q3), (q4, q5):
-        // v = (q0 + q2·x⁴ + q4·x⁸) + (q1 + q3·x⁴ + q5·x⁸)·x², a third of Horner's chain, two
-        // lanes at a time where SSE2 has them.
-        const double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+        return evaluate_piece(values + stride * static_cast<std::size_t>(k), x);
+    }
+    /// One piece's point at its own x in [−1, 1]. Estrin's scheme on the coefficient pairs:
+    /// q_i = a_2i + a_2i+1·x, r_j = q_2j + q_2j+1·x², p = r0 + (r1 + r2·x⁴)·x⁴; both
+    /// coordinates in the two lanes where SSE2 has them.
+    static Vec2 evaluate_piece(const double* c, double x) noexcept {
+        const double x2 = x * x, x4 = x2 * x2;
 #if defined(__SSE2__)
-        const __m128d vx = _mm_set1_pd(x);
-        const __m128d q01 = _mm_add_pd(_mm_load_pd(c), _mm_mul_pd(_mm_load_pd(c + 2), vx));
-        const __m128 f = _mm_castpd_ps(_mm_load_pd(c + 4)), g = _mm_castpd_ps(_mm_load_pd(c + 6));
-        const __m128d q23 = _mm_add_pd(_mm_cvtps_pd(f), _mm_mul_pd(_mm_cvtps_pd(_mm_movehl_ps(f, f)), vx));
-        const __m128d q45 = _mm_add_pd(_mm_cvtps_pd(g), _mm_mul_pd(_mm_cvtps_pd(_mm_movehl_ps(g, g)), vx));
-        const __m128d sum = _mm_add_pd(_mm_add_pd(q01, _mm_mul_pd(q23, _mm_set1_pd(x4))), _mm_mul_pd(q45, _mm_set1_pd(x8)));
-        return _mm_cvtsd_f64(sum) + _mm_cvtsd_f64(_mm_unpackhi_pd(sum, sum)) * x2;
+        const __m128d vx = _mm_set1_pd(x), vx2 = _mm_set1_pd(x2), vx4 = _mm_set1_pd(x4);
+        auto q = [c, vx](int i) { return _mm_add_pd(_mm_load_pd(c + 4 * i), _mm_mul_pd(_mm_load_pd(c + 4 * i + 2), vx)); };
+        const __m128d r0 = _mm_add_pd(q(0), _mm_mul_pd(q(1), vx2));
+        const __m128d r1 = _mm_add_pd(q(2), _mm_mul_pd(q(3), vx2));
+        const __m128d r2 = _mm_add_pd(q(4), _mm_mul_pd(q(5), vx2));
+        const __m128d p = _mm_add_pd(r0, _mm_mul_pd(_mm_add_pd(r1, _mm_mul_pd(r2, vx4)), vx4));
+        return {_mm_cvtsd_f64(p), _mm_cvtsd_f64(_mm_unpackhi_pd(p, p))};
 #else
-        float f[8];
-        std::memcpy(f, c + 4, sizeof f);
-        const double q0 = c[0] + c[2] * x, q1 = c[1] + c[3] * x;
-        const double q2 = double(f[0]) + double(f[2]) * x, q3 = double(f[1]) + double(f[3]) * x;
-        const double q4 = double(f[4]) + double(f[6]) * x, q5 = double(f[5]) + double(f[7]) * x;
-        return (q0 + q2 * x4 + q4 * x8) + (q1 + q3 * x4 + q5 * x8) * x2;
+        double out[2];
+        for (int d = 0; d < 2; ++d) {
+            auto q = [c, d, x](int i) { return c[4 * i + d] + c[4 * i + 2 + d] * x; };
+            const double r0 = q(0) + q(1) * x2, r1 = q(2) + q(3) * x2, r2 = q(4) + q(5) * x2;
+            out[d] = r0 + (r1 + r2 * x4) * x4;
+        }
+        return {out[0], out[1]};
 #endif
     }
 
@@ -102,6 +106,7 @@ private:
 
     std::vector<double, LineAllocator<double>> values_;
     double steps_ = 0.0;
+    Vec2 start_, end_;
 };
 
 /// How a kernel evaluates inside [0, 1].
@@ -109,16 +114,17 @@ enum class KernelKind : std::uint8_t {
     generic,         ///< Path::point
     linear,          ///< c[0] + c[1]·u
     cubic,           ///< ((c[3]·u + c[2])·u + c[1])·u + c[0]
-    reparam_linear,  ///< linear at v = table.source_u(u)
-    reparam_cubic,   ///< cubic at v = table.source_u(u)
+    reparam_linear,  ///< table.point(u) (a reparametrized line)
+    reparam_cubic,   ///< table.point(u) (a reparametrized cubic)
 };
 
 /// A path as a bulk evaluator sees it. Inside [0, 1] the formulas above give Path::point
-/// bit for bit (linear, cubic) or within 2e-10·length (reparametrized, by the table).
+/// bit for bit (cubic), to rounding (linear: a + (b − a)·u where the path has lerp) or within
+/// 2e-10·length (reparametrized, by the table).
 struct PathKernel {
     KernelKind kind = KernelKind::generic;
-    Vec2 c[4] = {};  ///< linear: start, end − start; cubic: power-basis coefficients (of the source)
-    std::optional<ArcLengthTable> table;  ///< reparam_*: v(u) (its buffer survives moving the kernel)
+    Vec2 c[4] = {};  ///< linear: start, end − start; cubic: power-basis coefficients; reparam_*: start, end
+    std::optional<ArcLengthTable> table;  ///< reparam_*: the points (its buffer survives moving the kernel)
 };
 
 /// The kernel of a path (builds the arc-length table of a reparametrized line or cubic).
