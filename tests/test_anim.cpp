@@ -8,6 +8,7 @@
 #include "seed_animations.hpp"
 #include "seed_paths.hpp"
 
+#include "count_allocations.hpp"
 #include "error_text.hpp"
 
 #include <gtest/gtest.h>
@@ -20,23 +21,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-// --- allocation counting -----------------------------------------------------------------------
-// The replacement operator new below is malloc-based and its delete is free-based; g++ sees
-// free() inlined at delete sites and warns about a mismatch that is not one here.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 using grape::Animation;
 using grape::AnimationDef;
@@ -685,11 +669,9 @@ TEST(EngineScale, NoAllocationPerTick) {
     engine.create_animation(circle, 0.1, {.repeat = -1}, [&](Vec2, double) { ++events; });
     engine.on_tick([&](double) { ++events; });
     engine.tick(0.01);  // warm-up
-    allocations = 0;
-    counting = true;
+    const long before = g_allocations.load();
     for (int i = 0; i < 600; ++i) engine.tick(1.0 / 60.0);
-    counting = false;
-    EXPECT_EQ(allocations.load(), 0);
+    EXPECT_EQ(g_allocations.load() - before, 0);
     EXPECT_GT(events, 1000);
     EXPECT_LT(engine.size(), 5001u);  // the finite ones completed and were removed
 }

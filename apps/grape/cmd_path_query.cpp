@@ -8,7 +8,9 @@
 #include <grape/path.hpp>
 #include <grape/path_query.hpp>
 
+#include <array>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -46,40 +48,46 @@ double length_fraction(const Path& path, double u) {
     return path.length() > 0.0 ? path.length_at(u) / path.length() : u;
 }
 
+// What the queries take: SVG path DATA, one or two numbers (as text) and --arc-length.
+struct QueryArgs {
+    std::string data;
+    std::array<std::string, 2> values;
+    bool by_length = false;
+};
+
+std::shared_ptr<QueryArgs> query_args(CLI::App* command, std::initializer_list<std::pair<const char*, const char*>> values,
+                                      const char* by_length_help) {
+    auto args = std::make_shared<QueryArgs>();
+    command->add_option("DATA", args->data, "SVG path data")->required();
+    std::size_t i = 0;
+    for (const auto& [name, help] : values) command->add_option(name, args->values[i++], help)->required();
+    command->add_flag("--arc-length", args->by_length, by_length_help);
+    return args;
+}
+
 }  // namespace
 
 void register_path_query_commands(CLI::App& path) {
     auto* closest = path.add_subcommand(
         "closest", "Print the nearest point of the path to (X, Y): {\"u\", \"x\", \"y\", \"distance\"}");
-    auto closest_data = std::make_shared<std::string>();
-    auto x_text = std::make_shared<std::string>();
-    auto y_text = std::make_shared<std::string>();
-    auto closest_by_length = std::make_shared<bool>(false);
-    closest->add_option("DATA", *closest_data, "SVG path data")->required();
-    closest->add_option("X", *x_text, "Query point x")->required();
-    closest->add_option("Y", *y_text, "Query point y")->required();
-    closest->add_flag("--arc-length", *closest_by_length, "Print u as the fraction of the length travelled");
-    closest->callback([closest_data, x_text, y_text, closest_by_length] {
-        const Vec2 q{parse_finite("path closest: X", *x_text), parse_finite("path closest: Y", *y_text)};
-        const ComplexPath parsed = parse_svg_path(*closest_data);
+    const auto to_point = query_args(closest, {{"X", "Query point x"}, {"Y", "Query point y"}},
+                                 "Print u as the fraction of the length travelled");
+    closest->callback([to_point] {
+        const Vec2 q{parse_finite("path closest: X", to_point->values[0]), parse_finite("path closest: Y", to_point->values[1])};
+        const ComplexPath parsed = parse_svg_path(to_point->data);
         const ClosestPoint c = closest_point(parsed, q);
-        const double u = *closest_by_length ? length_fraction(parsed, c.u) : c.u;
+        const double u = to_point->by_length ? length_fraction(parsed, c.u) : c.u;
         std::cout << json_object({{"u", u}, {"x", c.point.x}, {"y", c.point.y}, {"distance", c.distance}}) << '\n';
     });
 
     auto* bend = path.add_subcommand(
         "curvature", "Print the signed curvature, unit tangent and normal at U: {\"curvature\", \"tx\", \"ty\", \"nx\", \"ny\"}");
-    auto bend_data = std::make_shared<std::string>();
-    auto u_text = std::make_shared<std::string>();
-    auto bend_by_length = std::make_shared<bool>(false);
-    bend->add_option("DATA", *bend_data, "SVG path data")->required();
-    bend->add_option("U", *u_text, "Parameter in [0, 1]")->required();
-    bend->add_flag("--arc-length", *bend_by_length, "U is the fraction of the length travelled");
-    bend->callback([bend_data, u_text, bend_by_length] {
-        const double fraction = parse_fraction("path curvature", *u_text);
-        const ComplexPath parsed = parse_svg_path(*bend_data);
+    const auto at = query_args(bend, {{"U", "Parameter in [0, 1]"}}, "U is the fraction of the length travelled");
+    bend->callback([at] {
+        const double fraction = parse_fraction("path curvature", at->values[0]);
+        const ComplexPath parsed = parse_svg_path(at->data);
         // Curvature and frame are geometric: the same at the same point, whatever the parameter.
-        const double u = *bend_by_length ? parsed.u_at_length(fraction * parsed.length()) : fraction;
+        const double u = at->by_length ? parsed.u_at_length(fraction * parsed.length()) : fraction;
         const PathFrame f = frame(parsed, u);
         std::cout << json_object({{"curvature", f.curvature},
                                   {"tx", f.tangent.x},
@@ -90,21 +98,17 @@ void register_path_query_commands(CLI::App& path) {
     });
 
     auto* cut = path.add_subcommand("slice", "Print the SVG path data of the part between U0 and U1");
-    auto cut_data = std::make_shared<std::string>();
-    auto u0_text = std::make_shared<std::string>();
-    auto u1_text = std::make_shared<std::string>();
-    auto cut_by_length = std::make_shared<bool>(false);
-    cut->add_option("DATA", *cut_data, "SVG path data")->required();
-    cut->add_option("U0", *u0_text, "Where the slice starts, in [0, 1)")->required();
-    cut->add_option("U1", *u1_text, "Where it ends, in (U0, 1]")->required();
-    cut->add_flag("--arc-length", *cut_by_length, "U0 and U1 are fractions of the length travelled");
-    cut->callback([cut_data, u0_text, u1_text, cut_by_length] {
-        const double u0 = parse_fraction("path slice", *u0_text);
-        const double u1 = parse_fraction("path slice", *u1_text);
-        if (!(u1 > u0)) throw Error("path slice: U1 must exceed U0 (got " + *u0_text + " and " + *u1_text + ")");
-        const ComplexPath parsed = parse_svg_path(*cut_data);
-        const Path part = *cut_by_length ? slice_by_length(parsed, u0 * parsed.length(), u1 * parsed.length())
-                                         : slice(parsed, u0, u1);
+    const auto span = query_args(cut, {{"U0", "Where the slice starts, in [0, 1)"}, {"U1", "Where it ends, in (U0, 1]"}},
+                                 "U0 and U1 are fractions of the length travelled");
+    cut->callback([span] {
+        const std::string& u0_text = span->values[0];
+        const std::string& u1_text = span->values[1];
+        const double u0 = parse_fraction("path slice", u0_text);
+        const double u1 = parse_fraction("path slice", u1_text);
+        if (!(u1 > u0)) throw Error("path slice: U1 must exceed U0 (got " + u0_text + " and " + u1_text + ")");
+        const ComplexPath parsed = parse_svg_path(span->data);
+        const Path part = span->by_length ? slice_by_length(parsed, u0 * parsed.length(), u1 * parsed.length())
+                                          : slice(parsed, u0, u1);
         std::cout << svg_path_data(part) << '\n';
     });
 

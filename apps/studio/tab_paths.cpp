@@ -5,6 +5,8 @@
 // Bézier and spline control points can be dragged (the path's spec is edited and rebuilt);
 // the animation follows. A loaded scene with timelines gets a timeline view under the canvas:
 // its animations then play by the scene's time, which the view's playhead seeks.
+// Over 500 lines: one tab class whose panels share its state (pick, curve, drag, timeline);
+// its list helpers are in path_entries.*, and a split of the class would only pass that state on.
 #include "studio.hpp"
 #include "path_entries.hpp"
 

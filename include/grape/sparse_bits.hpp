@@ -13,6 +13,7 @@
 #pragma once
 
 #include <grape/bits.hpp>
+#include <grape/detail/line_allocator.hpp>
 
 #include <bit>
 #include <cassert>
@@ -105,18 +106,7 @@ public:
 private:
     // Bitmaps on 64-byte boundaries, so that no 32-byte load of the word kernels straddles
     // two cache lines (malloc's 16-byte alignment split every other one).
-    template <class T>
-    struct LineAllocator {
-        using value_type = T;
-        LineAllocator() = default;
-        template <class U>
-        LineAllocator(const LineAllocator<U>&) noexcept {}
-        T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t{64})); }
-        void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, std::align_val_t{64}); }
-        template <class U>
-        bool operator==(const LineAllocator<U>&) const noexcept { return true; }
-    };
-    using Bitmap = std::vector<Word, LineAllocator<Word>>;
+    using Bitmap = std::vector<Word, detail::LineAllocator<Word>>;
 
     struct Block {
         std::uint32_t count = 0;  // set bits, or `uncounted` (bitmap blocks after `&=` only)

@@ -167,17 +167,16 @@ void SparseBitVector::check_same_size(const SparseBitVector& other, const char* 
 }
 
 SparseBitVector& SparseBitVector::operator&=(const SparseBitVector& other) {
+    if (this == &other) return *this;  // x & x is x
     check_same_size(other, "operator&=");
     const auto& kernels = detail::word_kernels();
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
         Block& x = blocks_[b];
         const Block& y = other.blocks_[b];
-        if (x.count == 0) continue;
-        if (y.count == 0) {
+        if (x.count == 0 || y.count == 0) {  // an empty side: an empty block
             x = Block{};
             continue;
         }
-        if (this == &other) continue;
         const bool xb = !x.bitmap.empty(), yb = !y.bitmap.empty();
         if (xb && yb) {
             // A plain and at memory speed; counting in the same pass (a nibble-table popcount

@@ -246,23 +246,19 @@ GRAPE_TARGET("avx2,popcnt") std::size_t and_count_avx2(Word* a, const Word* b, s
 }
 #endif
 
+// One binary kernel a = a op b, compiled with `features`.
+#define GRAPE_BINARY_KERNEL(features, V, name, op) \
+    GRAPE_TARGET(features) void name(Word* a, const Word* b, std::size_t n) noexcept { binary_loop<V, Op::op>(a, b, n); }
+
 // One set of kernels per instruction set; the macro stamps out identical bodies so that each
 // is compiled (and inlined into) with its own target features.
 #define GRAPE_DEFINE_KERNELS(ns, features, V)                                                                     \
     namespace ns {                                                                                            \
     GRAPE_TARGET(features) std::size_t count(const Word* w, std::size_t n) noexcept { return count_loop(w, n); } \
-    GRAPE_TARGET(features) void and_with(Word* a, const Word* b, std::size_t n) noexcept {                    \
-        binary_loop<V, Op::and_>(a, b, n);                                                                         \
-    }                                                                                                         \
-    GRAPE_TARGET(features) void or_with(Word* a, const Word* b, std::size_t n) noexcept {                     \
-        binary_loop<V, Op::or_>(a, b, n);                                                                          \
-    }                                                                                                         \
-    GRAPE_TARGET(features) void xor_with(Word* a, const Word* b, std::size_t n) noexcept {                    \
-        binary_loop<V, Op::xor_>(a, b, n);                                                                         \
-    }                                                                                                         \
-    GRAPE_TARGET(features) void and_not(Word* a, const Word* b, std::size_t n) noexcept {                     \
-        binary_loop<V, Op::and_not>(a, b, n);                                                                     \
-    }                                                                                                         \
+    GRAPE_BINARY_KERNEL(features, V, and_with, and_)                                                          \
+    GRAPE_BINARY_KERNEL(features, V, or_with, or_)                                                            \
+    GRAPE_BINARY_KERNEL(features, V, xor_with, xor_)                                                          \
+    GRAPE_BINARY_KERNEL(features, V, and_not, and_not)                                                        \
     GRAPE_TARGET(features) void flip(Word* a, std::size_t n) noexcept { flip_loop<V>(a, n); }                    \
     GRAPE_TARGET(features) void shift_up(Word* a, std::size_t n, std::size_t s) noexcept {                    \
         shift_up_words<V>(a, n, s);                                                                           \

@@ -6,6 +6,7 @@
 
 #include "svg_segment.hpp"
 
+#include <grape/detail/line_allocator.hpp>
 #include <grape/path.hpp>
 
 #include <cmath>
@@ -92,18 +93,6 @@ public:
 
 private:
     // Cache-line aligned storage, so that no piece straddles two lines.
-    template <class T>
-    struct LineAllocator {
-        using value_type = T;
-        LineAllocator() = default;
-        template <class U>
-        LineAllocator(const LineAllocator<U>&) noexcept {}
-        T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t{64})); }
-        void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, std::align_val_t{64}); }
-        template <class U>
-        bool operator==(const LineAllocator<U>&) const noexcept { return true; }
-    };
-
     std::vector<double, LineAllocator<double>> values_;
     double steps_ = 0.0;
     Vec2 start_, end_;

@@ -26,6 +26,11 @@ inline std::size_t segment_of(double x, std::size_t count, double& local) noexce
     return i;
 }
 
+/// The breaks k / segments, k = 1 … segments − 1, of `segments` equal pieces.
+inline void even_breaks(std::size_t segments, std::vector<double>& out) {
+    for (std::size_t k = 1; k < segments; ++k) out.push_back(static_cast<double>(k) / static_cast<double>(segments));
+}
+
 /// An arc of an ellipse (a circle when rx == ry and rotation == 0).
 class ArcNode final : public PathNode {
 public:
@@ -127,14 +132,15 @@ private:
 class PolylineNode final : public PathNode {
 public:
     PolylineNode(PathKind kind, std::vector<Vec2> points);
+    const std::vector<Vec2> points;
+
     Vec2 point(double u) const noexcept override;
     Vec2 d1(double u) const noexcept override;
     Vec2 d2(double u) const noexcept override;
-    DerivativeBounds derivative_bounds(double a, double b) const noexcept override;
+    // Length and flattening are exact for straight segments (the cosine ease only retimes them).
     double length_at(double u) const noexcept override;
     void append_flattened(double tolerance, std::vector<Vec2>& out) const override;
-
-    const std::vector<Vec2> points;
+    DerivativeBounds derivative_bounds(double a, double b) const noexcept override;
 
 protected:
     bool closed_form_length() const noexcept override { return true; }

@@ -1,7 +1,6 @@
-// SVG path data → ComplexPath. The grammar (SVG 1.1 §8.3.9 / SVG 2 §9.3.9) and the arc
-// conversion of the SVG implementation notes (F.6.5, F.6.6) turn the text into absolute
-// segments (svg_parser.hpp); each drawn segment then becomes one part (a line, a Bézier or an
-// exact elliptical arc) of a ComplexPath with cues by length.
+// SVG path data → absolute segments (svg_parser.hpp): the grammar (SVG 1.1 §8.3.9 / SVG 2
+// §9.3.9), its scanner and the command state. The arc conversion (F.6.5, F.6.6) is in
+// svg_arc.cpp; the segments become a ComplexPath in svg_path.cpp.
 #include "svg_parser.hpp"
 
 #include "path_node.hpp"
@@ -171,18 +170,6 @@ private:
     std::size_t at_ = 0;
 };
 
-// cos and sin of an angle in degrees, exact at multiples of 90° so that axis-aligned arcs
-// (the usual case) carry no rounding from the rotation.
-void cos_sin_degrees(double degrees, double& c, double& s) noexcept {
-    if (degrees == 0.0) { c = 1.0; s = 0.0; return; }
-    if (degrees == 90.0) { c = 0.0; s = 1.0; return; }
-    if (degrees == 180.0) { c = -1.0; s = 0.0; return; }
-    if (degrees == 270.0) { c = 0.0; s = -1.0; return; }
-    const double radians = degrees * (pi / 180.0);
-    c = std::cos(radians);
-    s = std::sin(radians);
-}
-
 bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 // The command state of the grammar: current point, subpath start and the control point the
@@ -256,6 +243,12 @@ private:
         return absolute({x, y}, relative);
     }
 
+    // The pair after the separator that follows the previous one.
+    Vec2 next_pair(bool relative) {
+        scan_.skip_comma_wsp();
+        return pair(relative);
+    }
+
     Vec2 absolute(Vec2 p, bool relative) const {
         const Vec2 q = relative ? current_ + p : p;
         if (!finite(q)) fail_range("a coordinate is too large", group_at_);
@@ -287,11 +280,8 @@ private:
         }
         case 'C': {
             const Vec2 c1 = pair(relative);
-            scan_.skip_comma_wsp();
-            const Vec2 c2 = pair(relative);
-            scan_.skip_comma_wsp();
-            const Vec2 end = pair(relative);
-            cubic(c1, c2, end);
+            const Vec2 c2 = next_pair(relative);
+            cubic(c1, c2, next_pair(relative));
             return;
         }
         case 'S': {
@@ -300,16 +290,12 @@ private:
             const Vec2 c1 = previous_ == Previous::cubic ? 2.0 * current_ - control_ : current_;
             if (!finite(c1)) fail_range("a reflected control point is too large", group_at_);
             const Vec2 c2 = pair(relative);
-            scan_.skip_comma_wsp();
-            const Vec2 end = pair(relative);
-            cubic(c1, c2, end);
+            cubic(c1, c2, next_pair(relative));
             return;
         }
         case 'Q': {
             const Vec2 c = pair(relative);
-            scan_.skip_comma_wsp();
-            const Vec2 end = pair(relative);
-            quadratic(c, end);
+            quadratic(c, next_pair(relative));
             return;
         }
         case 'T': {
@@ -409,191 +395,9 @@ private:
 
 }  // namespace
 
-bool svg_arc_to_center(Vec2 from, Vec2 to, double rx, double ry, double rotation_degrees, bool large_arc,
-                       bool sweep, SvgSegment& out) noexcept {
-    rx = std::abs(rx);
-    ry = std::abs(ry);
-    if (rx == 0.0 || ry == 0.0 || !std::isfinite(rotation_degrees)) return false;
-    double degrees = std::fmod(rotation_degrees, 360.0);
-    if (degrees < 0.0) degrees += 360.0;
-    if (degrees >= 360.0) degrees = 0.0;  // fmod of a tiny negative angle rounds up to 360
-    double c = 1.0;
-    double s = 0.0;
-    cos_sin_degrees(degrees, c, s);
-
-    // Half the chord in the ellipse's own axes (F.6.5.1), halved before subtracting so that
-    // endpoints near ±DBL_MAX do not overflow.
-    const Vec2 half = from * 0.5 - to * 0.5;
-    const double x1 = c * half.x + s * half.y;
-    const double y1 = -s * half.x + c * half.y;
-    const double h = std::hypot(x1, y1);
-    if (!(h > 0.0) || !std::isfinite(h)) return false;
-    // Everything below is written with the unit chord direction (xu, yu) and the axis ratio q,
-    // so radii many orders of magnitude from the chord neither overflow nor underflow.
-    const double xu = x1 / h;
-    const double yu = y1 / h;
-    const double q = rx / ry;
-    if (!(q > 0.0) || !std::isfinite(q)) return false;  // an ellipse flatter than a double holds
-    // n² is the SVG notes' Λ: above 1 the radii are too small to reach and are scaled up (F.6.6).
-    // Divided directly, x1/rx is exact for the common just-reaching arc (a half circle drawn
-    // from its diameter); h·hypot(xu/rx, yu/ry) rounds 1 to 1 − 2⁻⁵³ there, and the square
-    // root below turns that into a center offset of 1.5e-8 radii. An overflow gives n = inf:
-    // scaled up; an underflow gives n ≈ 0, where the offset is √(1 − n²) ≈ 1 anyway.
-    const double n = std::hypot(x1 / rx, y1 / ry);
-    // Radii that reach to within a few ulps (decimal data that only rounds to just-reaching:
-    // icons draw circles as two half-arcs) reach exactly: the center is the chord's midpoint.
-    constexpr double reach_tolerance = 8.0 * std::numeric_limits<double>::epsilon();
-    const bool just_reaching = std::abs(1.0 - n * n) <= reach_tolerance;
-    double cx = 0.0;
-    double cy = 0.0;
-    if (just_reaching) {
-        // cx = cy = 0 and the radii as given.
-    } else if (!(n < 1.0)) {
-        rx = h * std::hypot(xu, yu * q);
-        ry = h * std::hypot(xu / q, yu);
-        if (!std::isfinite(rx) || !std::isfinite(ry)) return false;
-    } else {
-        // F.6.5.2 divided through by rx²·ry²: the center sits sqrt(1/Λ − 1) half-chords off.
-        const double k = std::sqrt((1.0 - n) * (1.0 + n)) * (large_arc == sweep ? -1.0 : 1.0);
-        cx = k * rx * (yu / std::hypot(xu / q, yu));
-        cy = -k * ry * (xu / std::hypot(xu, yu * q));
-    }
-    // F.6.5.5–6: start angle and sweep, measured on the unit circle the ellipse maps to.
-    const double theta1 = std::atan2((y1 - cy) / ry, (x1 - cx) / rx);
-    const double theta2 = std::atan2((-y1 - cy) / ry, (-x1 - cx) / rx);
-    double delta = theta2 - theta1;
-    if (sweep && delta < 0.0) delta += 2.0 * pi;
-    if (!sweep && delta > 0.0) delta -= 2.0 * pi;
-    if (delta == 0.0) {
-        // The chord vanished against the radii: the small arc is the chord itself, the large
-        // one the whole ellipse.
-        if (!large_arc) return false;
-        delta = sweep ? 2.0 * pi : -2.0 * pi;
-    }
-    const Vec2 mid = from * 0.5 + to * 0.5;
-    out.kind = SvgSegment::Kind::arc;
-    out.p[0] = from;
-    out.p[1] = to;
-    out.center = Vec2{c * cx - s * cy, s * cx + c * cy} + mid;
-    out.rx = rx;
-    out.ry = ry;
-    out.rotation = degrees * (pi / 180.0);
-    out.start_angle = theta1;
-    out.end_angle = theta1 + delta;
-    return finite(out.center);
-}
-
 SvgCommands parse_svg_segments(std::string_view data) {
     Scanner scan(data);
     return Builder(scan).run();
 }
 
 }  // namespace grape::detail
-
-namespace grape {
-namespace {
-
-Path to_path(const detail::SvgSegment& s) {
-    using Kind = detail::SvgSegment::Kind;
-    switch (s.kind) {
-    case Kind::line: return LinearPath(s.p[0], s.p[1]);
-    case Kind::quadratic: return QuadraticBezierPath(s.p[0], s.p[1], s.p[2]);
-    case Kind::cubic: return CubicBezierPath(s.p[0], s.p[1], s.p[2], s.p[3]);
-    case Kind::move:
-    case Kind::close: break;  // not drawn: callers skip them
-    case Kind::arc:
-        // A circular arc is a CirclePath (its rotation only shifts the angles); anything
-        // else is the exact ellipse.
-        if (s.rx == s.ry) {
-            return CirclePath(s.center, s.rx, s.start_angle + s.rotation, s.end_angle + s.rotation);
-        }
-        return EllipticalArcPath(s.center, s.rx, s.ry, s.rotation, s.start_angle, s.end_angle);
-    }
-    return LinearPath(s.p[0], s.p[1]);
-}
-
-// A ComplexPath handle on an SvgNode.
-class SvgComplexPath : public ComplexPath {
-public:
-    explicit SvgComplexPath(std::shared_ptr<const detail::PathNode> node) noexcept : ComplexPath(std::move(node)) {}
-};
-
-// The path of the commands. Strict: any error throws. Otherwise SVG's error rule: the path
-// stops before the command holding the first error, which is reported.
-SvgPathParse build(detail::SvgCommands parsed, bool strict) {
-    std::optional<SvgPathError> error;
-    if (!parsed.ok) {
-        if (strict) throw Error(parsed.error);
-        error = SvgPathError{parsed.error_offset, parsed.error};
-    }
-    std::vector<detail::SvgSegment>& commands = parsed.commands;
-    std::vector<Path> drawn;
-    drawn.reserve(commands.size());
-    double total = 0.0;
-    for (std::size_t i = 0; i < commands.size(); ++i) {
-        const detail::SvgSegment& s = commands[i];
-        if (!s.drawn() || s.zero_length) continue;
-        std::string why;
-        Path part;
-        try {
-            part = to_path(s);
-        } catch (const Error& e) {
-            // The parser's checks keep coordinates finite; a kind may still refuse extremes
-            // (a length beyond a double). Say where in the data that segment came from.
-            why = "SVG path data: the segment at offset " + std::to_string(s.offset) + " is not a valid path (" +
-                  e.what() + ")";
-        }
-        // Cues are length ratios: an infinite length would make them NaN.
-        if (why.empty() && !std::isfinite(total + part.length())) {
-            why = "SVG path data: the path's length overflows a double (segment at offset " +
-                  std::to_string(s.offset) + ")";
-        }
-        if (!why.empty()) {
-            if (strict) throw Error(why);
-            error = SvgPathError{s.offset, why};
-            commands.resize(i);
-            break;
-        }
-        total += part.length();
-        drawn.push_back(std::move(part));
-    }
-    // A segment shorter than the rounding error of the whole length (2⁻⁵²·L) would get a cue
-    // span no u can land in, and 1/span can overflow; leaving it out moves nothing by more
-    // than that rounding error.
-    std::vector<Path> parts;
-    parts.reserve(drawn.size());
-    for (Path& part : drawn) {
-        if (part.length() > std::numeric_limits<double>::epsilon() * total) parts.push_back(std::move(part));
-    }
-    if (parts.empty()) {
-        // Nothing of positive length (empty data, only movetos, zero-length segments, or
-        // lengths that underflow): the path stands at its first point, the origin for none.
-        Vec2 at{};
-        for (const detail::SvgSegment& s : commands) {
-            if (s.kind == detail::SvgSegment::Kind::move) {
-                at = s.p[0];
-                break;
-            }
-        }
-        parts.push_back(LinearPath(at, at));
-        total = 0.0;
-    }
-    // Cues by length, as ComplexPath::by_length sets them.
-    std::vector<double> cues(parts.size());
-    double s = 0.0;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        cues[i] = total > 0.0 ? std::min(s / total, 1.0) : static_cast<double>(i) / static_cast<double>(parts.size());
-        s += parts[i].length();
-    }
-    return SvgPathParse{
-        SvgComplexPath(detail::make_node<detail::SvgNode>(std::move(parts), std::move(cues), std::move(commands))),
-        std::move(error)};
-}
-
-}  // namespace
-
-ComplexPath parse_svg_path(std::string_view data) { return build(detail::parse_svg_segments(data), true).path; }
-
-SvgPathParse parse_svg_path_prefix(std::string_view data) { return build(detail::parse_svg_segments(data), false); }
-
-}  // namespace grape

@@ -304,20 +304,25 @@ void Canvas::fill_polygon(std::span<const Vec2> points, const FillStyle& style) 
     detail::fill(cr, style);
 }
 
+namespace {
+
+// A circle as cairo's current path; false (and no path) when it has no finite area to draw.
+bool circle_path(cairo_t* cr, Vec2 center, double radius) {
+    if (!is_finite(center) || !std::isfinite(radius) || radius <= 0.0) return false;
+    cairo_new_path(cr);
+    cairo_arc(cr, center.x, center.y, radius, 0.0, 2.0 * pi);
+    cairo_close_path(cr);
+    return true;
+}
+
+}  // namespace
+
 void Canvas::stroke_circle(Vec2 center, double radius, const StrokeStyle& style) {
-    if (!is_finite(center) || !std::isfinite(radius) || radius <= 0.0) return;
-    cairo_new_path(state_->cr);
-    cairo_arc(state_->cr, center.x, center.y, radius, 0.0, 2.0 * pi);
-    cairo_close_path(state_->cr);
-    detail::stroke(state_->cr, style);
+    if (circle_path(state_->cr, center, radius)) detail::stroke(state_->cr, style);
 }
 
 void Canvas::fill_circle(Vec2 center, double radius, const FillStyle& style) {
-    if (!is_finite(center) || !std::isfinite(radius) || radius <= 0.0) return;
-    cairo_new_path(state_->cr);
-    cairo_arc(state_->cr, center.x, center.y, radius, 0.0, 2.0 * pi);
-    cairo_close_path(state_->cr);
-    detail::fill(state_->cr, style);
+    if (circle_path(state_->cr, center, radius)) detail::fill(state_->cr, style);
 }
 
 void Canvas::dot(Vec2 center, double radius, Color color) {

@@ -276,20 +276,15 @@ void add_path_range(cairo_t* cr, const Path& path, double tolerance) {
             if (add_dense_sine(cr, path, tolerance)) return;
             break;
         case PathKind::quadratic_bezier:
-        case PathKind::physics: {
-            // Degree elevation: the cubic with controls p0 + ⅔(p1 − p0) and p2 + ⅔(p1 − p2),
-            // where p1 − p0 = d1(0)/2 and p1 − p2 = −d1(1)/2.
-            const Vec2 p0 = path.point(0.0);
-            const Vec2 p2 = path.point(1.0);
-            begin_at(cr, p0, tolerance);
-            curve_to(cr, p0 + path.d1(0.0) / 3.0, p2 - path.d1(1.0) / 3.0, p2);
-            return;
-        }
+        case PathKind::physics:
         case PathKind::cubic_bezier: {
-            const Vec2 p0 = path.point(0.0);
-            const Vec2 p3 = path.point(1.0);
-            begin_at(cr, p0, tolerance);
-            curve_to(cr, p0 + path.d1(0.0) / 3.0, p3 - path.d1(1.0) / 3.0, p3);
+            // A cubic's inner controls are p0 + d1(0)/3 and p3 − d1(1)/3. A quadratic is the
+            // same by degree elevation: controls p0 + ⅔(p1 − p0) and p2 + ⅔(p1 − p2), where
+            // p1 − p0 = d1(0)/2 and p1 − p2 = −d1(1)/2.
+            const Vec2 start = path.point(0.0);
+            const Vec2 end = path.point(1.0);
+            begin_at(cr, start, tolerance);
+            curve_to(cr, start + path.d1(0.0) / 3.0, end - path.d1(1.0) / 3.0, end);
             return;
         }
         case PathKind::linear_spline:

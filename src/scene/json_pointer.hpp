@@ -33,4 +33,21 @@ std::string type_of(const Json& j) {
     return "null";
 }
 
+/// The member `key` of `obj` as true or false, `fallback` when absent; otherwise
+/// `fail(pointer of the member, why)` (the scene and sprite-sheet readers differ only in it).
+template <class Json, class Fail>
+bool bool_member(const Json& obj, const std::string& pointer, std::string_view key, bool fallback, Fail fail) {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return fallback;
+    if (!it->is_boolean()) fail(child(pointer, key), "expected true or false, got " + type_of(*it));
+    return it->template get<bool>();
+}
+
+/// `j` as a string; otherwise `fail(pointer, why)`.
+template <class Json, class Fail>
+std::string string_of(const Json& j, const std::string& pointer, Fail fail) {
+    if (!j.is_string()) fail(pointer, "expected a string, got " + type_of(j));
+    return j.template get<std::string>();
+}
+
 }  // namespace grape::detail

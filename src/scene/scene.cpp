@@ -109,27 +109,10 @@ Scene read_scene(const json& root) {
             const json& path = required(o, p, "path");
             if (path.is_string()) a.path_name = path.get<std::string>();
             a.path = reader.read(path, child(p, "path"), 0);
-            if (const auto c = o.find("curve"); c != o.end()) {
-                const std::string text = string_value(*c, child(p, "curve"));
-                if (const NamedCurve* named = scene.find_curve(text)) {
-                    a.curve = named->curve;
-                    a.curve_name = text;
-                } else {
-                    try {
-                        a.curve = parse_curve(text);
-                    } catch (const Error& e) {
-                        fail(child(p, "curve"), std::string(e.what()) + " (nor is it a name in /curves)");
-                    }
-                }
-            }
+            curve_field(o, p, scene, a.curve, a.curve_name);
             a.duration = positive_field(o, p, "duration");
             a.delay = non_negative_field(o, p, "delay", 0.0);
-            if (const auto r = o.find("repeat"); r != o.end()) {
-                const long long repeat = integer(*r, child(p, "repeat"));
-                if (repeat < -1 || repeat > 1000000000)
-                    fail(child(p, "repeat"), "must be −1 (forever) or a count in [0, 1e9] (got " + std::to_string(repeat) + ")");
-                a.repeat = static_cast<int>(repeat);
-            }
+            a.repeat = repeat_field(o, p, a.repeat);
             a.yoyo = bool_field(o, p, "yoyo", false);
             a.reversed = bool_field(o, p, "reversed", false);
             a.repeat_delay = non_negative_field(o, p, "repeat_delay", 0.0);

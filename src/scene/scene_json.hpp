@@ -58,6 +58,11 @@ std::vector<Vec2> points_field(const json& obj, const std::string& pointer, std:
 std::string name_field(const json& obj, const std::string& pointer, std::set<std::string>* unique);
 std::string one_of(const json& obj, const std::string& pointer, std::string_view key, std::string fallback,
                    const std::vector<std::string_view>& allowed);
+/// The "repeat" count of `obj`: −1 (forever) or a count in [0, 1e9]; `fallback` when absent.
+int repeat_field(const json& obj, const std::string& pointer, int fallback);
+/// The "curve" of `obj` (a name in the scene's /curves or curve text) into `curve` and, when it
+/// is a name, `curve_name`; both untouched when absent.
+void curve_field(const json& obj, const std::string& pointer, const Scene& scene, Curve& curve, std::string& curve_name);
 std::size_t particle_index(const json& obj, const std::string& pointer, std::string_view key, std::size_t count);
 /// The JSON of `text`; syntax errors name the byte, prefixed by `where`.
 json parse_text(std::string_view text, const std::string& where);

@@ -63,20 +63,39 @@ double non_negative_field(const json& obj, const std::string& pointer, std::stri
 }
 
 bool bool_field(const json& obj, const std::string& pointer, std::string_view key, bool fallback) {
-    const auto it = obj.find(key);
-    if (it == obj.end()) return fallback;
-    if (!it->is_boolean()) fail(child(pointer, key), "expected true or false, got " + type_of(*it));
-    return it->get<bool>();
+    return detail::bool_member(obj, pointer, key, fallback, fail);
 }
 
-std::string string_value(const json& j, const std::string& pointer) {
-    if (!j.is_string()) fail(pointer, "expected a string, got " + type_of(j));
-    return j.get<std::string>();
-}
+std::string string_value(const json& j, const std::string& pointer) { return detail::string_of(j, pointer, fail); }
 
 std::string string_field(const json& obj, const std::string& pointer, std::string_view key, std::string fallback) {
     const auto it = obj.find(key);
     return it == obj.end() ? fallback : string_value(*it, child(pointer, key));
+}
+
+int repeat_field(const json& obj, const std::string& pointer, int fallback) {
+    const auto r = obj.find("repeat");
+    if (r == obj.end()) return fallback;
+    const long long repeat = integer(*r, child(pointer, "repeat"));
+    if (repeat < -1 || repeat > 1000000000)
+        fail(child(pointer, "repeat"), "must be −1 (forever) or a count in [0, 1e9] (got " + std::to_string(repeat) + ")");
+    return static_cast<int>(repeat);
+}
+
+void curve_field(const json& obj, const std::string& pointer, const Scene& scene, Curve& curve, std::string& curve_name) {
+    const auto c = obj.find("curve");
+    if (c == obj.end()) return;
+    const std::string text = string_value(*c, child(pointer, "curve"));
+    if (const NamedCurve* named = scene.find_curve(text)) {
+        curve = named->curve;
+        curve_name = text;
+        return;
+    }
+    try {
+        curve = parse_curve(text);
+    } catch (const Error& e) {
+        fail(child(pointer, "curve"), std::string(e.what()) + " (nor is it a name in /curves)");
+    }
 }
 
 long long integer(const json& j, const std::string& pointer) {

@@ -93,12 +93,7 @@ std::vector<SceneTimeline> read_timelines(const json& v, const std::string& poin
         SceneTimeline tl;
         tl.name = name_field(o, p, &names);
         tl.delay = non_negative_field(o, p, "delay", 0.0);
-        if (const auto r = o.find("repeat"); r != o.end()) {
-            const long long repeat = integer(*r, child(p, "repeat"));
-            if (repeat < -1 || repeat > 1000000000)
-                fail(child(p, "repeat"), "must be −1 (forever) or a count in [0, 1e9] (got " + std::to_string(repeat) + ")");
-            tl.repeat = static_cast<int>(repeat);
-        }
+        tl.repeat = repeat_field(o, p, tl.repeat);
         tl.repeat_delay = non_negative_field(o, p, "repeat_delay", 0.0);
         tl.yoyo = bool_field(o, p, "yoyo", false);
         if (o.contains("time_scale")) tl.time_scale = positive_field(o, p, "time_scale");
@@ -112,13 +107,8 @@ std::vector<SceneTimeline> read_timelines(const json& v, const std::string& poin
 ordered timelines_json(const std::vector<SceneTimeline>& timelines) {
     ordered a = ordered::array();
     for (const SceneTimeline& tl : timelines) {
-        ordered o;
-        o["name"] = tl.name;
-        o["delay"] = tl.delay;
-        o["repeat"] = tl.repeat;
-        o["repeat_delay"] = tl.repeat_delay;
-        o["yoyo"] = tl.yoyo;
-        o["time_scale"] = tl.time_scale;
+        ordered o = {{"name", tl.name}, {"delay", tl.delay}, {"repeat", tl.repeat},
+                     {"repeat_delay", tl.repeat_delay}, {"yoyo", tl.yoyo}, {"time_scale", tl.time_scale}};
         ordered children = ordered::array();
         for (const SceneTimelineChild& c : tl.children) {
             ordered e;
@@ -185,28 +175,12 @@ public:
 
     /// The animation named by child c of timeline k (its index).
     std::size_t animation(std::size_t k, std::size_t c, const std::string& name) {
-        const std::string p = child(pointer_of(k, c), "animation");
-        const auto [first, last] = animations_.equal_range(name);
-        if (first == last) fail(p, "no animation named \"" + name + "\" in /animations");
-        if (std::next(first) != last)
-            fail(p, "the name \"" + name + "\" is ambiguous (/animations/" + std::to_string(first->second) + " and /animations/" +
-                        std::to_string(std::next(first)->second) + ")");
-        place(placed_animation_[first->second], p, "animation", name);
-        placed_at_[first->second] = {k, c};
-        return first->second;
+        return place_unique(animations_, placed_animation_, placed_at_, k, c, "animation", name);
     }
 
     /// The tween named by child c of timeline k (its index).
     std::size_t tween(std::size_t k, std::size_t c, const std::string& name) {
-        const std::string p = child(pointer_of(k, c), "tween");
-        const auto [first, last] = tweens_.equal_range(name);
-        if (first == last) fail(p, "no tween named \"" + name + "\" in /tweens");
-        if (std::next(first) != last)
-            fail(p, "the name \"" + name + "\" is ambiguous (/tweens/" + std::to_string(first->second) + " and /tweens/" +
-                        std::to_string(std::next(first)->second) + ")");
-        place(placed_tween_[first->second], p, "tween", name);
-        placed_tween_at_[first->second] = {k, c};
-        return first->second;
+        return place_unique(tweens_, placed_tween_, placed_tween_at_, k, c, "tween", name);
     }
 
     std::size_t timeline(std::size_t k, std::size_t c, const std::string& name) {
@@ -229,20 +203,14 @@ public:
             const SceneTimelineChild& ch = tl.children[c];
             TimelineEntry e{.at = ch.at};
             switch (ch.kind) {
-                case SceneTimelineChildKind::animation: {
-                    const std::size_t i = animation(k, c, ch.name);
-                    const SceneAnimation& a = scene_.animations[i];
-                    e.duration = a.end_time();
-                    if (!std::isfinite(e.duration))
-                        fail(child(pointer_of(k, c), "animation"), "animation \"" + ch.name + "\" repeats forever: a timeline can only hold what ends");
-                    layout.index[c] = static_cast<std::ptrdiff_t>(i);
-                    break;
-                }
+                case SceneTimelineChildKind::animation:
                 case SceneTimelineChildKind::tween: {
-                    const std::size_t i = tween(k, c, ch.name);
-                    e.duration = scene_.tweens[i].end_time();
+                    const bool is_animation = ch.kind == SceneTimelineChildKind::animation;
+                    const std::size_t i = is_animation ? animation(k, c, ch.name) : tween(k, c, ch.name);
+                    e.duration = is_animation ? scene_.animations[i].end_time() : scene_.tweens[i].end_time();
+                    const char* what = is_animation ? "animation" : "tween";
                     if (!std::isfinite(e.duration))
-                        fail(child(pointer_of(k, c), "tween"), "tween \"" + ch.name + "\" repeats forever: a timeline can only hold what ends");
+                        fail(child(pointer_of(k, c), what), std::string(what) + " \"" + ch.name + "\" repeats forever: a timeline can only hold what ends");
                     layout.index[c] = static_cast<std::ptrdiff_t>(i);
                     break;
                 }
@@ -313,6 +281,23 @@ public:
     }
 
 private:
+    // The one entry of `names` called `name` (an animation or a tween: `what`), placed at child c
+    // of timeline k.
+    std::size_t place_unique(const std::multimap<std::string, std::size_t>& names, std::vector<std::string>& placed,
+                             std::vector<std::pair<std::ptrdiff_t, std::size_t>>& placed_at, std::size_t k, std::size_t c,
+                             const std::string& what, const std::string& name) {
+        const std::string p = child(pointer_of(k, c), what);
+        const std::string list = "/" + what + "s";
+        const auto [first, last] = names.equal_range(name);
+        if (first == last) fail(p, "no " + what + " named \"" + name + "\" in " + list);
+        if (std::next(first) != last)
+            fail(p, "the name \"" + name + "\" is ambiguous (" + list + "/" + std::to_string(first->second) + " and " + list + "/" +
+                        std::to_string(std::next(first)->second) + ")");
+        place(placed[first->second], p, what.c_str(), name);
+        placed_at[first->second] = {static_cast<std::ptrdiff_t>(k), c};
+        return first->second;
+    }
+
     void place(std::string& where, const std::string& pointer, const char* what, const std::string& name) {
         if (!where.empty()) fail(pointer, std::string(what) + " \"" + name + "\" is already placed at " + where);
         where = pointer.substr(0, pointer.rfind('/'));
@@ -380,10 +365,18 @@ SceneTiming::SceneTiming(const Scene& scene) {
     }
 }
 
+namespace {
+
+// The time at scene time t of what timeline `driver` holds at `start` (a free one: t itself).
+double driven_time(const SceneTiming& timing, std::ptrdiff_t driver, double start, double t) noexcept {
+    if (driver < 0) return t;
+    return timing.timeline_time(static_cast<std::size_t>(driver), t) - start;
+}
+
+}  // namespace
+
 double SceneTiming::tween_time(std::size_t i, double t) const noexcept {
-    const Tween& tw = tweens_[i];
-    if (tw.driver < 0) return t;
-    return timeline_time(static_cast<std::size_t>(tw.driver), t) - tw.start;
+    return driven_time(*this, tweens_[i].driver, tweens_[i].start, t);
 }
 
 double SceneTiming::tween_progress(std::size_t i, double t) const noexcept {
@@ -415,9 +408,7 @@ double SceneTiming::timeline_time(std::size_t k, double t) const noexcept {
 }
 
 double SceneTiming::animation_time(std::size_t i, double t) const noexcept {
-    const Animation& a = animations_[i];
-    if (a.driver < 0) return t;
-    return timeline_time(static_cast<std::size_t>(a.driver), t) - a.start;
+    return driven_time(*this, animations_[i].driver, animations_[i].start, t);
 }
 
 double SceneTiming::progress(std::size_t i, double t) const noexcept {

@@ -147,27 +147,10 @@ void read_tweens(const json& v, Scene& scene) {
         else tw.from = prop.value;  // unused; of the property's type
         const char* end = has_by ? "by" : "to";
         tw.to = read_value(o[end], child(p, end), prop.type);
-        if (const auto c = o.find("curve"); c != o.end()) {
-            const std::string text = string_value(*c, child(p, "curve"));
-            if (const NamedCurve* named = scene.find_curve(text)) {
-                tw.curve = named->curve;
-                tw.curve_name = text;
-            } else {
-                try {
-                    tw.curve = parse_curve(text);
-                } catch (const Error& e) {
-                    fail(child(p, "curve"), std::string(e.what()) + " (nor is it a name in /curves)");
-                }
-            }
-        }
+        curve_field(o, p, scene, tw.curve, tw.curve_name);
         tw.duration = positive_field(o, p, "duration");
         tw.delay = non_negative_field(o, p, "delay", 0.0);
-        if (const auto r = o.find("repeat"); r != o.end()) {
-            const long long repeat = integer(*r, child(p, "repeat"));
-            if (repeat < -1 || repeat > 1000000000)
-                fail(child(p, "repeat"), "must be −1 (forever) or a count in [0, 1e9] (got " + std::to_string(repeat) + ")");
-            tw.repeat = static_cast<int>(repeat);
-        }
+        tw.repeat = repeat_field(o, p, tw.repeat);
         tw.repeat_delay = non_negative_field(o, p, "repeat_delay", 0.0);
         tw.yoyo = bool_field(o, p, "yoyo", false);
         tw.reversed = bool_field(o, p, "reversed", false);

@@ -72,16 +72,10 @@ FrameRect rect(const json& j, const std::string& pointer, double lowest_size) {
 }
 
 bool boolean(const json& obj, const std::string& pointer, std::string_view key, bool fallback) {
-    const json* v = optional(obj, key);
-    if (!v) return fallback;
-    if (!v->is_boolean()) fail(child(pointer, key), "expected true or false, got " + type_of(*v));
-    return v->get<bool>();
+    return detail::bool_member(obj, pointer, key, fallback, fail);
 }
 
-std::string string(const json& j, const std::string& pointer) {
-    if (!j.is_string()) fail(pointer, "expected a string, got " + type_of(j));
-    return j.get<std::string>();
-}
+std::string string(const json& j, const std::string& pointer) { return detail::string_of(j, pointer, fail); }
 
 std::size_t frame_index(const json& obj, const std::string& pointer, std::string_view key, std::size_t count) {
     const std::string at = child(pointer, key);
