@@ -27,6 +27,7 @@ struct TimelineChild {
     bool is_timeline = false;
     bool entered = false;  // the cursor is at or past its start
     bool ended = false;    // the cursor is at or past its end
+    bool to_end = false;   // ended by a rebuild of the window: to be driven to its end
     // Animations: the timing, fixed when placed (position in plays = p0 + rate · seconds).
     double p0 = 0.0;       // plays at placement (−delay / duration)
     double rate = 0.0;     // plays per parent second
