@@ -100,46 +100,49 @@ struct TimelineCallback {
 
 using Handler = std::shared_ptr<const std::function<void()>>;
 
+// The fields an update reads come first and together (a sequence's hand-over reads the first
+// 240 bytes and the children at the window's edge); labels and the other handlers after them.
 struct TimelineRec {
     std::uint32_t generation = 0;
     bool alive = false;
     bool dead = false;  // killed during a dispatch: freed afterwards
+    bool yoyo = false;
+    bool paused = false;
+    bool dirty = false;            // children changed: rebuild the window at the cursor
+    bool arrived_forward = false;  // the cursor came forward (points at it are behind it)
+    std::uint32_t parent = UINT32_MAX;  // slot of the containing timeline
+    std::uint32_t nested = 0;           // children that are timelines
+    std::uint32_t root = UINT32_MAX;    // its entry in TimelineStore::lines_ and roots_ while top-level
     // play settings
     double delay = 0.0;
     double plays = 1.0;  // 0: forever
     double repeat_delay = 0.0;
-    bool yoyo = false;
     double time_scale = 1.0;
-    bool paused = false;
     // top-level clock: tau = base + elapsed · time_scale · direction
     double base = 0.0;
     double elapsed = 0.0;
     double direction = 1.0;
     // where it stands: seconds of own time since it was placed (delay included)
     double tau = 0.0;
-    std::uint64_t epoch = 0;  // bumped by every time change from outside the current update
-    std::uint32_t parent = UINT32_MAX;  // slot of the containing timeline
-    double placed = 0.0;                // its start there (parent seconds)
-    // layout
     double duration = 0.0;
-    double previous_start = 0.0;
-    double previous_end = 0.0;
+    double cursor = 0.0;      // local time the window stands at
+    std::size_t started = 0;  // children[0, started) entered
+    std::size_t finished = 0; // by_end[0, finished) ended
+    std::size_t passed = 0;   // callbacks[0, passed) crossed
     std::vector<TimelineChild> children;      // sorted by start (stable)
     std::vector<std::uint32_t> by_end;        // child indices sorted by end (stable)
     std::vector<std::uint32_t> active;        // entered and not ended, ascending
     std::vector<TimelineCallback> callbacks;  // sorted by time (stable)
-    std::vector<std::pair<std::string, double>> labels;
-    std::size_t started = 0;  // children[0, started) entered
-    std::size_t finished = 0; // by_end[0, finished) ended
-    std::size_t passed = 0;   // callbacks[0, passed) crossed
-    double cursor = 0.0;      // local time the window stands at
-    bool dirty = false;       // children changed: rebuild the window at the cursor
-    bool arrived_forward = false;  // the cursor came forward (points at it are behind it)
-    std::uint32_t nested = 0;      // children that are timelines
-    std::uint32_t root = UINT32_MAX;  // its entry in TimelineStore::lines_ and roots_ while top-level
+    Handler on_update;
+    std::uint64_t epoch = 0;  // bumped by every time change from outside the current update
     std::uint64_t rebuilds = 0;    // counts window rebuilds (a loop over the window restarts)
+    double placed = 0.0;                // its start there (parent seconds)
+    // layout
+    double previous_start = 0.0;
+    double previous_end = 0.0;
+    std::vector<std::pair<std::string, double>> labels;
     // events
-    Handler on_start, on_update, on_complete, on_reverse_complete;
+    Handler on_start, on_complete, on_reverse_complete;
     std::shared_ptr<const std::function<void(int)>> on_loop;
 };
 
