@@ -32,16 +32,64 @@ struct FloatPoint {
 
 const grape::LinearPath unit_line({0, 0}, {1, 0});  // x is the progress u
 
+// Two engines built and commanded alike; before every tick the slow one's timelines get a
+// command, which takes a timeline off the fast case.
+struct Twins {
+    Engine fast, slow;
+    std::vector<Timeline> fast_lines, slow_lines;
+    std::vector<Animation> fast_children, slow_children;
+
+    template <class F>
+    void on_line(std::size_t k, F f) {
+        f(fast_lines[k]);
+        f(slow_lines[k]);
+    }
+    template <class F>
+    void on_child(std::size_t k, F f) {
+        f(fast_children[k]);
+        f(slow_children[k]);
+    }
+    // The run-time commands of both tests, by a roll of the dice; true when one was given.
+    bool command(std::uint64_t event, std::size_t line, std::size_t child) {
+        switch (event) {
+            case 0: on_line(line, [](const Timeline& t) { t.reverse(); }); return true;
+            case 1: on_line(line, [](const Timeline& t) { t.play(); }); return true;
+            case 2: on_child(child, [](const Animation& a) { a.kill(); }); return true;
+            case 3: on_line(line, [](const Timeline& t) { t.pause(); }); return true;
+            case 4: on_line(line, [](const Timeline& t) { t.resume(); }); return true;
+            default: return false;
+        }
+    }
+    // The engine moves its records: animations created and killed (compaction) and, with
+    // `completing`, one that completes and is removed.
+    void churn(std::uint64_t event, bool completing) {
+        for (Engine* engine : {&fast, &slow}) {
+            Animation a = engine->create_animation(unit_line, 0.5);
+            if (event % 2 == 0) a.kill();
+            if (completing && event % 3 == 0) engine->create_animation(unit_line, 0.05);
+        }
+    }
+    void tick(double dt) {
+        for (const Timeline& b : slow_lines) b.on_start(nullptr);  // a command: the general path
+        fast.tick(dt);
+        slow.tick(dt);
+    }
+};
+
 }  // namespace
 
+// The tick's fast case (one animation or none active, no point crossed, no handler) and the
+// general update give the same bits: twin engines tick the same random flat timelines with
+// the same dt, one of them kept on the general path, and every target and time must be equal
+// after every tick, with sequences, overlaps, gaps, delays, repeats, repeat delays, yoyo, time
+// scales, reversed and parametric-curve children, run-time reverses, kills and pauses, and the
+// engine moving its records (animations created, killed and completing beside the timelines).
 TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
     for (std::uint64_t seed = 700; seed < 760; ++seed) {
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> unit(0, 1);
-        Engine fast, slow;
+        Twins w;
         std::vector<Point> fast_points(64), slow_points(64);
-        std::vector<Timeline> fast_lines, slow_lines;
-        std::vector<Animation> fast_children, slow_children;
         std::size_t next = 0;
         for (int t = 0; t < 4; ++t) {
             const TimelineDef def{.delay = unit(rng) < 0.5 ? 0.0 : 0.3 * unit(rng),
@@ -49,7 +97,7 @@ TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
                                   .repeat_delay = unit(rng) < 0.5 ? 0.0 : 0.2 * unit(rng),
                                   .yoyo = rng() % 2 == 0,
                                   .time_scale = 0.5 + unit(rng)};
-            Timeline a = fast.create_timeline(def), b = slow.create_timeline(def);
+            Timeline a = w.fast.create_timeline(def), b = w.slow.create_timeline(def);
             const int count = 1 + static_cast<int>(rng() % 5);
             for (int k = 0; k < count; ++k) {
                 const double duration = 0.2 + unit(rng);
@@ -63,77 +111,51 @@ TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
                                          .time_scale = 0.5 + unit(rng)};
                 const auto roll = rng() % 4;
                 const std::string at = roll == 0 ? "<+0.1" : roll == 1 ? "+=0.2" : ">";
-                Animation fa = fast.create_2d_animation(fast_points[next], unit_line, duration, child);
-                Animation sa = slow.create_2d_animation(slow_points[next], unit_line, duration, child);
+                Animation fa = w.fast.create_2d_animation(fast_points[next], unit_line, duration, child);
+                Animation sa = w.slow.create_2d_animation(slow_points[next], unit_line, duration, child);
                 ++next;
                 a.add(fa, at);
                 b.add(sa, at);
-                fast_children.push_back(fa);
-                slow_children.push_back(sa);
+                w.fast_children.push_back(fa);
+                w.slow_children.push_back(sa);
             }
-            fast_lines.push_back(a);
-            slow_lines.push_back(b);
+            w.fast_lines.push_back(a);
+            w.slow_lines.push_back(b);
         }
         for (int step = 0; step < 400; ++step) {
             const double dt = unit(rng) < 0.05 ? unit(rng) : 0.02 * unit(rng);
             const auto event = rng() % 200;
-            const std::size_t which = rng() % fast_lines.size();
-            const std::size_t child = rng() % fast_children.size();
-            if (event == 0) {
-                fast_lines[which].reverse();
-                slow_lines[which].reverse();
-            } else if (event == 1) {
-                fast_lines[which].play();
-                slow_lines[which].play();
-            } else if (event == 2) {
-                fast_children[child].kill();
-                slow_children[child].kill();
-            } else if (event == 3) {
-                fast_lines[which].pause();
-                slow_lines[which].pause();
-            } else if (event == 4) {
-                fast_lines[which].resume();
-                slow_lines[which].resume();
-            } else if (event < 40) {  // the engine moves its records: create, and kill (compaction)
-                for (Engine* engine : {&fast, &slow}) {
-                    Animation a = engine->create_animation(unit_line, 0.5);
-                    if (event % 2 == 0) a.kill();
-                    if (event % 3 == 0) engine->create_animation(unit_line, 0.05);  // completes: removed
-                }
-            }
-            for (const Timeline& b : slow_lines) b.on_start(nullptr);  // a command: the general path
-            fast.tick(dt);
-            slow.tick(dt);
+            const std::size_t which = rng() % w.fast_lines.size();
+            const std::size_t child = rng() % w.fast_children.size();
+            if (!w.command(event, which, child) && event < 40) w.churn(event, true);
+            w.tick(dt);
             for (std::size_t k = 0; k < next; ++k) {
                 ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
                 ASSERT_EQ(fast_points[k].y, slow_points[k].y);
             }
-            for (std::size_t k = 0; k < fast_lines.size(); ++k) ASSERT_EQ(fast_lines[k].time(), slow_lines[k].time());
-            for (std::size_t k = 0; k < fast_children.size(); ++k)
-                ASSERT_EQ(fast_children[k].progress(), slow_children[k].progress());
+            for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
+            for (std::size_t k = 0; k < w.fast_children.size(); ++k)
+                ASSERT_EQ(w.fast_children[k].progress(), w.slow_children[k].progress());
         }
     }
 }
 
-// A child placed behind the playhead goes to its end at once, with many timelines in the
-// store (the window's rebuild is given its timeline, it does not look for it).
 // Sequences as games write them (no delays, time scale 1, children one after another, some
-// with gaps, some sharing a target): the lean entries and the hand-over between children. The
-// handles are read every step (the child's phase is written out when looked at); now and then
-// a child gets a handler, a timeline is sought, reversed or paused, or a child is killed.
+// with gaps, some sharing a target, some with float members): the lean entries and the
+// hand-over between children. The children's handles are read every third step (a child's
+// phase is written out when looked at); now and then a child gets a handler or is killed, a
+// timeline is sought, reversed or paused, and the engine moves its records.
 TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
     for (std::uint64_t seed = 900; seed < 940; ++seed) {
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> unit(0, 1);
-        Engine fast, slow;
+        Twins w;
         std::vector<Point> fast_points(96), slow_points(96);
         std::vector<FloatPoint> fast_floats(96), slow_floats(96);
-        std::vector<Timeline> fast_lines, slow_lines;
-        std::vector<Animation> fast_children, slow_children;
         std::size_t next = 0;
         for (int t = 0; t < 6; ++t) {
             const TimelineDef def{.repeat = rng() % 2 == 0 ? -1 : static_cast<int>(rng() % 3)};
-            Timeline a = fast.create_timeline(def), b = slow.create_timeline(def);
+            Timeline a = w.fast.create_timeline(def), b = w.slow.create_timeline(def);
             const int count = 2 + static_cast<int>(rng() % 6);
             const bool shared = rng() % 3 == 0;  // every child moves the same object
             const std::size_t first = next;
@@ -147,70 +169,49 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
                 const std::size_t target = shared ? first : next;
                 Animation fa, sa;
                 if (rng() % 5 == 0) {
-                    fa = fast.create_2d_animation(fast_floats[target], unit_line, duration, child);
-                    sa = slow.create_2d_animation(slow_floats[target], unit_line, duration, child);
+                    fa = w.fast.create_2d_animation(fast_floats[target], unit_line, duration, child);
+                    sa = w.slow.create_2d_animation(slow_floats[target], unit_line, duration, child);
                 } else {
-                    fa = fast.create_2d_animation(fast_points[target], unit_line, duration, child);
-                    sa = slow.create_2d_animation(slow_points[target], unit_line, duration, child);
+                    fa = w.fast.create_2d_animation(fast_points[target], unit_line, duration, child);
+                    sa = w.slow.create_2d_animation(slow_points[target], unit_line, duration, child);
                 }
                 ++next;
                 a.add(fa, at);
                 b.add(sa, at);
-                fast_children.push_back(fa);
-                slow_children.push_back(sa);
+                w.fast_children.push_back(fa);
+                w.slow_children.push_back(sa);
             }
-            fast_lines.push_back(a);
-            slow_lines.push_back(b);
+            w.fast_lines.push_back(a);
+            w.slow_lines.push_back(b);
         }
         int completions_fast = 0, completions_slow = 0;
         for (int step = 0; step < 600; ++step) {
             const double dt = unit(rng) < 0.03 ? 0.3 * unit(rng) : 1.0 / 60.0;
             const auto event = rng() % 300;
-            const std::size_t which = rng() % fast_lines.size();
-            const std::size_t child = rng() % fast_children.size();
-            if (event == 0) {
-                fast_lines[which].reverse();
-                slow_lines[which].reverse();
-            } else if (event == 1) {
-                fast_lines[which].play();
-                slow_lines[which].play();
-            } else if (event == 2) {
-                fast_children[child].kill();
-                slow_children[child].kill();
-            } else if (event == 3) {
+            const std::size_t which = rng() % w.fast_lines.size();
+            const std::size_t child = rng() % w.fast_children.size();
+            if (event == 5) {
                 const double at = 3.0 * unit(rng);
-                fast_lines[which].seek(at);
-                slow_lines[which].seek(at);
-            } else if (event == 4) {
-                fast_children[child].on_complete([&] { ++completions_fast; });
-                slow_children[child].on_complete([&] { ++completions_slow; });
-            } else if (event == 5) {
-                fast_lines[which].pause();
-                slow_lines[which].pause();
+                w.on_line(which, [at](const Timeline& t) { t.seek(at); });
             } else if (event == 6) {
-                fast_lines[which].resume();
-                slow_lines[which].resume();
-            } else if (event < 20) {  // the engine moves its records: create, and kill (compaction)
-                for (Engine* engine : {&fast, &slow}) {
-                    Animation a = engine->create_animation(unit_line, 0.5);
-                    if (event % 2 == 0) a.kill();
-                }
+                w.fast_children[child].on_complete([&] { ++completions_fast; });
+                w.slow_children[child].on_complete([&] { ++completions_slow; });
+            } else if (!w.command(event, which, child) && event < 20) {
+                w.churn(event, false);
             }
-            for (const Timeline& b : slow_lines) b.on_start(nullptr);  // a command: the general path
-            fast.tick(dt);
-            slow.tick(dt);
+            w.tick(dt);
             for (std::size_t k = 0; k < next; ++k) {
                 ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
                 ASSERT_EQ(fast_points[k].y, slow_points[k].y);
                 ASSERT_EQ(fast_floats[k].x, slow_floats[k].x) << "seed " << seed << " step " << step << " child " << k;
                 ASSERT_EQ(fast_floats[k].y, slow_floats[k].y);
             }
-            for (std::size_t k = 0; k < fast_lines.size(); ++k) ASSERT_EQ(fast_lines[k].time(), slow_lines[k].time());
-            if (step % 3 == 0)  // and sometimes not looked at for a while
-                for (std::size_t k = 0; k < fast_children.size(); ++k) {
-                    ASSERT_EQ(fast_children[k].progress(), slow_children[k].progress()) << "seed " << seed << " step " << step;
-                    ASSERT_EQ(fast_children[k].time(), slow_children[k].time());
-                    ASSERT_EQ(fast_children[k].repetition(), slow_children[k].repetition());
+            for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
+            if (step % 3 == 0)
+                for (std::size_t k = 0; k < w.fast_children.size(); ++k) {
+                    ASSERT_EQ(w.fast_children[k].progress(), w.slow_children[k].progress()) << "seed " << seed << " step " << step;
+                    ASSERT_EQ(w.fast_children[k].time(), w.slow_children[k].time());
+                    ASSERT_EQ(w.fast_children[k].repetition(), w.slow_children[k].repetition());
                 }
             ASSERT_EQ(completions_fast, completions_slow);
         }
