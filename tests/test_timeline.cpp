@@ -1,6 +1,6 @@
 // Timelines in the engine: placement, play structure (delay, repeats, repeat delays, yoyo,
 // time scale), run-time reverse, callbacks and events in order, seek, nesting, handlers that
-// change anything, and no allocation per tick.
+// change anything (the fast tick, allocation and storage at scale: test_timeline_fast.cpp).
 #include <grape/error.hpp>
 #include <grape/timeline.hpp>
 
@@ -9,38 +9,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <random>
 #include <string>
 #include <vector>
-
-// --- allocation counting (as in test_anim.cpp) ---------------------------------------------------
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {  // std::stable_sort's buffer
-    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
-    return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using grape::Animation;
 using grape::AnimationDef;
@@ -836,76 +810,6 @@ TEST(Timeline, GrowingNestedTimelineKeepsTheOrderOfEnds) {
     EXPECT_EQ(events, (std::vector<std::string>{"early", "sibling", "inner"}));
     inner.add(engine.create_animation(unit_line, 0.25), 0.0);  // inside its length: no change
     EXPECT_EQ(parent.duration(), 1.5);
-}
-
-// Playing timelines allocates nothing per tick (the window's storage is reserved when
-// children are placed): sequences, overlaps, nesting, loops, yoyo, reverses, callbacks and
-// child handlers.
-TEST(TimelineScale, NoAllocationPerTick) {
-    Engine engine;
-    std::vector<Point> points(2000);
-    std::vector<Timeline> timelines;
-    int events = 0;
-    for (int t = 0; t < 100; ++t) {
-        Timeline tl = engine.create_timeline({.repeat = -1, .repeat_delay = 0.05 * (t % 3), .yoyo = t % 2 == 0});
-        for (int k = 0; k < 10; ++k) {
-            Animation a = engine.create_2d_animation(points[static_cast<std::size_t>(t * 10 + k)], unit_line, 0.1 + 0.01 * k,
-                                                     {.repeat = k % 3});
-            a.on_complete([&] { ++events; });
-            tl.add(a, k % 4 == 0 ? "<+0.05" : ">");
-        }
-        Timeline inner = engine.create_timeline({.repeat = 1, .yoyo = true});
-        inner.add(engine.create_2d_animation(points[static_cast<std::size_t>(1000 + t)], unit_line, 0.2));
-        inner.call([&] { ++events; }, 0.1);
-        tl.add(inner, "<");
-        tl.call([&] { ++events; }, 0.5);
-        timelines.push_back(tl);
-    }
-    engine.tick(0.01);
-    allocations = 0;
-    counting = true;
-    for (int k = 0; k < 1000; ++k) {
-        if (k % 100 == 50) timelines[static_cast<std::size_t>(k / 100)].reverse();
-        engine.tick(k % 97 == 0 ? 3.0 : 1.0 / 60.0);
-    }
-    counting = false;
-    EXPECT_EQ(allocations.load(), 0);
-    EXPECT_GT(events, 1000);
-}
-
-// Creating and killing a timeline of ten animations again and again allocates nothing beyond
-// what the animations themselves allocate (the timeline's slot and its window's vectors are
-// reused; which timeline drives an animation is kept by slot, not in nodes).
-TEST(TimelineScale, CreatingAndKillingReusesTheStorage) {
-    Engine engine;
-    std::vector<Point> points(10);
-    auto once = [&] {
-        Timeline tl = engine.create_timeline();
-        for (Point& p : points) tl.add(engine.create_2d_animation(p, unit_line, 0.5));
-        engine.tick(0.1);
-        tl.kill();
-    };
-    for (int k = 0; k < 3; ++k) once();
-    allocations = 0;
-    counting = true;
-    for (int k = 0; k < 100; ++k) once();
-    counting = false;
-    const long with_timelines = allocations.load();
-    // The same animations created, ticked and killed on their own: what the engine allocates.
-    auto alone = [&] {
-        std::vector<Animation> made;
-        made.reserve(points.size());
-        for (Point& p : points) made.push_back(engine.create_2d_animation(p, unit_line, 0.5));
-        engine.tick(0.1);
-        for (const Animation& a : made) a.kill();
-    };
-    alone();
-    allocations = 0;
-    counting = true;
-    for (int k = 0; k < 100; ++k) alone();
-    counting = false;
-    EXPECT_LE(with_timelines, allocations.load() - 100);  // less the vector `made`, once per round
-    EXPECT_EQ(engine.size(), 0u);
 }
 
 // Animations on their own: reverse() runs back through earlier plays (exact: the state is

@@ -1,16 +1,42 @@
-// The timelines' fast tick against the general update, bit for bit: twin engines, one of which
-// has every timeline forced onto the general path before each tick. The fast tick covers
-// timelines with one animation active inside a play (one cache line per timeline, the child's
-// record written only when something looks at it) and the hand-over from one child of a
-// sequence to the next; anything it leaves to the general path must come out the same.
+// Timelines at scale: the fast tick against the general update, bit for bit (twin engines, one
+// of which has every timeline forced onto the general path before each tick; the fast tick
+// covers timelines with one animation active inside a play, one cache line per timeline, the
+// child's record written only when something looks at it, and the hand-over from one child of
+// a sequence to the next), no allocation per tick, and the storage reused.
 #include <grape/timeline.hpp>
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdint>
+#include <cstdlib>
+#include <new>
 #include <random>
 #include <string>
 #include <vector>
+
+// --- allocation counting (as in test_anim.cpp) ---------------------------------------------------
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+namespace {
+std::atomic<bool> counting{false};
+std::atomic<long> allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {  // std::stable_sort's buffer
+    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+    return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size) { return operator new(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using grape::Animation;
 using grape::AnimationDef;
@@ -39,6 +65,17 @@ struct Twins {
     std::vector<Timeline> fast_lines, slow_lines;
     std::vector<Animation> fast_children, slow_children;
 
+    void create(const TimelineDef& def) {
+        fast_lines.push_back(fast.create_timeline(def));
+        slow_lines.push_back(slow.create_timeline(def));
+    }
+    // A child placed alike in the timelines made last.
+    void add(const Animation& fa, const Animation& sa, const std::string& at) {
+        fast_lines.back().add(fa, at);
+        slow_lines.back().add(sa, at);
+        fast_children.push_back(fa);
+        slow_children.push_back(sa);
+    }
     template <class F>
     void on_line(std::size_t k, F f) {
         f(fast_lines[k]);
@@ -97,7 +134,7 @@ TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
                                   .repeat_delay = unit(rng) < 0.5 ? 0.0 : 0.2 * unit(rng),
                                   .yoyo = rng() % 2 == 0,
                                   .time_scale = 0.5 + unit(rng)};
-            Timeline a = w.fast.create_timeline(def), b = w.slow.create_timeline(def);
+            w.create(def);
             const int count = 1 + static_cast<int>(rng() % 5);
             for (int k = 0; k < count; ++k) {
                 const double duration = 0.2 + unit(rng);
@@ -114,13 +151,8 @@ TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
                 Animation fa = w.fast.create_2d_animation(fast_points[next], unit_line, duration, child);
                 Animation sa = w.slow.create_2d_animation(slow_points[next], unit_line, duration, child);
                 ++next;
-                a.add(fa, at);
-                b.add(sa, at);
-                w.fast_children.push_back(fa);
-                w.slow_children.push_back(sa);
+                w.add(fa, sa, at);
             }
-            w.fast_lines.push_back(a);
-            w.slow_lines.push_back(b);
         }
         for (int step = 0; step < 400; ++step) {
             const double dt = unit(rng) < 0.05 ? unit(rng) : 0.02 * unit(rng);
@@ -155,7 +187,7 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
         std::size_t next = 0;
         for (int t = 0; t < 6; ++t) {
             const TimelineDef def{.repeat = rng() % 2 == 0 ? -1 : static_cast<int>(rng() % 3)};
-            Timeline a = w.fast.create_timeline(def), b = w.slow.create_timeline(def);
+            w.create(def);
             const int count = 2 + static_cast<int>(rng() % 6);
             const bool shared = rng() % 3 == 0;  // every child moves the same object
             const std::size_t first = next;
@@ -176,13 +208,8 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
                     sa = w.slow.create_2d_animation(slow_points[target], unit_line, duration, child);
                 }
                 ++next;
-                a.add(fa, at);
-                b.add(sa, at);
-                w.fast_children.push_back(fa);
-                w.slow_children.push_back(sa);
+                w.add(fa, sa, at);
             }
-            w.fast_lines.push_back(a);
-            w.slow_lines.push_back(b);
         }
         int completions_fast = 0, completions_slow = 0;
         for (int step = 0; step < 600; ++step) {
@@ -216,4 +243,74 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
             ASSERT_EQ(completions_fast, completions_slow);
         }
     }
+}
+
+// Playing timelines allocates nothing per tick (the window's storage is reserved when
+// children are placed): sequences, overlaps, nesting, loops, yoyo, reverses, callbacks and
+// child handlers.
+TEST(TimelineScale, NoAllocationPerTick) {
+    Engine engine;
+    std::vector<Point> points(2000);
+    std::vector<Timeline> timelines;
+    int events = 0;
+    for (int t = 0; t < 100; ++t) {
+        Timeline tl = engine.create_timeline({.repeat = -1, .repeat_delay = 0.05 * (t % 3), .yoyo = t % 2 == 0});
+        for (int k = 0; k < 10; ++k) {
+            Animation a = engine.create_2d_animation(points[static_cast<std::size_t>(t * 10 + k)], unit_line, 0.1 + 0.01 * k,
+                                                     {.repeat = k % 3});
+            a.on_complete([&] { ++events; });
+            tl.add(a, k % 4 == 0 ? "<+0.05" : ">");
+        }
+        Timeline inner = engine.create_timeline({.repeat = 1, .yoyo = true});
+        inner.add(engine.create_2d_animation(points[static_cast<std::size_t>(1000 + t)], unit_line, 0.2));
+        inner.call([&] { ++events; }, 0.1);
+        tl.add(inner, "<");
+        tl.call([&] { ++events; }, 0.5);
+        timelines.push_back(tl);
+    }
+    engine.tick(0.01);
+    allocations = 0;
+    counting = true;
+    for (int k = 0; k < 1000; ++k) {
+        if (k % 100 == 50) timelines[static_cast<std::size_t>(k / 100)].reverse();
+        engine.tick(k % 97 == 0 ? 3.0 : 1.0 / 60.0);
+    }
+    counting = false;
+    EXPECT_EQ(allocations.load(), 0);
+    EXPECT_GT(events, 1000);
+}
+
+// Creating and killing a timeline of ten animations again and again allocates nothing beyond
+// what the animations themselves allocate (the timeline's slot and its window's vectors are
+// reused; which timeline drives an animation is kept by slot, not in nodes).
+TEST(TimelineScale, CreatingAndKillingReusesTheStorage) {
+    Engine engine;
+    std::vector<Point> points(10);
+    auto once = [&] {
+        Timeline tl = engine.create_timeline();
+        for (Point& p : points) tl.add(engine.create_2d_animation(p, unit_line, 0.5));
+        engine.tick(0.1);
+        tl.kill();
+    };
+    for (int k = 0; k < 3; ++k) once();
+    allocations = 0;
+    counting = true;
+    for (int k = 0; k < 100; ++k) once();
+    counting = false;
+    const long with_timelines = allocations.load();
+    // The same animations created, ticked and killed on their own: what the engine allocates.
+    auto alone = [&] {
+        std::vector<Animation> made;
+        made.reserve(points.size());
+        for (Point& p : points) made.push_back(engine.create_2d_animation(p, unit_line, 0.5));
+        engine.tick(0.1);
+        for (const Animation& a : made) a.kill();
+    };
+    alone();
+    allocations = 0;
+    counting = true;
+    for (int k = 0; k < 100; ++k) alone();
+    counting = false;
+    EXPECT_LE(with_timelines, allocations.load() - 100);  // less the vector `made`, once per round
+    EXPECT_EQ(engine.size(), 0u);
 }
