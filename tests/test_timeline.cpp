@@ -1,6 +1,6 @@
 // Timelines in the engine: placement, play structure (delay, repeats, repeat delays, yoyo,
 // time scale), run-time reverse, callbacks and events in order, seek, nesting, handlers that
-// change anything, and no allocation per tick.
+// change anything (the fast tick, allocation and storage at scale: test_timeline_fast.cpp).
 #include <grape/error.hpp>
 #include <grape/timeline.hpp>
 
@@ -9,38 +9,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <random>
 #include <string>
 #include <vector>
-
-// --- allocation counting (as in test_anim.cpp) ---------------------------------------------------
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {  // std::stable_sort's buffer
-    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
-    return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using grape::Animation;
 using grape::AnimationDef;
@@ -796,94 +770,6 @@ TEST(TimelineHandlers, PlacingChildrenKeepsTheTimeAndGivesItsState) {
     }
 }
 
-// The tick's fast case (one animation or none active, no point crossed, no handler) and the
-// general update give the same bits: twin engines tick the same random flat timelines with
-// the same dt, one of them kept on the general path (a command before every tick takes a
-// timeline off the fast case), and every target and time must be equal after every tick, with
-// sequences, overlaps, gaps, delays, repeats, repeat delays, yoyo, time scales, reversed and
-// parametric-curve children, run-time reverses, kills and pauses, and the engine moving its
-// records (animations created, killed and completing beside the timelines).
-TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
-    for (std::uint64_t seed = 700; seed < 760; ++seed) {
-        std::mt19937_64 rng(seed);
-        std::uniform_real_distribution<double> unit(0, 1);
-        Engine fast, slow;
-        std::vector<Point> fast_points(64), slow_points(64);
-        std::vector<Timeline> fast_lines, slow_lines;
-        std::vector<Animation> fast_children, slow_children;
-        std::size_t next = 0;
-        for (int t = 0; t < 4; ++t) {
-            const TimelineDef def{.delay = unit(rng) < 0.5 ? 0.0 : 0.3 * unit(rng),
-                                  .repeat = rng() % 3 == 0 ? -1 : static_cast<int>(rng() % 3),
-                                  .repeat_delay = unit(rng) < 0.5 ? 0.0 : 0.2 * unit(rng),
-                                  .yoyo = rng() % 2 == 0,
-                                  .time_scale = 0.5 + unit(rng)};
-            Timeline a = fast.create_timeline(def), b = slow.create_timeline(def);
-            const int count = 1 + static_cast<int>(rng() % 5);
-            for (int k = 0; k < count; ++k) {
-                const double duration = 0.2 + unit(rng);
-                const AnimationDef child{.curve = rng() % 3 == 0 ? grape::Curve::cubic_bezier(0.3, 0.1, 0.2, 1.0)
-                                                                 : grape::Curve::quad_in_out(),
-                                         .delay = unit(rng) < 0.7 ? 0.0 : 0.2 * unit(rng),
-                                         .repeat = static_cast<int>(rng() % 3),
-                                         .repeat_delay = unit(rng) < 0.7 ? 0.0 : 0.1 * unit(rng),
-                                         .reversed = rng() % 4 == 0,
-                                         .yoyo = rng() % 2 == 0,
-                                         .time_scale = 0.5 + unit(rng)};
-                const auto roll = rng() % 4;
-                const std::string at = roll == 0 ? "<+0.1" : roll == 1 ? "+=0.2" : ">";
-                Animation fa = fast.create_2d_animation(fast_points[next], unit_line, duration, child);
-                Animation sa = slow.create_2d_animation(slow_points[next], unit_line, duration, child);
-                ++next;
-                a.add(fa, at);
-                b.add(sa, at);
-                fast_children.push_back(fa);
-                slow_children.push_back(sa);
-            }
-            fast_lines.push_back(a);
-            slow_lines.push_back(b);
-        }
-        for (int step = 0; step < 400; ++step) {
-            const double dt = unit(rng) < 0.05 ? unit(rng) : 0.02 * unit(rng);
-            const auto event = rng() % 200;
-            const std::size_t which = rng() % fast_lines.size();
-            const std::size_t child = rng() % fast_children.size();
-            if (event == 0) {
-                fast_lines[which].reverse();
-                slow_lines[which].reverse();
-            } else if (event == 1) {
-                fast_lines[which].play();
-                slow_lines[which].play();
-            } else if (event == 2) {
-                fast_children[child].kill();
-                slow_children[child].kill();
-            } else if (event == 3) {
-                fast_lines[which].pause();
-                slow_lines[which].pause();
-            } else if (event == 4) {
-                fast_lines[which].resume();
-                slow_lines[which].resume();
-            } else if (event < 40) {  // the engine moves its records: create, and kill (compaction)
-                for (Engine* engine : {&fast, &slow}) {
-                    Animation a = engine->create_animation(unit_line, 0.5);
-                    if (event % 2 == 0) a.kill();
-                    if (event % 3 == 0) engine->create_animation(unit_line, 0.05);  // completes: removed
-                }
-            }
-            for (const Timeline& b : slow_lines) b.on_start(nullptr);  // a command: the general path
-            fast.tick(dt);
-            slow.tick(dt);
-            for (std::size_t k = 0; k < next; ++k) {
-                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
-                ASSERT_EQ(fast_points[k].y, slow_points[k].y);
-            }
-            for (std::size_t k = 0; k < fast_lines.size(); ++k) ASSERT_EQ(fast_lines[k].time(), slow_lines[k].time());
-            for (std::size_t k = 0; k < fast_children.size(); ++k)
-                ASSERT_EQ(fast_children[k].progress(), slow_children[k].progress());
-        }
-    }
-}
-
 // A child placed behind the playhead goes to its end at once, with many timelines in the
 // store (the window's rebuild is given its timeline, it does not look for it).
 TEST(Timeline, ChildPlacedBehindThePlayheadGoesToItsEnd) {
@@ -924,76 +810,6 @@ TEST(Timeline, GrowingNestedTimelineKeepsTheOrderOfEnds) {
     EXPECT_EQ(events, (std::vector<std::string>{"early", "sibling", "inner"}));
     inner.add(engine.create_animation(unit_line, 0.25), 0.0);  // inside its length: no change
     EXPECT_EQ(parent.duration(), 1.5);
-}
-
-// Playing timelines allocates nothing per tick (the window's storage is reserved when
-// children are placed): sequences, overlaps, nesting, loops, yoyo, reverses, callbacks and
-// child handlers.
-TEST(TimelineScale, NoAllocationPerTick) {
-    Engine engine;
-    std::vector<Point> points(2000);
-    std::vector<Timeline> timelines;
-    int events = 0;
-    for (int t = 0; t < 100; ++t) {
-        Timeline tl = engine.create_timeline({.repeat = -1, .repeat_delay = 0.05 * (t % 3), .yoyo = t % 2 == 0});
-        for (int k = 0; k < 10; ++k) {
-            Animation a = engine.create_2d_animation(points[static_cast<std::size_t>(t * 10 + k)], unit_line, 0.1 + 0.01 * k,
-                                                     {.repeat = k % 3});
-            a.on_complete([&] { ++events; });
-            tl.add(a, k % 4 == 0 ? "<+0.05" : ">");
-        }
-        Timeline inner = engine.create_timeline({.repeat = 1, .yoyo = true});
-        inner.add(engine.create_2d_animation(points[static_cast<std::size_t>(1000 + t)], unit_line, 0.2));
-        inner.call([&] { ++events; }, 0.1);
-        tl.add(inner, "<");
-        tl.call([&] { ++events; }, 0.5);
-        timelines.push_back(tl);
-    }
-    engine.tick(0.01);
-    allocations = 0;
-    counting = true;
-    for (int k = 0; k < 1000; ++k) {
-        if (k % 100 == 50) timelines[static_cast<std::size_t>(k / 100)].reverse();
-        engine.tick(k % 97 == 0 ? 3.0 : 1.0 / 60.0);
-    }
-    counting = false;
-    EXPECT_EQ(allocations.load(), 0);
-    EXPECT_GT(events, 1000);
-}
-
-// Creating and killing a timeline of ten animations again and again allocates nothing beyond
-// what the animations themselves allocate (the timeline's slot and its window's vectors are
-// reused; which timeline drives an animation is kept by slot, not in nodes).
-TEST(TimelineScale, CreatingAndKillingReusesTheStorage) {
-    Engine engine;
-    std::vector<Point> points(10);
-    auto once = [&] {
-        Timeline tl = engine.create_timeline();
-        for (Point& p : points) tl.add(engine.create_2d_animation(p, unit_line, 0.5));
-        engine.tick(0.1);
-        tl.kill();
-    };
-    for (int k = 0; k < 3; ++k) once();
-    allocations = 0;
-    counting = true;
-    for (int k = 0; k < 100; ++k) once();
-    counting = false;
-    const long with_timelines = allocations.load();
-    // The same animations created, ticked and killed on their own: what the engine allocates.
-    auto alone = [&] {
-        std::vector<Animation> made;
-        made.reserve(points.size());
-        for (Point& p : points) made.push_back(engine.create_2d_animation(p, unit_line, 0.5));
-        engine.tick(0.1);
-        for (const Animation& a : made) a.kill();
-    };
-    alone();
-    allocations = 0;
-    counting = true;
-    for (int k = 0; k < 100; ++k) alone();
-    counting = false;
-    EXPECT_LE(with_timelines, allocations.load() - 100);  // less the vector `made`, once per round
-    EXPECT_EQ(engine.size(), 0u);
 }
 
 // Animations on their own: reverse() runs back through earlier plays (exact: the state is

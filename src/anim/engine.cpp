@@ -71,6 +71,7 @@ detail::LiveRecord Animation::record() const noexcept {
     if (!engine_) return {};
     detail::EngineImpl& impl = *engine_->impl_;
     if (!impl.find(slot_, generation_)) return {};
+    impl.touch_driven(slot_, false);
     return {&impl, impl.dense_of(slot_)};
 }
 
@@ -177,6 +178,7 @@ template <class Handler>
 void set_handler(const detail::LiveRecord& r, std::uint32_t slot, std::shared_ptr<const Handler> detail::Extra::*member,
                  Handler handler, std::uint8_t flag) {
     if (!r) return;
+    r.impl->touch_driven(slot, true);  // a timeline's fast tick reads no flags
     r.impl->extra_for(slot).*member = handler ? std::make_shared<const Handler>(std::move(handler)) : nullptr;
     r.hot().flags |= flag;
 }

@@ -192,6 +192,9 @@ public:
     TimelineStore& timelines();
     /// Driven by a timeline (its own pause, resume, seek and time scale are ignored).
     bool driven(std::uint32_t slot) const noexcept;
+    /// Before a handle reads or changes a driven record: its timeline writes out the state its
+    /// fast tick keeps aside (`leave`: and takes the general path next tick).
+    void touch_driven(std::uint32_t slot, bool leave) noexcept;
 
 private:
     friend class TimelineStore;

@@ -20,6 +20,10 @@ TimelineStore& EngineImpl::timelines() {
 
 bool EngineImpl::driven(std::uint32_t slot) const noexcept { return timelines_ && timelines_->drives(slot); }
 
+void EngineImpl::touch_driven(std::uint32_t slot, bool leave) noexcept {
+    if (timelines_) timelines_->touch(slot, leave);
+}
+
 namespace {
 std::string where_of(const char* what) { return std::string("Timeline::") + what; }
 
@@ -64,7 +68,8 @@ Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
         free_.reserve(recs_.size());  // so killing never allocates
         dead_slots_.reserve(recs_.size());
     }
-    roots_.push_back(RootEntry{.slot = slot});
+    roots_.push_back(RootEntry{.rec = recs_[slot].get(), .slot = slot});
+    lines_.emplace_back();
     TimelineRec& r = *recs_[slot];
     const std::uint32_t generation = r.generation;
     recycle(r);
@@ -250,7 +255,7 @@ void TimelineStore::add_timeline(std::uint32_t slot, std::uint32_t child, const 
     ++recs_[slot]->nested;
     if (c.root != UINT32_MAX) {
         flush(c, true);
-        roots_[c.root].mode = root_idle;  // driven by its parent from now on
+        set_mode(c.root, root_idle);  // driven by its parent from now on
     }
     c.parent = slot;
     ++stale_roots_;
@@ -312,7 +317,7 @@ void TimelineStore::kill_rec(std::uint32_t slot) noexcept {
     ++dead_;
     dead_slots_.push_back(slot);  // capacity reserved at creation
     if (r.parent == UINT32_MAX) ++stale_roots_;
-    if (r.root != UINT32_MAX) roots_[r.root].mode = root_idle;
+    if (r.root != UINT32_MAX) set_mode(r.root, root_idle);
     for (const TimelineChild& c : r.children) {
         if (c.is_timeline) {
             if (recs_[c.slot]->generation == c.generation) kill_rec(c.slot);
@@ -334,7 +339,6 @@ void TimelineStore::kill_all() noexcept {
 }
 
 void TimelineStore::finish() noexcept {
-    if (engine_.dead_ > 0) moved_ = true;  // the engine compacts next
     if (depth_ > 0) return;
     for (const std::uint32_t s : dead_slots_) {
         recycle(*recs_[s]);
@@ -350,13 +354,19 @@ void TimelineStore::finish() noexcept {
     pending_driven_.clear();
     // Top-level entries that were killed or placed into a timeline leave the list.
     if (stale_roots_ > 0) {
-        std::erase_if(roots_, [&](const RootEntry& e) {
-            TimelineRec& r = *recs_[e.slot];
-            const bool gone = !r.alive || r.parent != UINT32_MAX;
-            if (gone) r.root = UINT32_MAX;
-            return gone;
-        });
-        for (std::size_t i = 0; i < roots_.size(); ++i) recs_[roots_[i].slot]->root = static_cast<std::uint32_t>(i);
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < roots_.size(); ++i) {
+            TimelineRec& r = *recs_[roots_[i].slot];
+            if (!r.alive || r.parent != UINT32_MAX) {
+                r.root = UINT32_MAX;
+                continue;
+            }
+            roots_[kept] = roots_[i];
+            lines_[kept] = lines_[i];
+            r.root = static_cast<std::uint32_t>(kept++);
+        }
+        roots_.resize(kept);
+        lines_.resize(kept);
         stale_roots_ = 0;
     }
 }

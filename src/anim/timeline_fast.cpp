@@ -1,6 +1,7 @@
 // The tick over the top-level timelines: a fast loop for the common case (one animation or
-// none active, no point crossed, no handler to run) on the timelines' own entries, and the
-// general update (timeline_tick.cpp) for everything else.
+// none active, no point crossed, no handler to run) on one cache line per timeline, a short
+// path for a sequence's hand-over from one child to the next, and the general update
+// (timeline_tick.cpp) for everything else.
 //
 // The fast case repeats the general update's arithmetic operation for operation (the clock,
 // the timing model's play and phase inside a play, the child's position and phase, the
@@ -8,14 +9,18 @@
 // It holds only while the time stays inside the current play of the timeline and of the
 // child, `margin` plays clear of their ends, where the timing model's snapping (play_snap,
 // 1e-9 plays) and rounding cannot pick another play; and strictly between the nearest child
-// starts, ends and callbacks, so the window is unchanged. Anything else takes the general
-// path for that tick, after which the entry is filled again if the state allows it.
+// starts, ends and callbacks, so the window is unchanged. Those conditions are solved once,
+// when the entry is filled, for the last clock where they hold (`until`): every operation is
+// monotone in the clock. The child's engine record is not touched: its phase is written out
+// when anything looks at it (flush). Anything else takes the general path for that tick,
+// after which the entry is filled again if the state allows it.
 #include "timeline_impl.hpp"
 
 #include "engine_eval.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace grape::detail {
 
@@ -44,13 +49,65 @@ struct Depth {
 struct FastPoint {
     double tau, lp, local, position;
 };
-FastPoint fast_point(const RootEntry& e, double elapsed) noexcept {
+FastPoint fast_point(const RootLine& l, const RootEntry& e, double elapsed) noexcept {
     FastPoint p;
-    p.tau = e.base + elapsed * e.scale;
-    p.lp = (p.tau - e.delay) / e.duration - e.kc;
-    p.local = e.backward ? (1.0 - p.lp) * e.duration : p.lp * e.duration;
-    p.position = e.p0 + (p.local - e.start) * e.rate;
+    p.tau = l.base + elapsed * e.scale;
+    p.lp = (p.tau - e.delay) / l.duration - e.kc;
+    p.local = e.backward ? (1.0 - p.lp) * l.duration : p.lp * l.duration;
+    p.position = e.p0 + (p.local - l.start) * l.rate;
     return p;
+}
+
+// The fast case's conditions at a clock of `elapsed`: inside the play and the child's play,
+// `margin` clear of their ends, and strictly between the window's nearest points lo and hi.
+// Every operation is monotone in `elapsed`, so the clocks where they hold form an interval.
+bool holds(const RootLine& l, const RootEntry& e, double lo, double hi, bool one, double elapsed) noexcept {
+    const FastPoint p = fast_point(l, e, elapsed);
+    if (!(p.lp >= margin && p.lp <= 1.0 - margin && p.local > lo && p.local < hi)) return false;
+    const double ph = p.position - e.cj;
+    return !one || (ph >= margin && ph <= 1.0 - margin);
+}
+
+// The clock where the interval ends, solved in real arithmetic (a little off by rounding).
+double interval_end(const RootLine& l, const RootEntry& e, double lo, double hi, bool one) noexcept {
+    const double d = l.duration;
+    double lp_lo = margin, lp_hi = 1.0 - margin;
+    auto local_bounds = [&](double a, double b) {  // local in [a, b] as bounds on lp
+        lp_lo = std::max(lp_lo, e.backward ? 1.0 - b / d : a / d);
+        lp_hi = std::min(lp_hi, e.backward ? 1.0 - a / d : b / d);
+    };
+    local_bounds(lo, hi);
+    if (one && l.rate > 0.0)
+        local_bounds(l.start + (e.cj + margin - e.p0) / l.rate, l.start + (e.cj + 1.0 - margin - e.p0) / l.rate);
+    if (e.scale > 0.0) return (e.delay + (e.kc + lp_hi) * d - l.base) / e.scale;
+    if (e.scale < 0.0) return (e.delay + (e.kc + lp_lo) * d - l.base) / e.scale;
+    return HUGE_VAL;  // a stopped clock stays where it is
+}
+
+// The last clock of the interval from `elapsed` on, rounded down to a float; below `elapsed`
+// when there is none.
+float interval_until(const RootLine& l, const RootEntry& e, double lo, double hi, bool one, double elapsed) noexcept {
+    constexpr double largest = 3.0e38;  // below FLT_MAX
+    const double end = std::min(interval_end(l, e, lo, hi, one), largest);
+    if (!(end > elapsed)) return -HUGE_VALF;
+    // A millionth of the interval and 64 ulps of the clock back, then halved until it holds.
+    double at = end - (end - elapsed) * 1e-6 - 64.0 * std::numeric_limits<double>::epsilon() * std::fabs(end);
+    for (int k = 0; k < 40 && at > elapsed && !holds(l, e, lo, hi, one, at); ++k) at = elapsed + (at - elapsed) * 0.5;
+    if (!(at > elapsed) || !holds(l, e, lo, hi, one, at)) return -HUGE_VALF;
+    float f = static_cast<float>(at);
+    if (static_cast<double>(f) > at) f = std::nextafter(f, -HUGE_VALF);
+    return f;
+}
+
+inline void write_line(const RootLine& l, Vec2 p) noexcept {  // EngineImpl::write_2d
+    char* x = l.target;
+    if (l.bits & root_float) {
+        *reinterpret_cast<float*>(x) = static_cast<float>(p.x);
+        *reinterpret_cast<float*>(x + l.y_offset) = static_cast<float>(p.y);
+    } else {
+        *reinterpret_cast<double*>(x) = p.x;
+        *reinterpret_cast<double*>(x + l.y_offset) = p.y;
+    }
 }
 
 }  // namespace
@@ -73,92 +130,159 @@ TimelineRec* TimelineStore::current(std::uint32_t slot, std::uint32_t generation
 
 void TimelineStore::flush(TimelineRec& r, bool leave) noexcept {
     if (r.root == UINT32_MAX) return;
-    RootEntry& e = roots_[r.root];
-    if (e.mode == root_empty || e.mode == root_one) {
-        const FastPoint p = fast_point(e, e.elapsed);
-        r.elapsed = e.elapsed;
+    const RootLine& l = lines_[r.root];
+    const RootEntry& e = roots_[r.root];
+    const RootMode m = mode(r.root);
+    if (m == root_empty || m == root_one) {
+        const FastPoint p = fast_point(l, e, l.elapsed);
+        r.elapsed = l.elapsed;
         r.tau = p.tau;
         r.cursor = p.local;
-        if (e.mode == root_one) r.children[e.child_index].last = p.position;
+        if (m == root_one) {
+            r.children[e.child_index].last = p.position;
+            const Slot s = engine_.slots_[e.child];
+            if (s.generation == e.child_generation && !(s.dense & free_bit)) engine_.hot_[s.dense].phase = p.position - e.cj;
+        }
     }
-    if (leave) e.mode = root_slow;
+    if (leave) set_mode(r.root, root_slow);
 }
 
 void TimelineStore::forget(std::uint32_t animation_slot) noexcept {
     if (!drives(animation_slot)) return;
     TimelineRec& r = *recs_[driven_[animation_slot]];
-    if (r.root != UINT32_MAX && roots_[r.root].mode == root_one) flush(r, true);
+    if (r.root != UINT32_MAX && mode(r.root) == root_one) flush(r, true);
     driven_[animation_slot] = UINT32_MAX;
 }
 
+void TimelineStore::touch(std::uint32_t animation_slot, bool leave) noexcept {
+    if (drives(animation_slot)) flush(*recs_[driven_[animation_slot]], leave);
+}
+
+// Whether entry j goes the general way this tick.
+inline bool goes_slow(const RootLine& l, double dt) noexcept {
+    const std::uint8_t m = l.bits & root_mode;
+    return m == root_slow || ((m == root_empty || m == root_one) && !(l.elapsed + dt <= static_cast<double>(l.until)));
+}
+
+// The fast entries from i on, up to the first that takes the general path (returned; n: none).
+GRAPE_FLATTEN std::size_t TimelineStore::fast_run(std::size_t i, std::size_t n, double dt) noexcept {
+    for (; i < n; ++i) {
+        // The children's targets lie anywhere: fetched some entries ahead.
+        if (i + ahead < n && (lines_[i + ahead].bits & root_mode) == root_one) prefetch(lines_[i + ahead].target);
+        RootLine& l = lines_[i];
+        const std::uint8_t m = l.bits & root_mode;
+        if (m == root_idle) continue;
+        if (m == root_slow) return i;
+        const double elapsed = l.elapsed + dt;
+        if (!(elapsed <= static_cast<double>(l.until))) return i;
+        l.elapsed = elapsed;
+        if (m == root_empty) continue;
+        double x, u;
+        if (l.bits & root_lean) {  // fast_point with scale 1, delay 0, forward, p0 and cj 0
+            const double lp = (l.base + elapsed) / l.duration - static_cast<double>(l.kc);
+            x = (lp * l.duration - l.start) * l.rate;
+            if (l.bits & root_backward) x = 1.0 - x;
+            u = detail::ease_formula(l.kind, x);
+        } else {
+            const RootEntry& e = roots_[i];
+            x = fast_point(l, e, elapsed).position - e.cj;
+            if (l.bits & root_backward) x = 1.0 - x;
+            u = engine_.ease(l.kind, e.curve, x);
+        }
+        if (l.target) write_line(l, engine_.point(l.path, u));
+    }
+    return n;
+}
+
 void TimelineStore::tick(double dt) {
-    const std::size_t n = roots_.size();  // timelines created by handlers start next tick
-    const Slot* slots = engine_.slots_.data();
-    Hot* hot = engine_.hot_.data();
-    const Cold* cold = engine_.cold_.data();
-    if (moved_ || engine_.hot_.size() != seen_records_) {
-        for (std::size_t i = 0; i < n; ++i) {
-            RootEntry& e = roots_[i];
-            if (e.mode != root_one) continue;
-            const Slot s = slots[e.child];
-            if (s.generation == e.child_generation && !(s.dense & free_bit)) e.dense = s.dense;
-            else flush(*recs_[e.slot], true);
-        }
-        moved_ = false;
-    }
-    bool stale = false;  // records moved during this tick: look the children up
-    std::size_t records = engine_.hot_.size();
+    const std::size_t n = lines_.size();  // timelines created by handlers start next tick
     for (std::size_t i = 0; i < n; ++i) {
-        // The children's records and targets lie anywhere: fetched some entries ahead (a
-        // stale address is only a wasted fetch).
-        if (i + ahead < n && roots_[i + ahead].mode == root_one) {
-            const RootEntry& f = roots_[i + ahead];
-            if (f.dense < records) prefetch(hot + f.dense);
-            prefetch(f.target);
-        }
-        RootEntry& e = roots_[i];
-        if (e.mode == root_idle) continue;
-        if (e.mode != root_slow) {
-            const double elapsed = e.elapsed + dt;
-            const double tau = e.base + elapsed * e.scale;
-            const double lp = (tau - e.delay) / e.duration - e.kc;
-            const double local = e.backward ? (1.0 - lp) * e.duration : lp * e.duration;
-            if (lp >= margin && lp <= 1.0 - margin && local > e.lo && local < e.hi) {
-                if (e.mode == root_empty) {
-                    e.elapsed = elapsed;
-                    continue;
-                }
-                bool found = true;
-                if (stale) {
-                    const Slot s = slots[e.child];
-                    found = s.generation == e.child_generation && !(s.dense & free_bit);
-                    e.dense = s.dense;
-                }
-                const double into = local - e.start;
-                const double position = e.p0 + into * e.rate;
-                const double ph = position - e.cj;
-                if (found && ph >= margin && ph <= 1.0 - margin) {
-                    Hot& h = hot[e.dense];
-                    if (!(h.flags & (flag_dead | flag_custom))) {
-                        h.phase = ph;
-                        const double x = (h.flags & flag_backward) ? 1.0 - ph : ph;
-                        const double u = engine_.ease(h.kind, has_parameters(h.kind) ? cold[e.dense].curve : 0, x);
-                        if (h.target) engine_.write_2d(h, engine_.point(h.path, u));
-                        e.elapsed = elapsed;
-                        continue;
-                    }
-                }
-            }
-        }
-        step_slow(i, dt);
-        if (engine_.hot_.size() != records) stale = true;  // a handler created (the engine moved one)
-        records = engine_.hot_.size();
-        slots = engine_.slots_.data();  // handlers may have grown the storage
-        hot = engine_.hot_.data();
-        cold = engine_.cold_.data();
+        i = fast_run(i, n, dt);
+        if (i == n) break;
+        if (!cross(i, dt)) step_slow(i, dt);
     }
-    seen_records_ = engine_.hot_.size();
-    if (stale) moved_ = true;
+}
+
+// A sequence's child hands over to the next: the general update's sweep across the active
+// child's end and the next child's start, for plain animations that nobody listens to, in a
+// play without callbacks, forward. The same reads, writes and window changes as advance()
+// and sweep() in that case, without their machinery for handlers (none can run here).
+bool TimelineStore::cross(std::size_t i, double dt) {
+    const RootMode m = mode(static_cast<std::uint32_t>(i));
+    if (m != root_one && m != root_empty) return false;
+    TimelineRec& r = *roots_[i].rec;
+    if (!r.alive || r.paused || r.parent != UINT32_MAX || !r.callbacks.empty() || r.dirty || r.on_update || r.nested > 0 || roots_[i].backward || r.active.size() > 1)
+        return false;
+    flush(r, false);
+    const double elapsed = r.elapsed + dt;
+    const double tau = std::clamp(r.base + elapsed * r.time_scale * r.direction, 0.0, total(r));  // step_slow's
+    if (!(tau > r.tau) || !(r.tau > r.delay)) return false;
+    const PlayPoint a = point_of(r, r.tau), b = point_of(r, tau);
+    if (b.waiting || b.finished || a.finished || b.play != a.play || a.local != r.cursor || !(b.local > r.cursor)) return false;
+    // The points the sweep crosses: the active child's end, then the next child's start.
+    const double to = b.local;
+    std::size_t started = r.started, finished = r.finished;
+    std::uint32_t ended = UINT32_MAX, begun = UINT32_MAX;
+    for (;;) {
+        const double t_end = finished < r.by_end.size() ? r.children[r.by_end[finished]].end : HUGE_VAL;
+        const double t_start = started < r.children.size() ? r.children[started].start : HUGE_VAL;
+        const double t = std::min(t_end, t_start);
+        if (!(t <= to)) break;
+        if (t_end == t) {
+            if (ended != UINT32_MAX || begun != UINT32_MAX || r.active.empty() || r.by_end[finished] != r.active[0])
+                return false;
+            ended = r.by_end[finished++];
+        } else {
+            if (begun != UINT32_MAX) return false;
+            begun = static_cast<std::uint32_t>(started++);
+        }
+    }
+    if (ended == UINT32_MAX && begun == UINT32_MAX) return false;
+    if (ended == UINT32_MAX && !r.active.empty()) return false;
+    auto plain = [&](std::uint32_t k) {
+        const TimelineChild& c = r.children[k];
+        if (c.is_timeline) return false;
+        const Hot* h = engine_.find(c.slot, c.generation);
+        return h && !(h->flags & (flag_dead | flag_custom | flag_listens));
+    };
+    if ((ended != UINT32_MAX && !plain(ended)) || (begun != UINT32_MAX && !plain(begun))) return false;
+    // drive_animation without events: the child at `local`, unless it stands there already.
+    auto drive_plain = [&](std::uint32_t k, double local) {
+        TimelineChild& c = r.children[k];
+        const double into = local - c.start;
+        const double position = into <= 0.0 ? c.p0 : into >= c.length ? HUGE_VAL : c.p0 + into * c.rate;
+        if (position == c.last) return;
+        c.last = position;
+        const std::uint32_t dense = engine_.dense_of(c.slot);
+        const PlayState s = play_at_position(position, c.plays, c.reversed, c.yoyo, c.gap);
+        Hot& h = engine_.hot_[dense];
+        Cold& cold = engine_.cold_[dense];
+        cold.play = s.finished ? cold.plays - 1 : wrap_plays(s.play);
+        h.phase = s.phase < 0.0 ? 0.0 : s.phase + s.gap;
+        h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+        engine_.write_state(dense);  // plain: writes the target, runs nothing
+        if (s.phase < 0.0) h.phase = s.phase;
+    };
+    r.arrived_forward = true;
+    r.elapsed = elapsed;
+    if (ended != UINT32_MAX) {
+        drive_plain(ended, r.children[ended].end);  // drive_active at the end, then the end itself
+        r.children[ended].ended = true;
+        r.active.clear();
+        r.finished = finished;
+    }
+    if (begun != UINT32_MAX) {
+        TimelineChild& c = r.children[begun];
+        c.entered = true;
+        r.started = started;
+        if (!c.ended) r.active.push_back(begun);  // capacity reserved when placed
+        drive_plain(begun, c.start);
+    }
+    r.cursor = to;
+    if (!r.active.empty()) drive_plain(r.active[0], to);
+    r.tau = tau;
+    try_fast(i);
+    return true;
 }
 
 void TimelineStore::step_slow(std::size_t i, double dt) {
@@ -166,7 +290,7 @@ void TimelineStore::step_slow(std::size_t i, double dt) {
     TimelineRec& r = *recs_[slot];
     flush(r, true);
     if (!r.alive || r.paused || r.parent != UINT32_MAX) {
-        roots_[i].mode = root_idle;  // until a command on it
+        set_mode(static_cast<std::uint32_t>(i), root_idle);  // until a command on it
         return;
     }
     r.elapsed += dt;
@@ -180,8 +304,9 @@ void TimelineStore::step_slow(std::size_t i, double dt) {
 }
 
 void TimelineStore::try_fast(std::size_t i) noexcept {
+    RootLine& l = lines_[i];
     RootEntry& e = roots_[i];
-    e.mode = root_slow;
+    l.bits = root_slow;
     const TimelineRec& r = *recs_[e.slot];
     if (!r.alive || r.parent != UINT32_MAX || r.paused || r.dirty || r.nested > 0 || r.on_update || r.active.size() > 1 ||
         !(r.duration > 0.0))
@@ -207,17 +332,24 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     if (r.started > 0) lo = std::max(lo, r.children[r.started - 1].start);
     if (r.finished > 0) lo = std::max(lo, r.children[r.by_end[r.finished - 1]].end);
     if (r.passed > 0) lo = std::max(lo, r.callbacks[r.passed - 1].time);
-    e.elapsed = r.elapsed;
-    e.base = r.base;
+    l.elapsed = r.elapsed;
+    l.base = r.base;
+    l.duration = r.duration;
+    l.start = 0.0;
+    l.rate = 0.0;
     e.scale = scale;
     e.delay = r.delay;
-    e.duration = r.duration;
     e.kc = kc;
-    e.lo = lo;
-    e.hi = hi;
+    e.p0 = 0.0;
+    e.cj = 0.0;
     e.backward = s.backward;
+    const bool plain = scale == 1.0 && r.delay == 0.0 && !s.backward && kc < 16777216.0 &&
+                       static_cast<double>(static_cast<float>(kc)) == kc;
+    l.kc = plain ? static_cast<float>(kc) : 0.0f;
+    std::uint8_t bits = 0;
     if (r.active.empty()) {
-        e.mode = root_empty;
+        l.until = interval_until(l, e, lo, hi, false, r.elapsed);
+        l.bits = root_empty;
         return;
     }
     // The child: an animation inside one of its plays, written by the engine's plain path.
@@ -240,17 +372,24 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     for (int k = 0; k < 64 && hi > local && !(hi - c.start < c.length); ++k) hi = std::nextafter(hi, -HUGE_VAL);
     if (!(hi - c.start < c.length)) return;
     if (!(hi > local)) return;
-    e.hi = hi;
-    e.start = c.start;
+    const std::uint32_t dense = engine_.dense_of(c.slot);
+    l.start = c.start;
+    l.rate = c.rate;
+    l.target = h->target;
+    l.path = h->path;
+    l.y_offset = h->y_offset;
+    l.kind = h->kind;
     e.p0 = c.p0;
-    e.rate = c.rate;
     e.cj = cj;
+    e.curve = engine_.cold(dense).curve;
     e.child = c.slot;
     e.child_generation = c.generation;
     e.child_index = ci;
-    e.dense = engine_.dense_of(c.slot);
-    e.target = h->target;
-    e.mode = root_one;
+    l.until = interval_until(l, e, lo, hi, true, r.elapsed);
+    if (h->flags & flag_float) bits |= root_float;
+    if (cs.backward) bits |= root_backward;
+    if (plain && c.p0 == 0.0 && cj == 0.0 && !has_parameters(h->kind)) bits |= root_lean;
+    l.bits = static_cast<std::uint8_t>(bits | root_one);
 }
 
 }  // namespace grape::detail

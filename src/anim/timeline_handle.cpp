@@ -14,24 +14,18 @@ namespace grape {
 Timeline Engine::create_timeline() { return create_timeline(TimelineDef{}); }
 Timeline Engine::create_timeline(const TimelineDef& def) { return impl_->timelines().create(this, def); }
 
-#define GRAPE_TIMELINE(fallback)                                                   \
+// The record brought up to date from the tick's fast entry (`leave`: commands, which put the
+// timeline on the general path; queries keep the fast entry).
+#define GRAPE_TIMELINE_RECORD(fallback, leave)                                     \
     if (!engine_) return fallback;                                                 \
     detail::EngineImpl& impl = *engine_->impl_;                                    \
     detail::TimelineStore& store = impl.timelines();                               \
-    detail::TimelineRec* found = store.find(slot_, generation_);                   \
+    detail::TimelineRec* found = store.current(slot_, generation_, leave);         \
     if (!found) return fallback;                                                   \
     detail::TimelineRec& r = *found;                                               \
     (void)r
-
-// Queries: the record brought up to date, the tick's fast entry kept.
-#define GRAPE_TIMELINE_QUERY(fallback)                                             \
-    if (!engine_) return fallback;                                                 \
-    detail::EngineImpl& impl = *engine_->impl_;                                    \
-    detail::TimelineStore& store = impl.timelines();                               \
-    detail::TimelineRec* found = store.peek(slot_, generation_);                   \
-    if (!found) return fallback;                                                   \
-    detail::TimelineRec& r = *found;                                               \
-    (void)r
+#define GRAPE_TIMELINE(fallback) GRAPE_TIMELINE_RECORD(fallback, true)
+#define GRAPE_TIMELINE_QUERY(fallback) GRAPE_TIMELINE_RECORD(fallback, false)
 
 namespace {
 void require(const detail::TimelineRec* r, const char* what) {
@@ -224,5 +218,6 @@ void Timeline::on_loop(std::function<void(int)> handler) const {
 
 #undef GRAPE_TIMELINE
 #undef GRAPE_TIMELINE_QUERY
+#undef GRAPE_TIMELINE_RECORD
 
 }  // namespace grape

@@ -27,6 +27,7 @@ struct TimelineChild {
     bool is_timeline = false;
     bool entered = false;  // the cursor is at or past its start
     bool ended = false;    // the cursor is at or past its end
+    bool to_end = false;   // ended by a rebuild of the window: to be driven to its end
     // Animations: the timing, fixed when placed (position in plays = p0 + rate · seconds).
     double p0 = 0.0;       // plays at placement (−delay / duration)
     double rate = 0.0;     // plays per parent second
@@ -37,10 +38,11 @@ struct TimelineChild {
     double last = -HUGE_VAL;  // the position in plays last driven to (−inf: resting, not begun)
 };
 
-/// A top-level timeline as the tick walks it (TimelineStore::roots_, in creation order). In the
-/// fast modes the clock and the one active child's time are kept here and the record's tau,
-/// cursor and the child's `last` are stale until flush() (find() flushes first): the tick then
-/// computes them with the slow path's own operations, so both give the same bits.
+/// A top-level timeline as the tick walks it (TimelineStore::lines_ and roots_, in creation
+/// order). In the fast modes the clock and the one active child's time are kept in the entry,
+/// and the record's tau, cursor, the child's `last` and its engine record's phase are stale
+/// until flush() (find() and the child's handle flush first): the tick computes them with the
+/// slow path's own operations, so both give the same bits.
 enum RootMode : std::uint8_t {
     root_slow,   // the record is current; the tick advances it the general way
     root_idle,   // paused, killed or nested: the tick passes over it (commands make it slow)
@@ -48,26 +50,46 @@ enum RootMode : std::uint8_t {
     root_one,    // fast, one animation active
 };
 
-struct alignas(64) RootEntry {  // two cache lines: the clock and the window, the child
+enum RootBit : std::uint8_t {
+    root_mode = 3,         // RootMode
+    root_lean = 4,         // scale 1, no delay, a forward play, kc whole, the child's p0 and cj 0
+    root_float = 8,        // the child's target members are float
+    root_backward = 16,    // the child's play runs back
+};
+
+/// What the tick reads of a timeline in a fast mode: one cache line. Lean entries need nothing
+/// else; the others also read their RootEntry.
+struct alignas(64) RootLine {
     double elapsed = 0.0;   // TimelineRec::elapsed
     double base = 0.0;      // TimelineRec::base
+    double duration = 1.0;
+    double start = 0.0;     // the active child: TimelineChild's start and rate
+    double rate = 0.0;
+    float until = -1.0f;    // a clock at or below this stays inside the interval (rounded down)
+    float kc = 0.0f;        // lean: the play's start in plays (whole, below 2^24: exact)
+    char* target = nullptr; // the child's target (Hot::target)
+    std::uint32_t path = 0; // Hot::path
+    std::int16_t y_offset = 0;
+    CurveKind kind = CurveKind::linear;
+    std::uint8_t bits = root_slow;
+};
+static_assert(sizeof(RootLine) == 64);
+
+struct TimelineRec;
+
+/// The rest of a fast entry: the constants lean entries do without, and what flush() needs.
+struct RootEntry {
     double scale = 0.0;     // time_scale · direction
     double delay = 0.0;
-    double duration = 1.0;
     double kc = 0.0;        // the current play's start, in plays of the timeline
-    double lo = 0.0;        // local times strictly between lo and hi cross no point
-    double hi = 0.0;
-    double start = 0.0;     // the active child: TimelineChild's start, p0, rate (hi is kept
-    double p0 = 0.0;        // below its end by the rounding of local − start)
-    double rate = 0.0;
+    double p0 = 0.0;        // the active child: TimelineChild's p0
     double cj = 0.0;        // the child's current play's start, in its plays
-    std::uint32_t slot = 0;          // the timeline
+    TimelineRec* rec = nullptr;      // the timeline (stable: records are held by slot)
+    std::uint32_t slot = 0;
     std::uint32_t child = 0;         // the child's animation slot and generation
     std::uint32_t child_generation = 0;
     std::uint32_t child_index = 0;   // in TimelineRec::children
-    std::uint32_t dense = 0;         // the child's record (refreshed when records may have moved)
-    const char* target = nullptr;    // the child's target, to fetch ahead
-    RootMode mode = root_slow;
+    std::uint16_t curve = 0;         // Cold::curve (curves with parameters)
     bool backward = false;  // the play runs back (yoyo)
 };
 
@@ -78,46 +100,49 @@ struct TimelineCallback {
 
 using Handler = std::shared_ptr<const std::function<void()>>;
 
+// The fields an update reads come first and together (a sequence's hand-over reads the first
+// 240 bytes and the children at the window's edge); labels and the other handlers after them.
 struct TimelineRec {
     std::uint32_t generation = 0;
     bool alive = false;
     bool dead = false;  // killed during a dispatch: freed afterwards
+    bool yoyo = false;
+    bool paused = false;
+    bool dirty = false;            // children changed: rebuild the window at the cursor
+    bool arrived_forward = false;  // the cursor came forward (points at it are behind it)
+    std::uint32_t parent = UINT32_MAX;  // slot of the containing timeline
+    std::uint32_t nested = 0;           // children that are timelines
+    std::uint32_t root = UINT32_MAX;    // its entry in TimelineStore::lines_ and roots_ while top-level
     // play settings
     double delay = 0.0;
     double plays = 1.0;  // 0: forever
     double repeat_delay = 0.0;
-    bool yoyo = false;
     double time_scale = 1.0;
-    bool paused = false;
     // top-level clock: tau = base + elapsed · time_scale · direction
     double base = 0.0;
     double elapsed = 0.0;
     double direction = 1.0;
     // where it stands: seconds of own time since it was placed (delay included)
     double tau = 0.0;
-    std::uint64_t epoch = 0;  // bumped by every time change from outside the current update
-    std::uint32_t parent = UINT32_MAX;  // slot of the containing timeline
-    double placed = 0.0;                // its start there (parent seconds)
-    // layout
     double duration = 0.0;
-    double previous_start = 0.0;
-    double previous_end = 0.0;
+    double cursor = 0.0;      // local time the window stands at
+    std::size_t started = 0;  // children[0, started) entered
+    std::size_t finished = 0; // by_end[0, finished) ended
+    std::size_t passed = 0;   // callbacks[0, passed) crossed
     std::vector<TimelineChild> children;      // sorted by start (stable)
     std::vector<std::uint32_t> by_end;        // child indices sorted by end (stable)
     std::vector<std::uint32_t> active;        // entered and not ended, ascending
     std::vector<TimelineCallback> callbacks;  // sorted by time (stable)
-    std::vector<std::pair<std::string, double>> labels;
-    std::size_t started = 0;  // children[0, started) entered
-    std::size_t finished = 0; // by_end[0, finished) ended
-    std::size_t passed = 0;   // callbacks[0, passed) crossed
-    double cursor = 0.0;      // local time the window stands at
-    bool dirty = false;       // children changed: rebuild the window at the cursor
-    bool arrived_forward = false;  // the cursor came forward (points at it are behind it)
-    std::uint32_t nested = 0;      // children that are timelines
-    std::uint32_t root = UINT32_MAX;  // its entry in TimelineStore::roots_ while top-level
+    Handler on_update;
+    std::uint64_t epoch = 0;  // bumped by every time change from outside the current update
     std::uint64_t rebuilds = 0;    // counts window rebuilds (a loop over the window restarts)
+    double placed = 0.0;                // its start there (parent seconds)
+    // layout
+    double previous_start = 0.0;
+    double previous_end = 0.0;
+    std::vector<std::pair<std::string, double>> labels;
     // events
-    Handler on_start, on_update, on_complete, on_reverse_complete;
+    Handler on_start, on_complete, on_reverse_complete;
     std::shared_ptr<const std::function<void(int)>> on_loop;
 };
 
@@ -151,6 +176,9 @@ public:
         return animation_slot < driven_.size() && driven_[animation_slot] != UINT32_MAX;
     }
     void forget(std::uint32_t animation_slot) noexcept;  // killed: its timeline leaves the fast case
+    /// A driven animation's handle is used: its timeline's fast state is written out (`leave`:
+    /// and the timeline takes the general path next tick, as its flags may change).
+    void touch(std::uint32_t animation_slot, bool leave) noexcept;
 
     double total(const TimelineRec& r) const noexcept;        // own seconds of all plays and delays
     double length_in_parent(const TimelineRec& r) const noexcept { return total(r) / r.time_scale; }
@@ -171,6 +199,12 @@ private:
     void kill_rec(std::uint32_t slot) noexcept;
     void step_slow(std::size_t i, double dt);  // one top-level timeline's tick, the general way
     void try_fast(std::size_t i) noexcept;     // enters a fast mode where the state allows it
+    bool cross(std::size_t i, double dt);  // a child's end and the next one's start, fast
+    std::size_t fast_run(std::size_t i, std::size_t n, double dt) noexcept;  // the fast entries from i
+    void set_mode(std::uint32_t root, RootMode m) noexcept {
+        lines_[root].bits = static_cast<std::uint8_t>((lines_[root].bits & ~root_mode) | m);
+    }
+    RootMode mode(std::uint32_t root) const noexcept { return static_cast<RootMode>(lines_[root].bits & root_mode); }
 
     // the update (timeline_tick.cpp); false: a handler changed this timeline's time, stop
     bool advance(std::uint32_t slot, double tau, bool fire);
@@ -190,14 +224,11 @@ private:
     EngineImpl& engine_;
     std::vector<std::unique_ptr<TimelineRec>> recs_;
     std::vector<std::uint32_t> free_;
-    std::vector<RootEntry> roots_;      // top-level timelines, in creation order
+    std::vector<RootLine> lines_;       // top-level timelines, in creation order
+    std::vector<RootEntry> roots_;      // the same, what the tick reads only of non-lean entries
     std::vector<std::uint32_t> driven_;  // animation slot → timeline slot (UINT32_MAX: none)
     std::vector<std::pair<std::uint32_t, std::uint64_t>> stack_;  // updates in progress: slot, epoch
     std::size_t base_ = 0;  // stack_[base_, size) belong to the innermost tick, seek or sync
-    // The engine moves records when it creates (the record count grows) and compacts (after
-    // finish(), which sets moved_): then the entries' `dense` are looked up again.
-    std::size_t seen_records_ = 0;
-    bool moved_ = true;
     std::vector<std::uint32_t> dead_slots_;      // killed, freed after the dispatch
     std::vector<std::uint32_t> pending_driven_;  // animation slots to move out of the engine's loop
     std::size_t stale_roots_ = 0;                // roots_ entries killed or nested since the last clean-up

@@ -431,19 +431,25 @@ void TimelineStore::rebuild(std::uint32_t slot) {
     r.passed = 0;
     while (r.passed < r.callbacks.size() && reached(r.callbacks[r.passed].time)) ++r.passed;
     for (std::size_t i = 0; i < r.children.size(); ++i) r.children[i].entered = i < r.started;
-    std::vector<std::uint32_t> newly_ended;
+    bool behind = false;  // children placed behind the playhead (rare) go to their end
     for (std::size_t j = 0; j < r.by_end.size(); ++j) {
         TimelineChild& c = r.children[r.by_end[j]];
         const bool ended = j < r.finished;
-        if (ended && !c.ended) newly_ended.push_back(r.by_end[j]);
+        if (ended && !c.ended) behind = c.to_end = true;
         c.ended = ended;
     }
     r.active.clear();
     for (std::uint32_t i = 0; i < r.started; ++i)
         if (!r.children[i].ended) r.active.push_back(i);
-    if (newly_ended.empty()) return;
-    // Children placed behind the playhead (rare) go to their end.
-    for (const std::uint32_t i : newly_ended) drive(slot, i, x, false);
+    if (!behind) return;
+    // In the order of ends; handlers may place children meanwhile (the marks move with them).
+    for (std::size_t j = 0; j < recs_[slot]->by_end.size(); ++j) {
+        TimelineRec& q = *recs_[slot];
+        const std::uint32_t i = q.by_end[j];
+        if (!q.children[i].to_end) continue;
+        q.children[i].to_end = false;
+        drive(slot, i, x, false);
+    }
 }
 
 }  // namespace grape::detail

@@ -1,0 +1,316 @@
+// Timelines at scale: the fast tick against the general update, bit for bit (twin engines, one
+// of which has every timeline forced onto the general path before each tick; the fast tick
+// covers timelines with one animation active inside a play, one cache line per timeline, the
+// child's record written only when something looks at it, and the hand-over from one child of
+// a sequence to the next), no allocation per tick, and the storage reused.
+#include <grape/timeline.hpp>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdint>
+#include <cstdlib>
+#include <new>
+#include <random>
+#include <string>
+#include <vector>
+
+// --- allocation counting (as in test_anim.cpp) ---------------------------------------------------
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+namespace {
+std::atomic<bool> counting{false};
+std::atomic<long> allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {  // std::stable_sort's buffer
+    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+    return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size) { return operator new(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+using grape::Animation;
+using grape::AnimationDef;
+using grape::Engine;
+using grape::Timeline;
+using grape::TimelineDef;
+
+namespace {
+
+struct Point {
+    double x = -999.0;  // sentinel: "never written"
+    double y = -999.0;
+};
+
+struct FloatPoint {
+    float x = -999.0f;
+    float y = -999.0f;
+};
+
+const grape::LinearPath unit_line({0, 0}, {1, 0});  // x is the progress u
+
+// Two engines built and commanded alike; before every tick the slow one's timelines get a
+// command, which takes a timeline off the fast case.
+struct Twins {
+    Engine fast, slow;
+    std::vector<Timeline> fast_lines, slow_lines;
+    std::vector<Animation> fast_children, slow_children;
+
+    void create(const TimelineDef& def) {
+        fast_lines.push_back(fast.create_timeline(def));
+        slow_lines.push_back(slow.create_timeline(def));
+    }
+    // A child placed alike in the timelines made last.
+    void add(const Animation& fa, const Animation& sa, const std::string& at) {
+        fast_lines.back().add(fa, at);
+        slow_lines.back().add(sa, at);
+        fast_children.push_back(fa);
+        slow_children.push_back(sa);
+    }
+    template <class F>
+    void on_line(std::size_t k, F f) {
+        f(fast_lines[k]);
+        f(slow_lines[k]);
+    }
+    template <class F>
+    void on_child(std::size_t k, F f) {
+        f(fast_children[k]);
+        f(slow_children[k]);
+    }
+    // The run-time commands of both tests, by a roll of the dice; true when one was given.
+    bool command(std::uint64_t event, std::size_t line, std::size_t child) {
+        switch (event) {
+            case 0: on_line(line, [](const Timeline& t) { t.reverse(); }); return true;
+            case 1: on_line(line, [](const Timeline& t) { t.play(); }); return true;
+            case 2: on_child(child, [](const Animation& a) { a.kill(); }); return true;
+            case 3: on_line(line, [](const Timeline& t) { t.pause(); }); return true;
+            case 4: on_line(line, [](const Timeline& t) { t.resume(); }); return true;
+            default: return false;
+        }
+    }
+    // The engine moves its records: animations created and killed (compaction) and, with
+    // `completing`, one that completes and is removed.
+    void churn(std::uint64_t event, bool completing) {
+        for (Engine* engine : {&fast, &slow}) {
+            Animation a = engine->create_animation(unit_line, 0.5);
+            if (event % 2 == 0) a.kill();
+            if (completing && event % 3 == 0) engine->create_animation(unit_line, 0.05);
+        }
+    }
+    void tick(double dt) {
+        for (const Timeline& b : slow_lines) b.on_start(nullptr);  // a command: the general path
+        fast.tick(dt);
+        slow.tick(dt);
+    }
+};
+
+}  // namespace
+
+// The tick's fast case (one animation or none active, no point crossed, no handler) and the
+// general update give the same bits: twin engines tick the same random flat timelines with
+// the same dt, one of them kept on the general path, and every target and time must be equal
+// after every tick, with sequences, overlaps, gaps, delays, repeats, repeat delays, yoyo, time
+// scales, reversed and parametric-curve children, run-time reverses, kills and pauses, and the
+// engine moving its records (animations created, killed and completing beside the timelines).
+TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
+    for (std::uint64_t seed = 700; seed < 760; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> unit(0, 1);
+        Twins w;
+        std::vector<Point> fast_points(64), slow_points(64);
+        std::size_t next = 0;
+        for (int t = 0; t < 4; ++t) {
+            const TimelineDef def{.delay = unit(rng) < 0.5 ? 0.0 : 0.3 * unit(rng),
+                                  .repeat = rng() % 3 == 0 ? -1 : static_cast<int>(rng() % 3),
+                                  .repeat_delay = unit(rng) < 0.5 ? 0.0 : 0.2 * unit(rng),
+                                  .yoyo = rng() % 2 == 0,
+                                  .time_scale = 0.5 + unit(rng)};
+            w.create(def);
+            const int count = 1 + static_cast<int>(rng() % 5);
+            for (int k = 0; k < count; ++k) {
+                const double duration = 0.2 + unit(rng);
+                const AnimationDef child{.curve = rng() % 3 == 0 ? grape::Curve::cubic_bezier(0.3, 0.1, 0.2, 1.0)
+                                                                 : grape::Curve::quad_in_out(),
+                                         .delay = unit(rng) < 0.7 ? 0.0 : 0.2 * unit(rng),
+                                         .repeat = static_cast<int>(rng() % 3),
+                                         .repeat_delay = unit(rng) < 0.7 ? 0.0 : 0.1 * unit(rng),
+                                         .reversed = rng() % 4 == 0,
+                                         .yoyo = rng() % 2 == 0,
+                                         .time_scale = 0.5 + unit(rng)};
+                const auto roll = rng() % 4;
+                const std::string at = roll == 0 ? "<+0.1" : roll == 1 ? "+=0.2" : ">";
+                Animation fa = w.fast.create_2d_animation(fast_points[next], unit_line, duration, child);
+                Animation sa = w.slow.create_2d_animation(slow_points[next], unit_line, duration, child);
+                ++next;
+                w.add(fa, sa, at);
+            }
+        }
+        for (int step = 0; step < 400; ++step) {
+            const double dt = unit(rng) < 0.05 ? unit(rng) : 0.02 * unit(rng);
+            const auto event = rng() % 200;
+            const std::size_t which = rng() % w.fast_lines.size();
+            const std::size_t child = rng() % w.fast_children.size();
+            if (!w.command(event, which, child) && event < 40) w.churn(event, true);
+            w.tick(dt);
+            for (std::size_t k = 0; k < next; ++k) {
+                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
+                ASSERT_EQ(fast_points[k].y, slow_points[k].y);
+            }
+            for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
+            for (std::size_t k = 0; k < w.fast_children.size(); ++k)
+                ASSERT_EQ(w.fast_children[k].progress(), w.slow_children[k].progress());
+        }
+    }
+}
+
+// Sequences as games write them (no delays, time scale 1, children one after another, some
+// with gaps, some sharing a target, some with float members): the lean entries and the
+// hand-over between children. The children's handles are read every third step (a child's
+// phase is written out when looked at); now and then a child gets a handler or is killed, a
+// timeline is sought, reversed or paused, and the engine moves its records.
+TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
+    for (std::uint64_t seed = 900; seed < 940; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> unit(0, 1);
+        Twins w;
+        std::vector<Point> fast_points(96), slow_points(96);
+        std::vector<FloatPoint> fast_floats(96), slow_floats(96);
+        std::size_t next = 0;
+        for (int t = 0; t < 6; ++t) {
+            const TimelineDef def{.repeat = rng() % 2 == 0 ? -1 : static_cast<int>(rng() % 3)};
+            w.create(def);
+            const int count = 2 + static_cast<int>(rng() % 6);
+            const bool shared = rng() % 3 == 0;  // every child moves the same object
+            const std::size_t first = next;
+            for (int k = 0; k < count; ++k) {
+                const double duration = 0.05 + 0.5 * unit(rng);
+                const auto roll = rng() % 6;
+                const AnimationDef child{.curve = roll == 0 ? grape::Curve::cubic_bezier(0.3, 0.1, 0.2, 1.0)
+                                                            : grape::Curve::quad_in_out(),
+                                         .reversed = roll == 1};
+                const std::string at = rng() % 4 == 0 ? "+=0.1" : ">";
+                const std::size_t target = shared ? first : next;
+                Animation fa, sa;
+                if (rng() % 5 == 0) {
+                    fa = w.fast.create_2d_animation(fast_floats[target], unit_line, duration, child);
+                    sa = w.slow.create_2d_animation(slow_floats[target], unit_line, duration, child);
+                } else {
+                    fa = w.fast.create_2d_animation(fast_points[target], unit_line, duration, child);
+                    sa = w.slow.create_2d_animation(slow_points[target], unit_line, duration, child);
+                }
+                ++next;
+                w.add(fa, sa, at);
+            }
+        }
+        int completions_fast = 0, completions_slow = 0;
+        for (int step = 0; step < 600; ++step) {
+            const double dt = unit(rng) < 0.03 ? 0.3 * unit(rng) : 1.0 / 60.0;
+            const auto event = rng() % 300;
+            const std::size_t which = rng() % w.fast_lines.size();
+            const std::size_t child = rng() % w.fast_children.size();
+            if (event == 5) {
+                const double at = 3.0 * unit(rng);
+                w.on_line(which, [at](const Timeline& t) { t.seek(at); });
+            } else if (event == 6) {
+                w.fast_children[child].on_complete([&] { ++completions_fast; });
+                w.slow_children[child].on_complete([&] { ++completions_slow; });
+            } else if (!w.command(event, which, child) && event < 20) {
+                w.churn(event, false);
+            }
+            w.tick(dt);
+            for (std::size_t k = 0; k < next; ++k) {
+                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
+                ASSERT_EQ(fast_points[k].y, slow_points[k].y);
+                ASSERT_EQ(fast_floats[k].x, slow_floats[k].x) << "seed " << seed << " step " << step << " child " << k;
+                ASSERT_EQ(fast_floats[k].y, slow_floats[k].y);
+            }
+            for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
+            if (step % 3 == 0)
+                for (std::size_t k = 0; k < w.fast_children.size(); ++k) {
+                    ASSERT_EQ(w.fast_children[k].progress(), w.slow_children[k].progress()) << "seed " << seed << " step " << step;
+                    ASSERT_EQ(w.fast_children[k].time(), w.slow_children[k].time());
+                    ASSERT_EQ(w.fast_children[k].repetition(), w.slow_children[k].repetition());
+                }
+            ASSERT_EQ(completions_fast, completions_slow);
+        }
+    }
+}
+
+// Playing timelines allocates nothing per tick (the window's storage is reserved when
+// children are placed): sequences, overlaps, nesting, loops, yoyo, reverses, callbacks and
+// child handlers.
+TEST(TimelineScale, NoAllocationPerTick) {
+    Engine engine;
+    std::vector<Point> points(2000);
+    std::vector<Timeline> timelines;
+    int events = 0;
+    for (int t = 0; t < 100; ++t) {
+        Timeline tl = engine.create_timeline({.repeat = -1, .repeat_delay = 0.05 * (t % 3), .yoyo = t % 2 == 0});
+        for (int k = 0; k < 10; ++k) {
+            Animation a = engine.create_2d_animation(points[static_cast<std::size_t>(t * 10 + k)], unit_line, 0.1 + 0.01 * k,
+                                                     {.repeat = k % 3});
+            a.on_complete([&] { ++events; });
+            tl.add(a, k % 4 == 0 ? "<+0.05" : ">");
+        }
+        Timeline inner = engine.create_timeline({.repeat = 1, .yoyo = true});
+        inner.add(engine.create_2d_animation(points[static_cast<std::size_t>(1000 + t)], unit_line, 0.2));
+        inner.call([&] { ++events; }, 0.1);
+        tl.add(inner, "<");
+        tl.call([&] { ++events; }, 0.5);
+        timelines.push_back(tl);
+    }
+    engine.tick(0.01);
+    allocations = 0;
+    counting = true;
+    for (int k = 0; k < 1000; ++k) {
+        if (k % 100 == 50) timelines[static_cast<std::size_t>(k / 100)].reverse();
+        engine.tick(k % 97 == 0 ? 3.0 : 1.0 / 60.0);
+    }
+    counting = false;
+    EXPECT_EQ(allocations.load(), 0);
+    EXPECT_GT(events, 1000);
+}
+
+// Creating and killing a timeline of ten animations again and again allocates nothing beyond
+// what the animations themselves allocate (the timeline's slot and its window's vectors are
+// reused; which timeline drives an animation is kept by slot, not in nodes).
+TEST(TimelineScale, CreatingAndKillingReusesTheStorage) {
+    Engine engine;
+    std::vector<Point> points(10);
+    auto once = [&] {
+        Timeline tl = engine.create_timeline();
+        for (Point& p : points) tl.add(engine.create_2d_animation(p, unit_line, 0.5));
+        engine.tick(0.1);
+        tl.kill();
+    };
+    for (int k = 0; k < 3; ++k) once();
+    allocations = 0;
+    counting = true;
+    for (int k = 0; k < 100; ++k) once();
+    counting = false;
+    const long with_timelines = allocations.load();
+    // The same animations created, ticked and killed on their own: what the engine allocates.
+    auto alone = [&] {
+        std::vector<Animation> made;
+        made.reserve(points.size());
+        for (Point& p : points) made.push_back(engine.create_2d_animation(p, unit_line, 0.5));
+        engine.tick(0.1);
+        for (const Animation& a : made) a.kill();
+    };
+    alone();
+    allocations = 0;
+    counting = true;
+    for (int k = 0; k < 100; ++k) alone();
+    counting = false;
+    EXPECT_LE(with_timelines, allocations.load() - 100);  // less the vector `made`, once per round
+    EXPECT_EQ(engine.size(), 0u);
+}
