@@ -13,6 +13,7 @@ struct ParticleState {
     ParticleSystemDef def{};
     double time = 0.0;
     std::vector<Vec2> positions, velocities, exerted;
+    std::vector<Vec2> saved_positions, saved_velocities;  // before a projection (storage kept: no allocation per step)
     std::vector<double> inverse_masses;
     std::vector<Generator> generators;
     std::vector<Gravity> gravities;

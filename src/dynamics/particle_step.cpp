@@ -110,11 +110,12 @@ StepStats ParticleSystem::single_step(double dt) {
     state_->time += dt;
     if (stats.status == SolveStatus::substep_limit) s.note(SolveStatus::substep_limit);
     if (state_->def.drift.method == DriftControl::projection) {
-        const std::vector<Vec2> x0 = state_->positions, v0 = state_->velocities;
+        state_->saved_positions.assign(state_->positions.begin(), state_->positions.end());
+        state_->saved_velocities.assign(state_->velocities.begin(), state_->velocities.end());
         report.projection_iterations = s.project(state_->positions, state_->velocities);
         if (!all_finite(state_->positions) || !all_finite(state_->velocities)) {
-            state_->positions = x0;
-            state_->velocities = v0;
+            state_->positions.swap(state_->saved_positions);
+            state_->velocities.swap(state_->saved_velocities);
             s.note(SolveStatus::non_finite);
         }
     }
