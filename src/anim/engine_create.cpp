@@ -12,18 +12,32 @@
 
 namespace grape::detail {
 
+void validate_plays(const std::string& w, double delay, int repeat, double repeat_delay, double time_scale) {
+    if (!(std::isfinite(delay) && delay >= 0.0)) throw Error(w + ": delay must be >= 0 and finite (got " + number_text(delay) + ")");
+    if (repeat < -1) throw Error(w + ": repeat must be >= 0, or -1 for forever (got " + std::to_string(repeat) + ")");
+    if (!(std::isfinite(repeat_delay) && repeat_delay >= 0.0))
+        throw Error(w + ": repeat_delay must be >= 0 and finite (got " + number_text(repeat_delay) + ")");
+    if (!(std::isfinite(time_scale) && time_scale >= 0.0))
+        throw Error(w + ": time_scale must be >= 0 and finite (got " + number_text(time_scale) + ")");
+}
+
+Hot custom_hot(void* target, double duration, const AnimationDef& def) noexcept {
+    Hot h{};
+    h.rate = def.time_scale / duration;
+    h.target = static_cast<char*>(target);
+    h.kind = def.curve.kind();
+    h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
+                                        (def.reversed ? flag_reversed : 0));
+    return h;
+}
+
 void validate(std::string_view where, double duration, const AnimationDef& def) {
     const std::string w(where);
     if (!(std::isfinite(duration) && duration > 0.0))
         throw Error(w + ": duration must be positive and finite (got " + number_text(duration) + ")");
     if (!std::isfinite(1.0 / duration))
         throw Error(w + ": duration is too small: 1 / duration overflows (got " + number_text(duration) + ")");
-    if (!(std::isfinite(def.delay) && def.delay >= 0.0))
-        throw Error(w + ": delay must be >= 0 and finite (got " + number_text(def.delay) + ")");
-    if (def.repeat < -1)
-        throw Error(w + ": repeat must be >= 0, or -1 for forever (got " + std::to_string(def.repeat) + ")");
-    if (!(std::isfinite(def.time_scale) && def.time_scale >= 0.0))
-        throw Error(w + ": time_scale must be >= 0 and finite (got " + number_text(def.time_scale) + ")");
+    validate_plays(w, def.delay, def.repeat, def.repeat_delay, def.time_scale);
     // The record keeps plays per second and the delay in plays; both, and the end of the last
     // play in seconds, must be numbers.
     if (!std::isfinite(def.time_scale / duration))
@@ -35,8 +49,6 @@ void validate(std::string_view where, double duration, const AnimationDef& def) 
     if (def.repeat >= 0 && !std::isfinite(def.delay + duration * (static_cast<double>(def.repeat) + 1.0)))
         throw Error(w + ": delay + duration · (repeat + 1) overflows (delay " + number_text(def.delay) +
                     ", duration " + number_text(duration) + ", repeat " + std::to_string(def.repeat) + ")");
-    if (!(std::isfinite(def.repeat_delay) && def.repeat_delay >= 0.0))
-        throw Error(w + ": repeat_delay must be >= 0 and finite (got " + number_text(def.repeat_delay) + ")");
     if (!std::isfinite(def.repeat_delay / duration))
         throw Error(w + ": repeat_delay / duration overflows (repeat_delay " + number_text(def.repeat_delay) +
                     ", duration " + number_text(duration) + ")");
@@ -158,12 +170,7 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     if (target && members.size() != path.dimension())
         throw Error(std::string(where) + ": members and values must match (" + std::to_string(members.size()) +
                     " members, " + std::to_string(path.dimension()) + " values)");
-    Hot h{};
-    h.rate = def.time_scale / duration;
-    h.target = static_cast<char*>(target);
-    h.kind = def.curve.kind();
-    h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
-                                        (def.reversed ? flag_reversed : 0));
+    Hot h = custom_hot(target, duration, def);
     Extra extra;
     extra.range_start = def.range_start;
     extra.range_end = def.range_end;

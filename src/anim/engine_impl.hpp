@@ -350,6 +350,11 @@ inline std::uint32_t wrap_plays(double whole) noexcept {
 
 /// Throws grape::Error naming `where` for a bad duration or def.
 void validate(std::string_view where, double duration, const AnimationDef& def);
+/// Throws grape::Error naming `where` for a bad delay, repeat, repeat delay or time scale: the
+/// play settings animations and timelines share.
+void validate_plays(const std::string& where, double delay, int repeat, double repeat_delay, double time_scale);
+/// A custom (general-path) hot record of `def` for `target`: rate, curve kind and flags.
+Hot custom_hot(void* target, double duration, const AnimationDef& def) noexcept;
 
 // Counts nested handler calls; removals wait until the outermost one has returned, so a
 // handler can kill anything (itself included) without pulling storage from under a caller.

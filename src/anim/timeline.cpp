@@ -48,21 +48,13 @@ void recycle(TimelineRec& r) noexcept {
 }  // namespace
 
 Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
-    const std::string w = "create_timeline";
-    if (!(std::isfinite(def.delay) && def.delay >= 0.0))
-        throw Error(w + ": delay must be >= 0 and finite (got " + number_text(def.delay) + ")");
-    if (def.repeat < -1)
-        throw Error(w + ": repeat must be >= 0, or -1 for forever (got " + std::to_string(def.repeat) + ")");
-    if (!(std::isfinite(def.repeat_delay) && def.repeat_delay >= 0.0))
-        throw Error(w + ": repeat_delay must be >= 0 and finite (got " + number_text(def.repeat_delay) + ")");
-    if (!(std::isfinite(def.time_scale) && def.time_scale >= 0.0))
-        throw Error(w + ": time_scale must be >= 0 and finite (got " + number_text(def.time_scale) + ")");
+    validate_plays("create_timeline", def.delay, def.repeat, def.repeat_delay, def.time_scale);
     std::uint32_t slot;
     if (!free_.empty()) {
         slot = free_.back();
         free_.pop_back();
     } else {
-        if (recs_.size() >= UINT32_MAX - 1) throw Error(w + ": too many timelines");
+        if (recs_.size() >= UINT32_MAX - 1) throw Error("create_timeline: too many timelines");
         slot = static_cast<std::uint32_t>(recs_.size());
         recs_.push_back(std::make_unique<TimelineRec>());
         free_.reserve(recs_.size());  // so killing never allocates

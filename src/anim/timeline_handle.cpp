@@ -195,21 +195,23 @@ detail::Handler wrap(std::function<void()> f) {
 }
 }  // namespace
 
+void detail::TimelineStore::set_handler(const Timeline& t, Handler TimelineRec::*member, std::function<void()> handler) {
+    if (!t.engine_) return;
+    TimelineRec* r = t.engine_->impl_->timelines().current(t.slot_, t.generation_, true);
+    if (r) (*r).*member = wrap(std::move(handler));
+}
+
 void Timeline::on_start(std::function<void()> handler) const {
-    GRAPE_TIMELINE();
-    r.on_start = wrap(std::move(handler));
+    detail::TimelineStore::set_handler(*this, &detail::TimelineRec::on_start, std::move(handler));
 }
 void Timeline::on_update(std::function<void()> handler) const {
-    GRAPE_TIMELINE();
-    r.on_update = wrap(std::move(handler));
+    detail::TimelineStore::set_handler(*this, &detail::TimelineRec::on_update, std::move(handler));
 }
 void Timeline::on_complete(std::function<void()> handler) const {
-    GRAPE_TIMELINE();
-    r.on_complete = wrap(std::move(handler));
+    detail::TimelineStore::set_handler(*this, &detail::TimelineRec::on_complete, std::move(handler));
 }
 void Timeline::on_reverse_complete(std::function<void()> handler) const {
-    GRAPE_TIMELINE();
-    r.on_reverse_complete = wrap(std::move(handler));
+    detail::TimelineStore::set_handler(*this, &detail::TimelineRec::on_reverse_complete, std::move(handler));
 }
 void Timeline::on_loop(std::function<void(int)> handler) const {
     GRAPE_TIMELINE();

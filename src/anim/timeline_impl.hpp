@@ -151,6 +151,8 @@ public:
     explicit TimelineStore(EngineImpl& engine) : engine_(engine) { stack_.reserve(64); }
 
     Timeline create(Engine* owner, const TimelineDef& def);
+    /// Sets one of `t`'s void() handlers (empty: none); nothing for a dead handle.
+    static void set_handler(const Timeline& t, Handler TimelineRec::*member, std::function<void()> handler);
     TimelineRec* find(std::uint32_t slot, std::uint32_t generation) noexcept;
 
     void add_animation(std::uint32_t slot, const Animation& a, const TimelinePosition& at);

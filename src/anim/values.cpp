@@ -15,12 +15,7 @@ Animation EngineImpl::create_value(void* object, std::unique_ptr<TargetRef> ref,
     if (def.range_start != 0.0 || def.range_end != 1.0 || def.offset != 0.0)
         throw Error("animate: range_start, range_end and offset apply to path animations, not to typed values");
     if (!object) throw Error("animate: the target is null");
-    Hot h{};
-    h.rate = def.time_scale / duration;
-    h.target = static_cast<char*>(object);
-    h.kind = def.curve.kind();
-    h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
-                                        (def.reversed ? flag_reversed : 0));
+    Hot h = custom_hot(object, duration, def);
     Extra extra;
     extra.value = std::move(track);
     extra.ref = std::move(ref);
