@@ -15,28 +15,7 @@
 #include <string>
 #include <vector>
 
-// --- allocation counting (as in test_anim.cpp) ---------------------------------------------------
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {  // std::stable_sort's buffer
-    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
-    return std::malloc(size == 0 ? 1 : size);
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#include "count_allocations.hpp"
 
 using grape::Animation;
 using grape::AnimationDef;
@@ -269,14 +248,12 @@ TEST(TimelineScale, NoAllocationPerTick) {
         timelines.push_back(tl);
     }
     engine.tick(0.01);
-    allocations = 0;
-    counting = true;
+    const long before = g_allocations.load();
     for (int k = 0; k < 1000; ++k) {
         if (k % 100 == 50) timelines[static_cast<std::size_t>(k / 100)].reverse();
         engine.tick(k % 97 == 0 ? 3.0 : 1.0 / 60.0);
     }
-    counting = false;
-    EXPECT_EQ(allocations.load(), 0);
+    EXPECT_EQ(g_allocations.load() - before, 0);
     EXPECT_GT(events, 1000);
 }
 
@@ -293,11 +270,9 @@ TEST(TimelineScale, CreatingAndKillingReusesTheStorage) {
         tl.kill();
     };
     for (int k = 0; k < 3; ++k) once();
-    allocations = 0;
-    counting = true;
+    const long start = g_allocations.load();
     for (int k = 0; k < 100; ++k) once();
-    counting = false;
-    const long with_timelines = allocations.load();
+    const long with_timelines = g_allocations.load() - start;
     // The same animations created, ticked and killed on their own: what the engine allocates.
     auto alone = [&] {
         std::vector<Animation> made;
@@ -307,10 +282,8 @@ TEST(TimelineScale, CreatingAndKillingReusesTheStorage) {
         for (const Animation& a : made) a.kill();
     };
     alone();
-    allocations = 0;
-    counting = true;
+    const long restart = g_allocations.load();
     for (int k = 0; k < 100; ++k) alone();
-    counting = false;
-    EXPECT_LE(with_timelines, allocations.load() - 100);  // less the vector `made`, once per round
+    EXPECT_LE(with_timelines, g_allocations.load() - restart - 100);  // less the vector `made`, once per round
     EXPECT_EQ(engine.size(), 0u);
 }
