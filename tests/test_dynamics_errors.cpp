@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -85,6 +86,22 @@ TEST(Errors, BadInputsAreRejectedWithClearMessages) {
     expect_error([] { run_parabola({.x0 = INFINITY}, 0.1, 1); }, "parabola: x0 must be finite");
     expect_error([] { run_parabola({.mass = -1}, 0.1, 1); }, "parabola: mass must be positive");
     expect_error([] { run_parabola({}, 0, 1); }, "parabola: dt must be positive");
+}
+
+// set_substeps validates as the constructor does, and the rule it sets is the one step() follows:
+// a 100-link chain released horizontal needs several sub-steps per 1/60 s frame (ω·h ≤ 1 with
+// ω of order √(n·g/L) ≈ 31 rad/s gives at least 1), one without the automatic rule.
+TEST(Errors, SetSubstepsValidatesAndTakesEffect) {
+    ParticleSystem system = chain(100, 1.0, 9.81, ParticleSystemDef{});  // one integrator step per step()
+    expect_error([&] { system.set_substeps({.automatic = true, .omega_h = 0.0}); }, "SubstepDef: omega_h must be positive");
+    expect_error([&] { system.set_substeps({.automatic = true, .max = 0}); }, "SubstepDef: max must be at least 1");
+    EXPECT_FALSE(system.def().substeps.automatic);  // a refused rule changes nothing
+    for (int k = 0; k < 30; ++k) EXPECT_EQ(system.step(1.0 / 60.0).substeps, 1);
+    system.set_substeps({.automatic = true, .omega_h = 0.05});
+    EXPECT_TRUE(system.def().substeps.automatic);
+    int most = 0;
+    for (int k = 0; k < 30; ++k) most = std::max(most, system.step(1.0 / 60.0).substeps);
+    EXPECT_GT(most, 1);
 }
 
 TEST(Names, RoundTrip) {
