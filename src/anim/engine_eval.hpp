@@ -24,9 +24,14 @@ inline double EngineImpl::ease(CurveKind kind, std::uint16_t curve, double x) co
 // for lines), the arc-length table's points for reparametrized ones.
 inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
     if (u >= 0.0 && u <= 1.0) {
+        const KernelKind kind = path_kind_[path];
+        if (kind == KernelKind::linear) {  // from the dense table of lines
+            const LineFast& l = line_fast_[path];
+            return l.c[0] + l.c[1] * u;
+        }
         const PathFast& f = path_fast_[path];
-        switch (f.fast) {
-            case KernelKind::linear: return f.c[0] + f.c[1] * u;
+        switch (kind) {
+            case KernelKind::linear: break;
             case KernelKind::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
             case KernelKind::reparam_cubic:
             case KernelKind::reparam_linear:  // the ends exact, as Path::point has them
@@ -37,7 +42,8 @@ inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
     return paths_[path].path.point(u);  // other kinds, and outside [0, 1] along the end tangents
 }
 
-inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept {
+// The point into a 2-D record's target (x, and y at x + y_offset), as float or double.
+inline void write_target(const Hot& h, Vec2 p) noexcept {
     char* x = h.target;
     if (h.flags & flag_float) {
         *reinterpret_cast<float*>(x) = static_cast<float>(p.x);
@@ -47,6 +53,8 @@ inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept {
         *reinterpret_cast<double*>(x + h.y_offset) = p.y;
     }
 }
+
+inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept { write_target(h, p); }
 
 // The common case of a tick: playing, not paused, dead or custom, a target to write, no play
 // end that anybody listens for. Reads and writes record i alone (and its target), so records
@@ -79,8 +87,7 @@ inline bool EngineImpl::plain_advance(Hot* hot, Cold* cold, std::size_t i, doubl
 inline void EngineImpl::plain_write(const Hot& h, const PathFast* fast, double u) const noexcept {
     const PathFast& f = fast[h.path];
     Vec2 p;
-    if (f.fast == KernelKind::linear && u >= 0.0 && u <= 1.0) p = f.c[0] + f.c[1] * u;
-    else if (f.fast == KernelKind::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+    if (f.fast == KernelKind::cubic && u >= 0.0 && u <= 1.0) p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
     else p = point(h.path, u);
     write_2d(h, p);
 }

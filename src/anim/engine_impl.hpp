@@ -132,13 +132,19 @@ struct PathEntry {
 
 /// What the hot loop reads of a shared path, the linear and cubic coefficients copied in so
 /// that most updates never leave the engine's storage. Line-aligned with the kind first: a
-/// line reads one cache line (kind, c[0], c[1]), a cubic two, a reparametrized path one and
-/// the two of its table's piece.
+/// cubic reads two cache lines, a reparametrized path one and the three of its table's
+/// piece. Lines read LineFast instead (and the kind from the dense path_kind_), 32 bytes,
+/// so that a thousand shared lines take half the cache they would here.
 struct alignas(64) PathFast {
     KernelKind fast = KernelKind::generic;
     const double* table = nullptr;   // reparametrized: the kernel's ArcLengthTable values
     double steps = 0.0;
     Vec2 c[4];                       // PathKernel::c (reparametrized: the end points)
+};
+
+/// A line's coefficients alone (c[0], c[1]), two to a cache line.
+struct LineFast {
+    Vec2 c[2];
 };
 
 struct CurveEntry {
@@ -234,6 +240,8 @@ private:
 
     std::vector<PathEntry> paths_;
     std::vector<PathFast> path_fast_;  // same index as paths_
+    std::vector<KernelKind> path_kind_;  // path_fast_[i].fast, dense (the lean lane's test)
+    std::vector<LineFast> line_fast_;    // path_fast_[i].c[0], c[1] (lines: the lean lane's read)
     std::size_t arc_paths_ = 0;        // entries with an arc-length table (plain_run batches then)
     std::vector<std::uint32_t> free_paths_;
     std::unordered_map<const void*, std::uint32_t> path_index_;

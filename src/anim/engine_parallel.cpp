@@ -8,6 +8,7 @@
 #include <string>
 
 #include "engine_eval.hpp"
+#include "engine_lean.hpp"
 #include "tick_pool.hpp"
 
 namespace grape::detail {
@@ -78,8 +79,13 @@ GRAPE_FLATTEN std::size_t EngineImpl::advance_plain(std::size_t begin, std::size
     Hot* const hot = hot_.data();
     Cold* const cold = cold_.data();
     const PathFast* const fast = path_fast_.data();
+    const LeanTables tables{path_kind_.data(), line_fast_.data(), fast};
     std::size_t k = 0;
     for (std::size_t i = begin; i < end; ++i) {
+        if (const LeanRun run = lean_for(hot[i], tables)) {  // formula curves only: no user code
+            i = run(hot, tables, i, end, dt);
+            if (i == end) break;
+        }
         if (!plain_step<true>(hot, cold, fast, i, dt)) slow[k++] = static_cast<std::uint32_t>(i);
     }
     return k;

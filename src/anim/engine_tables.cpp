@@ -34,10 +34,14 @@ std::uint32_t EngineImpl::acquire_path(const Path& path) {
         free_paths_.pop_back();
         paths_[index] = std::move(entry);
         path_fast_[index] = fast;
+        path_kind_[index] = fast.fast;
+        line_fast_[index] = {{fast.c[0], fast.c[1]}};
     } else {
         index = static_cast<std::uint32_t>(paths_.size());
         paths_.push_back(std::move(entry));
         path_fast_.push_back(fast);
+        path_kind_.push_back(fast.fast);
+        line_fast_.push_back({{fast.c[0], fast.c[1]}});
         free_paths_.reserve(paths_.size());  // so releasing during a tick never allocates
     }
     path_index_.emplace(shape, index);
@@ -52,6 +56,7 @@ void EngineImpl::release_path(std::uint32_t index) noexcept {
     if (path_fast_[index].table) --arc_paths_;
     e = PathEntry();                // drops the shape if nobody else holds it
     path_fast_[index] = PathFast();
+    path_kind_[index] = KernelKind::generic;
     free_paths_.push_back(index);   // capacity reserved at creation
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "engine_eval.hpp"
+#include "engine_lean.hpp"
 #include "timeline_impl.hpp"
 
 namespace grape::detail {
@@ -152,8 +153,16 @@ GRAPE_FLATTEN std::size_t EngineImpl::plain_run(std::size_t i, std::size_t n, do
     Hot* const hot = hot_.data();
     Cold* const cold = cold_.data();
     const PathFast* const fast = path_fast_.data();
-    if (arc_paths_ == 0) {  // lines and cubics only: nothing to ask for ahead, one record at a time
-        while (i < n && plain_step<false>(hot, cold, fast, i, dt)) ++i;
+    if (arc_paths_ == 0) {  // lines and cubics only: nothing to ask for ahead, lean runs
+        const LeanTables tables{path_kind_.data(), line_fast_.data(), fast};
+        while (i < n) {
+            if (const LeanRun run = lean_for(hot[i], tables)) {
+                i = run(hot, tables, i, n, dt);
+                if (i == n) break;
+            }
+            if (!plain_step<false>(hot, cold, fast, i, dt)) break;
+            ++i;
+        }
         return i;
     }
     constexpr std::size_t batch = 32;

@@ -1,0 +1,187 @@
+// The tick's lean lane (runs of records sharing a formula curve on lines or cubics, each run
+// in a loop compiled for its kind) against the per-record update it stands in for, bit for
+// bit. An engine holding an arc-length path advances every record in batches through that
+// per-record update, so the same animations in an engine with one arc-length animation
+// more are the reference.
+#include <grape/anim.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+namespace {
+
+using grape::Animation;
+using grape::AnimationDef;
+using grape::Curve;
+using grape::Engine;
+using grape::Path;
+
+struct Target {
+    double x = 0, y = 0;
+};
+struct FloatTarget {
+    float x = 0, y = 0;
+};
+
+struct World {
+    Engine engine;
+    std::vector<Target> doubles;
+    std::vector<FloatTarget> floats;
+    std::vector<Animation> anims;
+    Target arc_target;  // the reference engine's extra animation
+};
+
+std::vector<Curve> lean_curves() {
+    std::vector<Curve> curves;
+    for (std::string_view name : grape::curve_names()) {
+        const Curve c = grape::parse_curve(name);
+        if (!grape::has_parameters(c.kind())) curves.push_back(c);
+    }
+    return curves;
+}
+
+// n animations: every formula curve and two with parameters; lines, cubics and a path of
+// another kind; double and float targets; delays, repeats, yoyo, reversed, time scales
+// (zero included), paused, reversed at run time. `runs`: in runs of one kind, as a game's
+// batches are (long lean runs); else shuffled (runs of one or two records).
+void build(World& w, std::size_t n, unsigned seed, bool runs, bool with_arc) {
+    static const std::vector<Curve> formulas = lean_curves();
+    const Path paths[] = {grape::LinearPath({3, -4}, {280, 380}), grape::LinearPath({-10, 7}, {-10.5, 900}),
+                          grape::CubicBezierPath({0, 0}, {10, 40}, {60, -20}, {100, 0}),
+                          grape::CubicBezierPath({5, 5}, {-30, 8}, {12, 99}, {70, 70}),
+                          grape::QuadraticBezierPath({0, 0}, {50, 90}, {100, 0}),
+                          grape::CirclePath({50, 50}, 30, 0.0, 5.0)};
+    std::mt19937 r(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    w.doubles.resize(n);
+    w.floats.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        AnimationDef def;
+        const std::size_t group = runs ? i / 97 : static_cast<std::size_t>(unit(r) * 1000.0);
+        if (unit(r) < 0.05) def.curve = unit(r) < 0.5 ? Curve::back(grape::EaseDirection::out) : Curve::steps(4);
+        else def.curve = formulas[group % formulas.size()];
+        if (unit(r) < 0.15) def.delay = unit(r) * 0.8;
+        def.repeat = unit(r) < 0.5 ? -1 : static_cast<int>(unit(r) * 4);
+        def.yoyo = unit(r) < 0.5;
+        def.reversed = unit(r) < 0.2;
+        def.time_scale = unit(r) < 0.05 ? 0.0 : 0.5 + 1.5 * unit(r);
+        def.paused = unit(r) < 0.03;
+        const Path& path = paths[(runs ? group / 3 : static_cast<std::size_t>(unit(r) * 97.0)) % std::size(paths)];
+        const double duration = 0.2 + 1.8 * unit(r);
+        const bool is_float = runs ? group % 5 == 0 : unit(r) < 0.2;
+        Animation a = is_float ? w.engine.create_2d_animation(w.floats[i], path, duration, def)
+                               : w.engine.create_2d_animation(w.doubles[i], path, duration, def);
+        if (unit(r) < 0.05) a.reverse();
+        w.anims.push_back(a);
+    }
+    if (with_arc) {
+        w.engine.create_2d_animation(w.arc_target, grape::CubicBezierPath({0, 0}, {0, 100}, {100, 100}, {100, 0}, true),
+                                     1.0, {.repeat = -1});
+    }
+}
+
+void expect_same(const World& a, const World& b, int tick) {
+    for (std::size_t k = 0; k < a.doubles.size(); ++k) {
+        ASSERT_EQ(0, std::memcmp(&a.doubles[k], &b.doubles[k], sizeof(Target)))
+            << "tick " << tick << " animation " << k << ": " << a.doubles[k].x << " " << b.doubles[k].x;
+        ASSERT_EQ(0, std::memcmp(&a.floats[k], &b.floats[k], sizeof(FloatTarget))) << "tick " << tick << " animation " << k;
+    }
+    for (std::size_t k = 0; k < a.anims.size(); ++k) {
+        ASSERT_EQ(a.anims[k].alive(), b.anims[k].alive()) << "tick " << tick << " animation " << k;
+        const double ta = a.anims[k].time(), tb = b.anims[k].time();
+        ASSERT_EQ(0, std::memcmp(&ta, &tb, sizeof ta)) << "tick " << tick << " animation " << k;
+    }
+}
+
+// One change applied to animation k of both worlds.
+void poke(World& w, std::size_t k, int what, double value) {
+    const Animation& a = w.anims[k];
+    switch (what) {
+        case 0: a.reverse(); break;
+        case 1: a.play(); break;
+        case 2: a.pause(); break;
+        case 3: a.resume(); break;
+        case 4: a.seek(value); break;
+        case 5: a.set_time_scale(value); break;
+        default: a.kill(); break;
+    }
+}
+
+void run_pair(unsigned seed, bool runs) {
+    constexpr std::size_t n = 4000;
+    auto lean = std::make_unique<World>();
+    auto reference = std::make_unique<World>();
+    build(*lean, n, seed, runs, false);
+    build(*reference, n, seed, runs, true);
+    std::mt19937 r(seed + 1000u);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int tick = 0; tick < 240; ++tick) {
+        const double u = unit(r);
+        const double dt = u < 0.7 ? 1.0 / 60.0 : u < 0.9 ? unit(r) * 0.3 : u < 0.95 ? 0.0 : 2.0 + unit(r) * 5.0;
+        lean->engine.tick(dt);
+        reference->engine.tick(dt);
+        ASSERT_NO_FATAL_FAILURE(expect_same(*lean, *reference, tick));
+        for (int p = 0; p < 20; ++p) {  // run-time changes between ticks, the same in both
+            const auto k = static_cast<std::size_t>(unit(r) * static_cast<double>(n)) % n;
+            const int what = static_cast<int>(unit(r) * 6.05);
+            const double value = what == 4 ? -0.3 + 3.0 * unit(r) : 3.0 * unit(r);
+            poke(*lean, k, what, value);
+            poke(*reference, k, what, value);
+        }
+    }
+}
+
+TEST(EngineLean, RunsOfOneKindGiveTheBitsOfThePerRecordUpdate) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+        SCOPED_TRACE(seed);
+        ASSERT_NO_FATAL_FAILURE(run_pair(seed, true));
+    }
+}
+
+TEST(EngineLean, ShuffledKindsGiveTheBitsOfThePerRecordUpdate) {
+    for (unsigned seed = 11; seed <= 13; ++seed) {
+        SCOPED_TRACE(seed);
+        ASSERT_NO_FATAL_FAILURE(run_pair(seed, false));
+    }
+}
+
+// Every formula kind on a line and on a cubic, double and float targets, mid-play: the value
+// curve.hpp's formula and Path::point give (lines: a + (b − a)·u where Path::point has lerp,
+// within an ulp of the coordinates' size; cubics: Path::point's own formula, exactly).
+TEST(EngineLean, EveryFormulaKindWritesItsOwnFormulaOnLinesAndCubics) {
+    const Path line = grape::LinearPath({3, -4}, {280, 380});
+    const Path cubic = grape::CubicBezierPath({0, 0}, {10, 40}, {60, -20}, {100, 0});
+    for (const Curve& curve : lean_curves()) {
+        Engine engine;
+        std::vector<Target> d(64);
+        std::vector<FloatTarget> f(64);
+        for (std::size_t i = 0; i < 64; ++i) {
+            const Path& path = i % 2 ? line : cubic;
+            if (i < 32) engine.create_2d_animation(d[i], path, 1.0, {.curve = curve});
+            else engine.create_2d_animation(f[i], path, 1.0, {.curve = curve});
+        }
+        for (int k = 1; k <= 50; ++k) {
+            engine.tick(0.015);
+            double t = 0.0;
+            for (int j = 0; j < k; ++j) t += 0.015;  // the engine's sum, in the same order
+            const double u = curve(t);
+            for (std::size_t i = 0; i < 64; ++i) {
+                const grape::Vec2 truth = (i % 2 ? line : cubic).point(u);
+                // 1e-13: an ulp of coordinates below 400 is 5.7e-14
+                const double tol = i % 2 ? 1e-13 : 0.0;
+                if (i < 32) {
+                    ASSERT_NEAR(d[i].x, truth.x, tol) << to_string(curve) << " t " << t;
+                    ASSERT_NEAR(d[i].y, truth.y, tol) << to_string(curve) << " t " << t;
+                } else {
+                    ASSERT_NEAR(f[i].x, static_cast<float>(truth.x), i % 2 ? 4e-5 : 0.0) << to_string(curve);
+                    ASSERT_NEAR(f[i].y, static_cast<float>(truth.y), i % 2 ? 4e-5 : 0.0) << to_string(curve);
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
