@@ -146,6 +146,11 @@ struct alignas(64) PathFast {
 struct LineFast {
     Vec2 c[2];
 };
+/// An arc-length path's table alone, four to a cache line.
+struct ArcFast {
+    const double* table = nullptr;
+    double steps = 0.0;
+};
 
 struct CurveEntry {
     Curve curve;
@@ -242,7 +247,7 @@ private:
     std::vector<PathFast> path_fast_;  // same index as paths_
     std::vector<KernelKind> path_kind_;  // path_fast_[i].fast, dense (the lean lane's test)
     std::vector<LineFast> line_fast_;    // path_fast_[i].c[0], c[1] (lines: the lean lane's read)
-    std::size_t arc_paths_ = 0;        // entries with an arc-length table (plain_run batches then)
+    std::vector<ArcFast> arc_fast_;      // path_fast_[i].table, steps (arc length: the lean lane's read)
     std::vector<std::uint32_t> free_paths_;
     std::unordered_map<const void*, std::uint32_t> path_index_;
     std::vector<CurveEntry> curves_;

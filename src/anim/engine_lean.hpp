@@ -1,5 +1,6 @@
 // The lean lane of the tick: runs of records in the middle of a play, sharing one formula
-// curve kind on lines or cubics, each run in a loop compiled for its (curve, path) pair.
+// curve kind on lines, cubics or arc-length paths, each run in a loop compiled for its
+// (curve, path, target type).
 #pragma once
 
 #include "engine_eval.hpp"
@@ -19,7 +20,24 @@ struct LeanTables {
     const KernelKind* kind;  // per path
     const LineFast* line;
     const PathFast* fast;
+    const ArcFast* arc;
+    const Cold* cold;        // per record
 };
+
+// A play ends for about one record in a hundred per tick, and the general update then reads
+// its Cold record, a cache miss of ~100 ns that would cost more than the record's whole
+// update: asked for `ahead` records before it is needed, when the record's play ends now.
+inline constexpr std::size_t cold_ahead = 16;
+inline void ask_cold_ahead(const Hot* hot, const Cold* cold, std::size_t i, std::size_t n, double dt) noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+    if (i + cold_ahead < n) {
+        const Hot& a = hot[i + cold_ahead];
+        if (a.phase + dt * a.rate >= play_end) __builtin_prefetch(cold + i + cold_ahead, 1);
+    }
+#else
+    (void)hot, (void)cold, (void)i, (void)n, (void)dt;
+#endif
+}
 
 // A record's curve kind and flags as one 16-bit word (kind in the low byte), so that one
 // compare checks the kind and every flag a run depends on.
@@ -46,6 +64,7 @@ GRAPE_FLATTEN std::size_t lean_run(Hot* hot, const LeanTables& t, std::size_t i,
     const LineFast* const lines = t.line;
     const PathFast* const fast = t.fast;
     for (; i < n; ++i) {
+        ask_cold_ahead(hot, t.cold, i, n, dt);
         Hot& h = hot[i];
         const double phase = h.phase + dt * h.rate;
         // started before this tick and still inside the play (either way: the rate is < 0
@@ -71,19 +90,71 @@ GRAPE_FLATTEN std::size_t lean_run(Hot* hot, const LeanTables& t, std::size_t i,
     return i;
 }
 
+inline bool is_arc(KernelKind p) noexcept { return p == KernelKind::reparam_cubic || p == KernelKind::reparam_linear; }
+
+// The same on arc-length paths, strictly inside them (the ends are Path::point's exact end
+// points, which plain_write gives), in batches of 32 as plain_run has them: every record of
+// a batch is advanced and its table piece found and asked for before any is written, so
+// that the misses on shared tables overlap. plain_piece's and evaluate_piece's arithmetic.
+template <CurveKind K, bool F>
+GRAPE_FLATTEN std::size_t lean_arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
+    static_assert(!has_parameters(K));
+    constexpr std::uint16_t want = static_cast<std::uint16_t>(static_cast<unsigned>(K) | (F ? flag_float << 8 : 0));
+    constexpr std::size_t batch = 32;
+    const KernelKind* const kinds = t.kind;
+    const ArcFast* const arcs = t.arc;
+    const double* piece[batch];
+    double at[batch];
+    while (i < n) {
+        const std::size_t m = std::min(batch, n - i);
+        std::size_t k = 0;
+        for (; k < m; ++k) {
+            ask_cold_ahead(hot, t.cold, i + k, n, dt);
+            Hot& h = hot[i + k];
+            const double phase = h.phase + dt * h.rate;
+            if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) ||
+                !h.target || !is_arc(kinds[h.path]))
+                break;
+            const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
+            if (!(u > 0.0 && u < 1.0)) break;
+            h.phase = phase;
+            const ArcFast& f = arcs[h.path];
+            const double s = u * f.steps;
+            const auto j = static_cast<std::int64_t>(s);
+            const double* c = f.table + ArcLengthTable::stride * static_cast<std::size_t>(j);
+#if defined(__GNUC__) || defined(__clang__)
+            for (std::size_t line = 0; line < ArcLengthTable::stride; line += 8) __builtin_prefetch(c + line);
+#endif
+            piece[k] = c;
+            at[k] = 2.0 * (s - static_cast<double>(j)) - 1.0;
+        }
+        using T = std::conditional_t<F, float, double>;
+        for (std::size_t j = 0; j < k; ++j) {
+            const Vec2 p = ArcLengthTable::evaluate_piece(piece[j], at[j]);
+            const Hot& h = hot[i + j];
+            *reinterpret_cast<T*>(h.target) = static_cast<T>(p.x);
+            *reinterpret_cast<T*>(h.target + h.y_offset) = static_cast<T>(p.y);
+        }
+        i += k;
+        if (k < m) break;
+    }
+    return i;
+}
+
 using LeanRun = std::size_t (*)(Hot*, const LeanTables&, std::size_t, std::size_t, double) noexcept;
 
-// lean_run for every formula kind, path kernel and target type: [kind][line, cubic][double,
-// float]; null for the kinds with parameters.
+// The lean runs for every formula kind, path kernel and target type: [kind][line, cubic,
+// arc length][double, float]; null for the kinds with parameters.
 template <std::size_t... k>
 constexpr auto lean_table(std::index_sequence<k...>) noexcept {
     constexpr auto row = [](auto kind) {
         constexpr auto K = static_cast<CurveKind>(decltype(kind)::value);
-        using Row = std::array<std::array<LeanRun, 2>, 2>;
+        using Row = std::array<std::array<LeanRun, 2>, 3>;
         if constexpr (has_parameters(K)) return Row{};
         else
             return Row{{{&lean_run<K, KernelKind::linear, false>, &lean_run<K, KernelKind::linear, true>},
-                        {&lean_run<K, KernelKind::cubic, false>, &lean_run<K, KernelKind::cubic, true>}}};
+                        {&lean_run<K, KernelKind::cubic, false>, &lean_run<K, KernelKind::cubic, true>},
+                        {&lean_arc_run<K, false>, &lean_arc_run<K, true>}}};
     };
     return std::array{row(std::integral_constant<std::size_t, k>{})...};
 }
@@ -98,6 +169,7 @@ inline LeanRun lean_for(const Hot& h, const LeanTables& t) noexcept {
     const std::size_t type = (h.flags & flag_float) ? 1 : 0;
     if (p == KernelKind::linear) return lean_runs[kind][0][type];
     if (p == KernelKind::cubic) return lean_runs[kind][1][type];
+    if (is_arc(p)) return lean_runs[kind][2][type];
     return nullptr;
 }
 

@@ -36,16 +36,17 @@ std::uint32_t EngineImpl::acquire_path(const Path& path) {
         path_fast_[index] = fast;
         path_kind_[index] = fast.fast;
         line_fast_[index] = {{fast.c[0], fast.c[1]}};
+        arc_fast_[index] = {fast.table, fast.steps};
     } else {
         index = static_cast<std::uint32_t>(paths_.size());
         paths_.push_back(std::move(entry));
         path_fast_.push_back(fast);
         path_kind_.push_back(fast.fast);
         line_fast_.push_back({{fast.c[0], fast.c[1]}});
+        arc_fast_.push_back({fast.table, fast.steps});
         free_paths_.reserve(paths_.size());  // so releasing during a tick never allocates
     }
     path_index_.emplace(shape, index);
-    if (fast.table) ++arc_paths_;
     return index;
 }
 
@@ -53,10 +54,10 @@ void EngineImpl::release_path(std::uint32_t index) noexcept {
     PathEntry& e = paths_[index];
     if (--e.refs != 0) return;
     path_index_.erase(e.shape);
-    if (path_fast_[index].table) --arc_paths_;
     e = PathEntry();                // drops the shape if nobody else holds it
     path_fast_[index] = PathFast();
     path_kind_[index] = KernelKind::generic;
+    arc_fast_[index] = ArcFast();
     free_paths_.push_back(index);   // capacity reserved at creation
 }
 

@@ -142,42 +142,47 @@ void EngineImpl::tick(double dt) {
     }
 }
 
-// Records from i on while plain_step takes them; returns the first it does not (or n). Flattened
-// so that the easing switch and the path formulas are inlined into the loop (compilers
-// otherwise call curve.hpp's ease_formula out of line, a fifth of the loop's time). Where the
-// engine holds arc-length paths, in batches of 32: every record of a batch is advanced, and its arc-length piece found and asked for,
-// before any is written, so that the misses on shared tables overlap instead of stalling each
-// record in turn (nothing but the batch's own records sees the order; the results are
-// plain_step's, bit for bit).
+// Records from i on while plain_step takes them; returns the first it does not (or n), with
+// plain_step's results bit for bit. Runs of records that share a formula curve, a path
+// kernel and a target type go to their lean run (engine_lean.hpp), and the record that ends
+// a run (a play ending, a waiting record) to plain_step alone. The records no lean run
+// takes go in batches of 32: every record of a batch is advanced, and its arc-length piece
+// found and asked for, before any is written, so that the misses on shared tables overlap
+// instead of stalling each record in turn (nothing but the batch's own records sees the
+// order). Flattened so that the easing switch and the path formulas are inlined (compilers
+// otherwise call curve.hpp's ease_formula out of line, a fifth of the loop's time).
 GRAPE_FLATTEN std::size_t EngineImpl::plain_run(std::size_t i, std::size_t n, double dt) noexcept {
     Hot* const hot = hot_.data();
     Cold* const cold = cold_.data();
     const PathFast* const fast = path_fast_.data();
-    if (arc_paths_ == 0) {  // lines and cubics only: nothing to ask for ahead, lean runs
-        const LeanTables tables{path_kind_.data(), line_fast_.data(), fast};
-        while (i < n) {
-            if (const LeanRun run = lean_for(hot[i], tables)) {
-                i = run(hot, tables, i, n, dt);
-                if (i == n) break;
-            }
-            if (!plain_step<false>(hot, cold, fast, i, dt)) break;
-            ++i;
-        }
-        return i;
-    }
+    const LeanTables tables{path_kind_.data(), line_fast_.data(), fast, arc_fast_.data(), cold};
     constexpr std::size_t batch = 32;
     double u[batch];
     PieceAt piece[batch];
     while (i < n) {
+        if (const LeanRun run = lean_for(hot[i], tables)) {
+            i = run(hot, tables, i, n, dt);
+            if (i == n) break;
+            if (!plain_step<false>(hot, cold, fast, i, dt)) break;
+            ++i;
+            continue;
+        }
         const std::size_t m = std::min(batch, n - i);
         std::size_t k = 0;
-        for (; k < m && plain_advance<false>(hot, cold, i + k, dt, u[k]); ++k) piece[k] = plain_piece(hot[i + k], fast, u[k]);
+        bool general = false;  // record i + k needs the general path
+        for (; k < m && !lean_for(hot[i + k], tables); ++k) {
+            if (!plain_advance<false>(hot, cold, i + k, dt, u[k])) {
+                general = true;
+                break;
+            }
+            piece[k] = plain_piece(hot[i + k], fast, u[k]);
+        }
         for (std::size_t j = 0; j < k; ++j) {
             if (piece[j].piece) write_2d(hot[i + j], ArcLengthTable::evaluate_piece(piece[j].piece, piece[j].x));
             else plain_write(hot[i + j], fast, u[j]);
         }
         i += k;
-        if (k < m) break;  // record i needs the general path
+        if (general) break;
     }
     return i;
 }
