@@ -203,6 +203,7 @@ private:
     void try_fast(std::size_t i) noexcept;     // enters a fast mode where the state allows it
     bool cross(std::size_t i, double dt);  // a child's end and the next one's start, fast
     std::size_t fast_run(std::size_t i, std::size_t n, double dt) noexcept;  // the fast entries from i
+    void ask_ahead(std::size_t i, std::size_t n, double dt) const noexcept;  // fast_run's prefetches
     void set_mode(std::uint32_t root, RootMode m) noexcept {
         lines_[root].bits = static_cast<std::uint8_t>((lines_[root].bits & ~root_mode) | m);
     }
