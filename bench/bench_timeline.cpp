@@ -155,10 +155,11 @@ void BM_create_destroy(benchmark::State& state) {
     results["create_destroy"].ns.push_back(ns);
 }
 
-BENCHMARK(BM_free)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(0.5);
-BENCHMARK(BM_timelines)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(0.5);
-BENCHMARK(BM_one_active)->Arg(10)->Arg(100000)->Unit(benchmark::kMicrosecond)->MinTime(0.2);
-BENCHMARK(BM_create_destroy)->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+// No MinTime here, so that --benchmark_min_time applies (0.5 s by default).
+BENCHMARK(BM_free)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_timelines)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_one_active)->Arg(10)->Arg(100000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_create_destroy)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
