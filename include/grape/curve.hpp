@@ -20,9 +20,9 @@
 // threads at once if the curve is shared between threads.
 #pragma once
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <span>
@@ -44,9 +44,15 @@ inline double pick_below(double x, double edge, double a, double b) noexcept {
 #if defined(__SSE2__)
     const __m128d below = _mm_cmplt_sd(_mm_set_sd(x), _mm_set_sd(edge));
     return _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(below, _mm_set_sd(a)), _mm_andnot_pd(below, _mm_set_sd(b))));
-#else
+#else  // memcpy, not std::bit_cast: some C++20 libraries (emscripten 3.1.6's) lack it
     const std::uint64_t mask = std::uint64_t{0} - static_cast<std::uint64_t>(x < edge);
-    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
+    std::uint64_t ia, ib;
+    std::memcpy(&ia, &a, sizeof a);
+    std::memcpy(&ib, &b, sizeof b);
+    const std::uint64_t bits = (ia & mask) | (ib & ~mask);
+    double out;
+    std::memcpy(&out, &bits, sizeof out);
+    return out;
 #endif
 }
 }  // namespace detail

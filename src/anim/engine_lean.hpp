@@ -7,9 +7,7 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cstddef>
-#include <cstring>
 #include <type_traits>
 #include <utility>
 
@@ -41,11 +39,9 @@ inline void ask_cold_ahead(const Hot* hot, const Cold* cold, std::size_t i, std:
 
 // A record's curve kind and flags as one 16-bit word (kind in the low byte), so that one
 // compare checks the kind and every flag a run depends on.
-static_assert(offsetof(Hot, flags) == offsetof(Hot, kind) + 1 && sizeof(CurveKind) == 1);
+// (kind and flags are adjacent: compilers read them as one word)
 inline std::uint16_t kind_and_flags(const Hot& h) noexcept {
-    std::uint16_t word;
-    std::memcpy(&word, &h.kind, sizeof word);
-    return static_cast<std::uint16_t>(std::endian::native == std::endian::little ? word : (word >> 8) | (word << 8));
+    return static_cast<std::uint16_t>(static_cast<unsigned>(h.kind) | (static_cast<unsigned>(h.flags) << 8));
 }
 // The flags a run needs as it started: not paused, dead or custom, and the target's type.
 inline constexpr std::uint16_t lean_mask = 0xFF | (flag_paused | flag_dead | flag_custom | flag_float) << 8;
