@@ -171,6 +171,7 @@ GRAPE_FLATTEN std::size_t EngineImpl::plain_run(std::size_t i, std::size_t n, do
         std::size_t k = 0;
         bool general = false;  // record i + k needs the general path
         for (; k < m && !lean_for(hot[i + k], tables); ++k) {
+            ask_hot_ahead(hot, i + k, n);
             if (!plain_advance<false>(hot, cold, i + k, dt, u[k])) {
                 general = true;
                 break;
