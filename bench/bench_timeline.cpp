@@ -8,6 +8,8 @@
 //   one_active/K    one timeline of K sequential 0.5 s children (one active at a time): ns
 //                   per tick, which should not grow with K
 //   create_destroy  create a timeline of 10 fresh animations and kill it: ns each
+//   free_floor/N, timelines_floor/N
+//                   the memory traffic each workload cannot avoid, per live update
 // Reports ns per live update (the children the tick moves) and per animation held, the
 // allocations during the timed ticks (0 expected), and a summary with the ratios.
 #include <grape/timeline.hpp>
@@ -118,6 +120,57 @@ void BM_timelines(benchmark::State& state) {
     benchmark::DoNotOptimize(targets.data());
 }
 
+// The memory-traffic floors of the two workloads, per live update: what a tick cannot avoid
+// moving, with nothing computed. Free: each 32-byte record read, its first double written
+// back and 16 bytes written to its target, in order (bench_anim's traffic_floor). Timelines:
+// each timeline's 64-byte line read and its first double written back, and 16 bytes written
+// to the target of its active child, which lies 10 targets (160 bytes) after the previous
+// timeline's: a line of its own.
+struct FreeRecord {
+    double phase;
+    double rate;
+    grape::scenes::BenchTarget* target;
+    std::uint64_t rest;
+};
+struct alignas(64) TimelineLine {
+    double elapsed;
+    double rate;
+    grape::scenes::BenchTarget* target;
+    std::uint64_t rest[5];
+};
+
+void BM_free_floor(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    std::vector<FreeRecord> records(n);
+    for (std::size_t i = 0; i < n; ++i) records[i] = {0.0, 1.0 / grape::scenes::bench_duration(i), &targets[i], i};
+    run(state, "free_floor/" + std::to_string(n), static_cast<double>(n), [&] {
+        for (FreeRecord& r : records) {
+            r.phase += frame * r.rate;
+            r.target->x = r.phase;
+            r.target->y = r.rate;
+        }
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
+void BM_timelines_floor(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<grape::scenes::BenchTarget> targets(n);
+    std::vector<TimelineLine> lines(n / 10);
+    for (std::size_t t = 0; t < n / 10; ++t) lines[t] = {0.0, 1.0 / grape::scenes::bench_duration(t), &targets[t * 10 + t % 10], {t}};
+    run(state, "timelines_floor/" + std::to_string(n), static_cast<double>(n / 10), [&] {
+        for (TimelineLine& l : lines) {
+            l.elapsed += frame;
+            l.target->x = l.elapsed;
+            l.target->y = l.rate;
+        }
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+
 void BM_one_active(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
     std::vector<grape::scenes::BenchTarget> targets(n);
@@ -158,6 +211,8 @@ void BM_create_destroy(benchmark::State& state) {
 // No MinTime here, so that --benchmark_min_time applies (0.5 s by default).
 BENCHMARK(BM_free)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_timelines)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_free_floor)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_timelines_floor)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_one_active)->Arg(10)->Arg(100000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_create_destroy)->Unit(benchmark::kMicrosecond);
 
@@ -179,6 +234,11 @@ int main(int argc, char** argv) {
                 free_ns > 0 ? tl_ns / free_ns : 0.0);
     std::printf("timelines, ns per animation held per tick:     %8.2f  (%.2fx free)\n", tl_ns / 10,
                 free_ns > 0 ? tl_ns / 10 / free_ns : 0.0);
+    const double free_floor = median("free_floor/1000000"), tl_floor = median("timelines_floor/1000000");
+    auto of = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+    std::printf("traffic floors, ns per live update: free %.2f, timelines %.2f (%.2fx free's)\n", free_floor, tl_floor,
+                of(tl_floor, free_floor));
+    std::printf("free / its floor %.2fx, timelines / their floor %.2fx\n", of(free_ns, free_floor), of(tl_ns, tl_floor));
     std::printf("one active of 10, ns per tick:                 %8.1f\n", median("one_active/10"));
     std::printf("one active of 100000, ns per tick:             %8.1f  (%.2fx of 10)\n", median("one_active/100000"),
                 median("one_active/10") > 0 ? median("one_active/100000") / median("one_active/10") : 0.0);
