@@ -8,7 +8,8 @@
 //   one_active/K    one timeline of K sequential 0.5 s children (one active at a time): ns
 //                   per tick, which should not grow with K
 //   create_destroy  create a timeline of 10 fresh animations and kill it: ns each
-//   free_floor/N, timelines_floor/N
+//   timelines_shared/N  the same, with a timeline's 10 children moving one target
+//   free_floor/N, timelines_floor/N, timelines_shared_floor/N
 //                   the memory traffic each workload cannot avoid, per live update
 // Reports ns per live update (the children the tick moves) and per animation held, the
 // allocations during the timed ticks (0 expected), and a summary with the ratios.
@@ -99,9 +100,11 @@ void BM_free(benchmark::State& state) {
     benchmark::DoNotOptimize(targets.data());
 }
 
-void BM_timelines(benchmark::State& state) {
+// shared: the 10 children of a timeline move one target (a sequence of moves of one object),
+// so the live updates write N/10 targets side by side, as free animations write theirs.
+void timelines_bench(benchmark::State& state, bool shared) {
     const auto n = static_cast<std::size_t>(state.range(0));
-    std::vector<grape::scenes::BenchTarget> targets(n);
+    std::vector<grape::scenes::BenchTarget> targets(shared ? n / 10 : n);
     auto engine = std::make_unique<grape::Engine>();
     const auto& paths = linear_paths();
     const grape::AnimationDef def{.curve = grape::Curve::quad_in_out()};
@@ -109,11 +112,11 @@ void BM_timelines(benchmark::State& state) {
         grape::Timeline tl = engine->create_timeline({.repeat = -1});
         for (std::size_t k = 0; k < 10; ++k) {
             const std::size_t i = t * 10 + k;
-            tl.add(engine->create_2d_animation(targets[i], paths[i % paths.size()], grape::scenes::bench_duration(i), def));
+            tl.add(engine->create_2d_animation(targets[shared ? t : i], paths[i % paths.size()], grape::scenes::bench_duration(i), def));
         }
     }
     engine->tick(frame);
-    run(state, "timelines/" + std::to_string(n), static_cast<double>(n / 10), [&] {
+    run(state, (shared ? "timelines_shared/" : "timelines/") + std::to_string(n), static_cast<double>(n / 10), [&] {
         engine->tick(frame);
         benchmark::ClobberMemory();
     });
@@ -155,12 +158,13 @@ void BM_free_floor(benchmark::State& state) {
     benchmark::DoNotOptimize(targets.data());
 }
 
-void BM_timelines_floor(benchmark::State& state) {
+void timelines_floor(benchmark::State& state, bool shared) {
     const auto n = static_cast<std::size_t>(state.range(0));
-    std::vector<grape::scenes::BenchTarget> targets(n);
+    std::vector<grape::scenes::BenchTarget> targets(shared ? n / 10 : n);
     std::vector<TimelineLine> lines(n / 10);
-    for (std::size_t t = 0; t < n / 10; ++t) lines[t] = {0.0, 1.0 / grape::scenes::bench_duration(t), &targets[t * 10 + t % 10], {t}};
-    run(state, "timelines_floor/" + std::to_string(n), static_cast<double>(n / 10), [&] {
+    for (std::size_t t = 0; t < n / 10; ++t)
+        lines[t] = {0.0, 1.0 / grape::scenes::bench_duration(t), &targets[shared ? t : t * 10 + t % 10], {t}};
+    run(state, (shared ? "timelines_shared_floor/" : "timelines_floor/") + std::to_string(n), static_cast<double>(n / 10), [&] {
         for (TimelineLine& l : lines) {
             l.elapsed += frame;
             l.target->x = l.elapsed;
@@ -170,6 +174,11 @@ void BM_timelines_floor(benchmark::State& state) {
     });
     benchmark::DoNotOptimize(targets.data());
 }
+
+void BM_timelines(benchmark::State& state) { timelines_bench(state, false); }
+void BM_timelines_shared(benchmark::State& state) { timelines_bench(state, true); }
+void BM_timelines_floor(benchmark::State& state) { timelines_floor(state, false); }
+void BM_timelines_shared_floor(benchmark::State& state) { timelines_floor(state, true); }
 
 void BM_one_active(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
@@ -213,6 +222,8 @@ BENCHMARK(BM_free)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_timelines)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_free_floor)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_timelines_floor)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_timelines_shared)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_timelines_shared_floor)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_one_active)->Arg(10)->Arg(100000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_create_destroy)->Unit(benchmark::kMicrosecond);
 
@@ -239,6 +250,9 @@ int main(int argc, char** argv) {
     std::printf("traffic floors, ns per live update: free %.2f, timelines %.2f (%.2fx free's)\n", free_floor, tl_floor,
                 of(tl_floor, free_floor));
     std::printf("free / its floor %.2fx, timelines / their floor %.2fx\n", of(free_ns, free_floor), of(tl_ns, tl_floor));
+    const double sh_ns = median("timelines_shared/1000000"), sh_floor = median("timelines_shared_floor/1000000");
+    std::printf("shared targets: timelines %.2f ns per live update (%.2fx free), floor %.2f (%.2fx free's); %.2fx their floor\n",
+                sh_ns, of(sh_ns, free_ns), sh_floor, of(sh_floor, free_floor), of(sh_ns, sh_floor));
     std::printf("one active of 10, ns per tick:                 %8.1f\n", median("one_active/10"));
     std::printf("one active of 100000, ns per tick:             %8.1f  (%.2fx of 10)\n", median("one_active/100000"),
                 median("one_active/10") > 0 ? median("one_active/100000") / median("one_active/10") : 0.0);
