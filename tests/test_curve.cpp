@@ -10,6 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
 #include <functional>
 #include <random>
 #include <string>
@@ -721,5 +724,50 @@ TEST(CubicBezier, InteriorFlatPointStaysWithinItsStatedBound) {
         const double ordinary = 16 * eps * (1 + std::min(t, 1 - t) * slope);
         EXPECT_NEAR(c(t), static_cast<double>(y), std::min(near_flat, ordinary) > 0 && std::abs(t - 0.5) > 1e-6 ? ordinary : near_flat)
             << "t = " << t;
+    }
+}
+
+// Both branch-free selects (SSE2 masks, and the integer masks wasm builds use) give the
+// ternary's bits, NaN payloads, signed zeros and infinities included, and a NaN x selects b
+// as x < edge is false.
+TEST(Curve, BranchFreeSelectsGiveTheTernarysBits) {
+    auto bits = [](double v) {
+        std::uint64_t u;
+        std::memcpy(&u, &v, sizeof u);
+        return u;
+    };
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> any(-4.0, 4.0);
+    const double specials[] = {0.0, -0.0, 0.5, std::nextafter(0.5, 0.0), std::nextafter(0.5, 1.0),
+                               HUGE_VAL, -HUGE_VAL, std::nan("7"), -std::nan("3"), 4.9e-324};
+    auto pick = [&](std::size_t k) { return k < std::size(specials) ? specials[k] : any(rng); };
+    int below = 0, above = 0;
+    for (std::size_t k = 0; k < 20000; ++k) {
+        const double x = pick(k % 40), edge = pick((k / 40) % 40 < 10 ? (k / 40) % 40 : 40), a = pick(k % 13 + 7),
+                     b = pick(k % 17 + 5);
+        const double want = x < edge ? a : b;
+        (x < edge ? below : above) += 1;
+        ASSERT_EQ(bits(grape::detail::pick_below(x, edge, a, b)), bits(want)) << x << " " << edge;
+        ASSERT_EQ(bits(grape::detail::pick_below_bits(x, edge, a, b)), bits(want)) << x << " " << edge;
+    }
+    EXPECT_GT(below, 1000);
+    EXPECT_GT(above, 1000);
+}
+
+// The anim tick's lean runs skip the test for points beyond a path's ends on linear and the
+// polynomial kinds (engine_lean.hpp, stays_on_path): their values for x in [0, 1] stay in
+// [0, 1]. Checked at the ends, around ½, at the smallest doubles and at random x.
+TEST(Curve, PolynomialKindsStayInTheUnitIntervalOnIt) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<double> xs = {0.0, -0.0, 1.0, 0.5, std::nextafter(0.5, 0.0), std::nextafter(0.5, 1.0),
+                              std::nextafter(1.0, 0.0), 4.9e-324, 1e-300, 1e-160};
+    for (int k = 0; k < 100000; ++k) xs.push_back(unit(rng));
+    for (int kind = 0; kind <= static_cast<int>(grape::CurveKind::quint_out_in); ++kind) {
+        const auto ck = static_cast<grape::CurveKind>(kind);
+        for (const double x : xs) {
+            const double u = grape::detail::ease_formula(ck, x);
+            ASSERT_TRUE(u >= 0.0 && u <= 1.0) << kind << " at " << x << " gives " << u;
+        }
     }
 }

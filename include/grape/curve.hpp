@@ -37,14 +37,9 @@
 namespace grape {
 
 namespace detail {
-/// x < edge ? a : b without a branch (a and b already computed): the polynomial in-out and
-/// out-in kinds join two cheap halves at x = ½, and a branch there mispredicts half the
-/// time when many animations run at unrelated phases.
-inline double pick_below(double x, double edge, double a, double b) noexcept {
-#if defined(__SSE2__)
-    const __m128d below = _mm_cmplt_sd(_mm_set_sd(x), _mm_set_sd(edge));
-    return _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(below, _mm_set_sd(a)), _mm_andnot_pd(below, _mm_set_sd(b))));
-#else  // memcpy, not std::bit_cast: some C++20 libraries (emscripten 3.1.6's) lack it
+/// x < edge ? a : b by integer masks (pick_below on targets without SSE2, such as wasm);
+/// memcpy, not std::bit_cast: some C++20 libraries (emscripten 3.1.6's) lack it.
+inline double pick_below_bits(double x, double edge, double a, double b) noexcept {
     const std::uint64_t mask = std::uint64_t{0} - static_cast<std::uint64_t>(x < edge);
     std::uint64_t ia, ib;
     std::memcpy(&ia, &a, sizeof a);
@@ -53,6 +48,16 @@ inline double pick_below(double x, double edge, double a, double b) noexcept {
     double out;
     std::memcpy(&out, &bits, sizeof out);
     return out;
+}
+/// x < edge ? a : b without a branch (a and b already computed): the polynomial in-out and
+/// out-in kinds join two cheap halves at x = ½, and a branch there mispredicts half the
+/// time when many animations run at unrelated phases.
+inline double pick_below(double x, double edge, double a, double b) noexcept {
+#if defined(__SSE2__)
+    const __m128d below = _mm_cmplt_sd(_mm_set_sd(x), _mm_set_sd(edge));
+    return _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(below, _mm_set_sd(a)), _mm_andnot_pd(below, _mm_set_sd(b))));
+#else
+    return pick_below_bits(x, edge, a, b);
 #endif
 }
 }  // namespace detail

@@ -31,27 +31,29 @@ inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
         }
         const PathFast& f = path_fast_[path];
         switch (kind) {
-            case KernelKind::linear: break;
             case KernelKind::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
             case KernelKind::reparam_cubic:
             case KernelKind::reparam_linear:  // the ends exact, as Path::point has them
                 return u >= 1.0 ? f.c[1] : u <= 0.0 ? f.c[0] : ArcLengthTable::evaluate(f.table, f.steps, u);
+            case KernelKind::linear:  // taken above
             case KernelKind::generic: break;
         }
     }
     return paths_[path].path.point(u);  // other kinds, and outside [0, 1] along the end tangents
 }
 
-// The point into a 2-D record's target (x, and y at x + y_offset), as float or double.
+// A point into a 2-D target of members of type T (float or double): x at `x`, y at
+// x + y_offset.
+template <class T>
+inline void write_pair(char* x, std::int16_t y_offset, Vec2 p) noexcept {
+    *reinterpret_cast<T*>(x) = static_cast<T>(p.x);
+    *reinterpret_cast<T*>(x + y_offset) = static_cast<T>(p.y);
+}
+
+// The point into a 2-D record's target, as its flags say.
 inline void write_target(const Hot& h, Vec2 p) noexcept {
-    char* x = h.target;
-    if (h.flags & flag_float) {
-        *reinterpret_cast<float*>(x) = static_cast<float>(p.x);
-        *reinterpret_cast<float*>(x + h.y_offset) = static_cast<float>(p.y);
-    } else {
-        *reinterpret_cast<double*>(x) = p.x;
-        *reinterpret_cast<double*>(x + h.y_offset) = p.y;
-    }
+    if (h.flags & flag_float) write_pair<float>(h.target, h.y_offset, p);
+    else write_pair<double>(h.target, h.y_offset, p);
 }
 
 inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept { write_target(h, p); }
@@ -95,21 +97,13 @@ inline void EngineImpl::plain_write(const Hot& h, const PathFast* fast, double u
 // An arc-length path's piece at u, found before the write: where it starts (null for the
 // other kinds and at the ends, which plain_write takes) and u's place x in it; its lines
 // are asked for now (shared tables of many paths do not stay in L1), read by the write.
-struct PieceAt {
-    const double* piece;
-    double x;
-};
-inline PieceAt plain_piece(const Hot& h, const PathFast* fast, double u) noexcept {
+inline ArcLengthTable::Piece plain_piece(const Hot& h, const PathFast* fast, double u) noexcept {
     const PathFast& f = fast[h.path];
     const bool arc = f.fast == KernelKind::reparam_cubic || f.fast == KernelKind::reparam_linear;
     if (!arc || !(u > 0.0 && u < 1.0)) return {nullptr, 0.0};
-    const double s = u * f.steps;  // as ArcLengthTable::evaluate finds it
-    const auto k = static_cast<std::int64_t>(s);
-    const double* c = f.table + ArcLengthTable::stride * static_cast<std::size_t>(k);
-#if defined(__GNUC__) || defined(__clang__)
-    for (std::size_t line = 0; line < ArcLengthTable::stride; line += 8) __builtin_prefetch(c + line);
-#endif
-    return {c, 2.0 * (s - static_cast<double>(k)) - 1.0};
+    const ArcLengthTable::Piece p = ArcLengthTable::piece_at(f.table, f.steps, u);
+    ArcLengthTable::prefetch_piece(p.c);
+    return p;
 }
 
 template <bool phase1>

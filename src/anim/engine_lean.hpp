@@ -86,9 +86,7 @@ inline bool lean_step(Hot& h, const KernelKind* kinds, const LineFast* lines, co
         const PathFast& f = fast[h.path];
         p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
     }
-    using T = std::conditional_t<F, float, double>;
-    *reinterpret_cast<T*>(h.target) = static_cast<T>(p.x);
-    *reinterpret_cast<T*>(h.target + h.y_offset) = static_cast<T>(p.y);
+    write_pair<std::conditional_t<F, float, double>>(h.target, h.y_offset, p);
     return true;
 }
 
@@ -128,7 +126,7 @@ inline bool is_arc(KernelKind p) noexcept { return p == KernelKind::reparam_cubi
 // The same on arc-length paths, strictly inside them (the ends are Path::point's exact end
 // points, which plain_write gives), in batches of 32 as plain_run has them: every record of
 // a batch is advanced and its table piece found and asked for before any is written, so
-// that the misses on shared tables overlap. plain_piece's and evaluate_piece's arithmetic.
+// that the misses on shared tables overlap. ArcLengthTable's piece_at and evaluate_piece, as plain_piece.
 template <CurveKind K, bool F>
 GRAPE_FLATTEN std::size_t lean_arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
     static_assert(!has_parameters(K));
@@ -136,8 +134,7 @@ GRAPE_FLATTEN std::size_t lean_arc_run(Hot* hot, const LeanTables& t, std::size_
     constexpr std::size_t batch = 32;
     const KernelKind* const kinds = t.kind;
     const ArcFast* const arcs = t.arc;
-    const double* piece[batch];
-    double at[batch];
+    ArcLengthTable::Piece piece[batch];
     while (i < n) {
         const std::size_t m = std::min(batch, n - i);
         std::size_t k = 0;
@@ -153,21 +150,13 @@ GRAPE_FLATTEN std::size_t lean_arc_run(Hot* hot, const LeanTables& t, std::size_
             if (!(u > 0.0 && u < 1.0)) break;
             h.phase = phase;
             const ArcFast& f = arcs[h.path];
-            const double s = u * f.steps;
-            const auto j = static_cast<std::int64_t>(s);
-            const double* c = f.table + ArcLengthTable::stride * static_cast<std::size_t>(j);
-#if defined(__GNUC__) || defined(__clang__)
-            for (std::size_t line = 0; line < ArcLengthTable::stride; line += 8) __builtin_prefetch(c + line);
-#endif
-            piece[k] = c;
-            at[k] = 2.0 * (s - static_cast<double>(j)) - 1.0;
+            piece[k] = ArcLengthTable::piece_at(f.table, f.steps, u);
+            ArcLengthTable::prefetch_piece(piece[k].c);
         }
-        using T = std::conditional_t<F, float, double>;
         for (std::size_t j = 0; j < k; ++j) {
-            const Vec2 p = ArcLengthTable::evaluate_piece(piece[j], at[j]);
             const Hot& h = hot[i + j];
-            *reinterpret_cast<T*>(h.target) = static_cast<T>(p.x);
-            *reinterpret_cast<T*>(h.target + h.y_offset) = static_cast<T>(p.y);
+            write_pair<std::conditional_t<F, float, double>>(h.target, h.y_offset,
+                                                             ArcLengthTable::evaluate_piece(piece[j].c, piece[j].x));
         }
         i += k;
         if (k < m) break;

@@ -158,7 +158,7 @@ GRAPE_FLATTEN std::size_t EngineImpl::plain_run(std::size_t i, std::size_t n, do
     const LeanTables tables{path_kind_.data(), line_fast_.data(), fast, arc_fast_.data(), cold};
     constexpr std::size_t batch = 32;
     double u[batch];
-    PieceAt piece[batch];
+    ArcLengthTable::Piece piece[batch];
     while (i < n) {
         if (const LeanRun run = lean_for(hot[i], tables)) {
             i = run(hot, tables, i, n, dt);
@@ -179,7 +179,7 @@ GRAPE_FLATTEN std::size_t EngineImpl::plain_run(std::size_t i, std::size_t n, do
             piece[k] = plain_piece(hot[i + k], fast, u[k]);
         }
         for (std::size_t j = 0; j < k; ++j) {
-            if (piece[j].piece) write_2d(hot[i + j], ArcLengthTable::evaluate_piece(piece[j].piece, piece[j].x));
+            if (piece[j].c) write_2d(hot[i + j], ArcLengthTable::evaluate_piece(piece[j].c, piece[j].x));
             else plain_write(hot[i + j], fast, u[j]);
         }
         i += k;

@@ -100,14 +100,8 @@ float interval_until(const RootLine& l, const RootEntry& e, double lo, double hi
 }
 
 inline void write_line(const RootLine& l, Vec2 p) noexcept {  // EngineImpl::write_2d
-    char* x = l.target;
-    if (l.bits & root_float) {
-        *reinterpret_cast<float*>(x) = static_cast<float>(p.x);
-        *reinterpret_cast<float*>(x + l.y_offset) = static_cast<float>(p.y);
-    } else {
-        *reinterpret_cast<double*>(x) = p.x;
-        *reinterpret_cast<double*>(x + l.y_offset) = p.y;
-    }
+    if (l.bits & root_float) write_pair<float>(l.target, l.y_offset, p);
+    else write_pair<double>(l.target, l.y_offset, p);
 }
 
 }  // namespace

@@ -62,10 +62,27 @@ public:
     /// strictly inside (0, 1). K is a power of two, so u·K is exact and u < 1 never reads
     /// past the last piece.
     static Vec2 evaluate(const double* values, double steps, double u) noexcept {
+        const Piece p = piece_at(values, steps, u);
+        return evaluate_piece(p.c, p.x);
+    }
+    /// Where u falls: the piece's storage and u's place x in [−1, 1] within it (u strictly
+    /// inside (0, 1)), so that bulk callers can ask for the piece's lines before evaluating.
+    struct Piece {
+        const double* c;
+        double x;
+    };
+    static Piece piece_at(const double* values, double steps, double u) noexcept {
         const double s = u * steps;
         const auto k = static_cast<std::int64_t>(s);  // s > 0: truncation is the floor, one instruction
-        const double x = 2.0 * (s - static_cast<double>(k)) - 1.0;
-        return evaluate_piece(values + stride * static_cast<std::size_t>(k), x);
+        return {values + stride * static_cast<std::size_t>(k), 2.0 * (s - static_cast<double>(k)) - 1.0};
+    }
+    /// Asks for a piece's three cache lines (a hint: no effect on results).
+    static void prefetch_piece(const double* c) noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+        for (std::size_t line = 0; line < stride; line += 8) __builtin_prefetch(c + line);
+#else
+        (void)c;
+#endif
     }
     /// One piece's point at its own x in [−1, 1]. Estrin's scheme on the coefficient pairs:
     /// q_i = a_2i + a_2i+1·x, r_j = q_2j + q_2j+1·x², p = r0 + (r1 + r2·x⁴)·x⁴; both
