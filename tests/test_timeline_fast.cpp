@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
+#include <iterator>
 #include <new>
 #include <random>
 #include <string>
@@ -36,6 +37,8 @@ struct FloatPoint {
 };
 
 const grape::LinearPath unit_line({0, 0}, {1, 0});  // x is the progress u
+const grape::CubicBezierPath swoop({0, 0}, {40, 90}, {-30, 60}, {100, 10});
+const grape::CubicBezierPath swoop_by_length({0, 0}, {40, 90}, {-30, 60}, {100, 10}, true);
 
 // Two engines built and commanded alike; before every tick the slow one's timelines get a
 // command, which takes a timeline off the fast case.
@@ -152,7 +155,8 @@ TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
 }
 
 // Sequences as games write them (no delays, time scale 1, children one after another, some
-// with gaps, some sharing a target, some with float members): the lean entries and the
+// with gaps, some sharing a target, some with float members, along lines, cubics and an
+// arc-length cubic, with several formula curves): the lean entries and the
 // hand-over between children. The children's handles are read every third step (a child's
 // phase is written out when looked at); now and then a child gets a handler or is killed, a
 // timeline is sought, reversed or paused, and the engine moves its records.
@@ -173,18 +177,26 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
             for (int k = 0; k < count; ++k) {
                 const double duration = 0.05 + 0.5 * unit(rng);
                 const auto roll = rng() % 6;
+                // the lean entries' kinds: formula curves, each compiled on its own
+                const grape::Curve formulas[] = {grape::Curve::quad_in_out(), grape::Curve::linear(),
+                                                 grape::Curve::sine_in_out(), grape::Curve::expo_out(),
+                                                 grape::Curve::bounce_out(), grape::Curve::circ_in()};
                 const AnimationDef child{.curve = roll == 0 ? grape::Curve::cubic_bezier(0.3, 0.1, 0.2, 1.0)
-                                                            : grape::Curve::quad_in_out(),
+                                                            : formulas[rng() % std::size(formulas)],
                                          .reversed = roll == 1};
                 const std::string at = rng() % 4 == 0 ? "+=0.1" : ">";
                 const std::size_t target = shared ? first : next;
+                const auto shape = rng() % 4;  // lines, cubics and an arc-length cubic
+                const grape::Path& path = shape < 2 ? static_cast<const grape::Path&>(unit_line)
+                                          : shape == 2 ? static_cast<const grape::Path&>(swoop)
+                                                       : static_cast<const grape::Path&>(swoop_by_length);
                 Animation fa, sa;
                 if (rng() % 5 == 0) {
-                    fa = w.fast.create_2d_animation(fast_floats[target], unit_line, duration, child);
-                    sa = w.slow.create_2d_animation(slow_floats[target], unit_line, duration, child);
+                    fa = w.fast.create_2d_animation(fast_floats[target], path, duration, child);
+                    sa = w.slow.create_2d_animation(slow_floats[target], path, duration, child);
                 } else {
-                    fa = w.fast.create_2d_animation(fast_points[target], unit_line, duration, child);
-                    sa = w.slow.create_2d_animation(slow_points[target], unit_line, duration, child);
+                    fa = w.fast.create_2d_animation(fast_points[target], path, duration, child);
+                    sa = w.slow.create_2d_animation(slow_points[target], path, duration, child);
                 }
                 ++next;
                 w.add(fa, sa, at);
