@@ -126,7 +126,8 @@ inline bool is_arc(KernelKind p) noexcept { return p == KernelKind::reparam_cubi
 // The same on arc-length paths, strictly inside them (the ends are Path::point's exact end
 // points, which plain_write gives), in batches of 32 as plain_run has them: every record of
 // a batch is advanced and its table piece found and asked for before any is written, so
-// that the misses on shared tables overlap. ArcLengthTable's piece_at and evaluate_piece, as plain_piece.
+// that the misses on shared tables overlap. The piece comes from ArcLengthTable's piece_at
+// and evaluate_piece, as in plain_piece.
 template <CurveKind K, bool F>
 GRAPE_FLATTEN std::size_t lean_arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
     static_assert(!has_parameters(K));
