@@ -24,29 +24,33 @@ struct LeanTables {
 
 // A play ends for about one record in a hundred per tick, and the general update then reads
 // its Cold record, a cache miss of ~100 ns that would cost more than the record's whole
-// update: asked for `ahead` records before it is needed, when the record's play ends now.
-inline constexpr std::size_t cold_ahead = 16;
-inline void ask_cold_ahead(const Hot* hot, const Cold* cold, std::size_t i, std::size_t n, double dt) noexcept {
-#if defined(__GNUC__) || defined(__clang__)
-    if (i + cold_ahead < n) {
-        const Hot& a = hot[i + cold_ahead];
-        if (a.phase + dt * a.rate >= play_end) __builtin_prefetch(cold + i + cold_ahead, 1);
-    }
-#else
-    (void)hot, (void)cold, (void)i, (void)n, (void)dt;
-#endif
-}
-
+// update: asked for `cold_ahead` records before it is needed, when the record's play ends now.
 // The hot records are read in order, but each costs tens of instructions, so the reorder
 // window holds fewer of their misses than a plain copy loop's: asked for `hot_ahead`
 // records (2 KB) early, beyond what the demand loads reach.
+inline constexpr std::size_t cold_ahead = 16;
 inline constexpr std::size_t hot_ahead = 64;
-inline void ask_hot_ahead(const Hot* hot, std::size_t i, std::size_t n) noexcept {
+// Record j's Cold record when its play ends on this tick (j < n: the caller's bound).
+inline void ask_cold_if_ending(const Hot* hot, const Cold* cold, std::size_t j, double dt) noexcept {
 #if defined(__GNUC__) || defined(__clang__)
-    if (i + hot_ahead < n) __builtin_prefetch(hot + i + hot_ahead, 1);
+    if (hot[j].phase + dt * hot[j].rate >= play_end) __builtin_prefetch(cold + j, 1);
 #else
-    (void)hot, (void)i, (void)n;
+    (void)hot, (void)cold, (void)j, (void)dt;
 #endif
+}
+// Record j's hot record (j < n: the caller's bound).
+inline void ask_hot(const Hot* hot, std::size_t j) noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+    __builtin_prefetch(hot + j, 1);
+#else
+    (void)hot, (void)j;
+#endif
+}
+inline void ask_cold_ahead(const Hot* hot, const Cold* cold, std::size_t i, std::size_t n, double dt) noexcept {
+    if (i + cold_ahead < n) ask_cold_if_ending(hot, cold, i + cold_ahead, dt);
+}
+inline void ask_hot_ahead(const Hot* hot, std::size_t i, std::size_t n) noexcept {
+    if (i + hot_ahead < n) ask_hot(hot, i + hot_ahead);
 }
 
 // A record's curve kind and flags as one 16-bit word (kind in the low byte), so that one
@@ -108,14 +112,10 @@ GRAPE_FLATTEN std::size_t lean_run(Hot* hot, const LeanTables& t, std::size_t i,
     const Cold* const cold = t.cold;
     const std::size_t far = n > hot_ahead ? n - hot_ahead : 0;
     for (; i < far; ++i) {
-#if defined(__GNUC__) || defined(__clang__)
-        __builtin_prefetch(hot + i + hot_ahead, 1);
-        const Hot& a = hot[i + cold_ahead];
-        if (a.phase + dt * a.rate >= play_end) __builtin_prefetch(cold + i + cold_ahead, 1);
-#endif
+        ask_hot(hot, i + hot_ahead);
+        ask_cold_if_ending(hot, cold, i + cold_ahead, dt);
         if (!lean_step<K, P, F>(hot[i], kinds, lines, fast, dt)) return i;
     }
-    (void)cold;
     for (; i < n; ++i)
         if (!lean_step<K, P, F>(hot[i], kinds, lines, fast, dt)) return i;
     return i;
