@@ -62,6 +62,8 @@ Timeline TimelineStore::create(Engine* owner, const TimelineDef& def) {
     }
     roots_.push_back(RootEntry{.rec = recs_[slot].get(), .slot = slot});
     lines_.emplace_back();
+    due_.push_back(-HUGE_VAL);
+    if (soon_.capacity() < lines_.capacity()) soon_.reserve(lines_.capacity());  // the tick never allocates
     TimelineRec& r = *recs_[slot];
     const std::uint32_t generation = r.generation;
     recycle(r);
@@ -355,10 +357,12 @@ void TimelineStore::finish() noexcept {
             }
             roots_[kept] = roots_[i];
             lines_[kept] = lines_[i];
+            due_[kept] = due_[i];
             r.root = static_cast<std::uint32_t>(kept++);
         }
         roots_.resize(kept);
         lines_.resize(kept);
+        due_.resize(kept);
         stale_roots_ = 0;
     }
 }

@@ -14,6 +14,10 @@
 // monotone in the clock. The child's engine record is not touched: its phase is written out
 // when anything looks at it (flush). Anything else takes the general path for that tick,
 // after which the entry is filled again if the state allows it.
+//
+// Each filled entry also leaves a forecast (`due_`: its `until` on the store's clock), so a
+// tick knows before it starts which entries will hand over, and asks for their records a few
+// hand-overs ahead (ask_stage) instead of testing every entry's neighbours.
 #include "timeline_impl.hpp"
 
 #include "engine_eval.hpp"
@@ -152,90 +156,146 @@ void TimelineStore::touch(std::uint32_t animation_slot, bool leave) noexcept {
     if (drives(animation_slot)) flush(*recs_[driven_[animation_slot]], leave);
 }
 
-// Whether entry j goes the general way this tick.
-inline bool goes_slow(const RootLine& l, double dt) noexcept {
-    const std::uint8_t m = l.bits & root_mode;
-    return m == root_slow || ((m == root_empty || m == root_one) && !(l.elapsed + dt <= static_cast<double>(l.until)));
-}
-
-// What the entries ahead of entry i will read. The children's targets lie anywhere: fetched
-// `ahead` entries early. An entry that leaves the fast case this tick (a hand-over, a loop)
-// reads its timeline's record, children and engine records, each behind the one before:
-// asked for in three stages, 3·ahead, 2·ahead and ahead entries early, each stage reading
-// what the one before brought in. Without them a hand-over waits on about six misses.
-inline void TimelineStore::ask_ahead(std::size_t i, std::size_t n, double dt) const noexcept {
-    if (i + 3 * ahead < n && goes_slow(lines_[i + 3 * ahead], dt)) {
-        const char* e = reinterpret_cast<const char*>(&roots_[i + 3 * ahead]);
-        prefetch(e);
-        prefetch(e + sizeof(RootEntry) - 1);
-    }
-    if (i + 2 * ahead < n && goes_slow(lines_[i + 2 * ahead], dt)) {
-        if (const TimelineRec* r = roots_[i + 2 * ahead].rec) {
-            const char* p = reinterpret_cast<const char*>(r);
-            for (std::size_t line = 0; line < 256; line += 64) prefetch(p + line);  // the fields an update reads
+// An entry that leaves the fast case (a hand-over, a loop) reads a chain of records, each
+// found through the one before: its RootEntry, its TimelineRec's first 256 bytes, the
+// children at the window's edge with `by_end` and `active`, the active child's engine slot,
+// hot and cold records, then the next child's. Without them a hand-over waits on about
+// eight misses in turn. The tick asks for them in `stages` steps, one step per hand-over
+// it meets (~a hundred entries apart, more than a memory latency of fast updates): step s
+// for the hand-over `stages − 1 − s` ahead, so each step reads what the one before brought
+// in. Every read is bounds-checked against the current vectors: a handler may have changed
+// them since the forecast.
+void TimelineStore::ask_stage(int stage, std::uint32_t root) const noexcept {
+    if (root >= roots_.size()) return;
+    const RootEntry& e = roots_[root];
+    const TimelineRec* r = e.rec;
+    const auto& slots = engine_.slots_;
+    auto ask_records = [&](std::uint32_t slot) {  // an animation's engine records
+        if (slot >= slots.size()) return;
+        const Slot s = slots[slot];
+        if (!(s.dense & free_bit) && s.dense < engine_.hot_.size()) {
+            prefetch(&engine_.hot_[s.dense]);
+            prefetch(&engine_.cold_[s.dense]);
         }
-        const RootLine& b = lines_[i + 2 * ahead];
-        if ((b.bits & root_mode) == root_one && roots_[i + 2 * ahead].child < engine_.slots_.size())
-            prefetch(&engine_.slots_[roots_[i + 2 * ahead].child]);
-    }
-    if (i + ahead < n) {
-        const RootLine& a = lines_[i + ahead];
-        if ((a.bits & root_mode) == root_one) prefetch(a.target);
-        if (goes_slow(a, dt)) {
-            const RootEntry& e = roots_[i + ahead];
-            if (const TimelineRec* r = e.rec) {
+    };
+    switch (stage) {
+        case 0:
+            prefetch(&e);
+            prefetch(reinterpret_cast<const char*>(&e) + sizeof(RootEntry) - 1);
+            return;
+        case 1:
+            if (r) {
+                const char* p = reinterpret_cast<const char*>(r);
+                for (std::size_t line = 0; line < 256; line += 64) prefetch(p + line);  // the fields an update reads
+            }
+            if (e.child < slots.size()) prefetch(&slots[e.child]);
+            return;
+        case 2:
+            if (r) {
                 const std::size_t count = r->children.size();
-                if (count > 0) {
-                    prefetch(r->children.data() + std::min(r->started, count - 1));  // the next to start
-                    if ((a.bits & root_mode) == root_one && e.child_index < count) prefetch(r->children.data() + e.child_index);
-                }
+                if (r->started < count) prefetch(r->children.data() + r->started);  // the next to start
+                if (r->started + 1 < count) prefetch(r->children.data() + r->started + 1);  // and the one after
+                if (e.child_index < count) prefetch(r->children.data() + e.child_index);
                 if (r->finished < r->by_end.size()) prefetch(r->by_end.data() + r->finished);
+                prefetch(r->active.data());
             }
-            if ((a.bits & root_mode) == root_one && e.child < engine_.slots_.size()) {
-                const Slot slot = engine_.slots_[e.child];
-                if (!(slot.dense & free_bit) && slot.dense < engine_.hot_.size()) {
-                    prefetch(&engine_.hot_[slot.dense]);
-                    prefetch(&engine_.cold_[slot.dense]);
-                }
-            }
-        }
+            ask_records(e.child);
+            return;
+        case 3:
+            if (r && r->started < r->children.size() && !r->children[r->started].is_timeline &&
+                r->children[r->started].slot < slots.size())
+                prefetch(&slots[r->children[r->started].slot]);
+            return;
+        default:
+            if (r && r->started < r->children.size() && !r->children[r->started].is_timeline)
+                ask_records(r->children[r->started].slot);
+            return;
     }
 }
 
 // The fast entries from i on, up to the first that takes the general path (returned; n: none).
 GRAPE_FLATTEN std::size_t TimelineStore::fast_run(std::size_t i, std::size_t n, double dt) noexcept {
-    for (; i < n; ++i) {
-        ask_ahead(i, n, dt);
-        RootLine& l = lines_[i];
-        const std::uint8_t m = l.bits & root_mode;
-        if (m == root_idle) continue;
-        if (m == root_slow) return i;
-        const double elapsed = l.elapsed + dt;
-        if (!(elapsed <= static_cast<double>(l.until))) return i;
-        l.elapsed = elapsed;
-        if (m == root_empty) continue;
-        double x, u;
-        if (l.bits & root_lean) {  // fast_point with scale 1, delay 0, forward, p0 and cj 0
-            const double lp = (l.base + elapsed) / l.duration - static_cast<double>(l.kc);
-            x = (lp * l.duration - l.start) * l.rate;
+    // Locals: no handler runs here, so the vectors stay put, and the target writes (through
+    // char*) cannot make the compiler read them again for every entry.
+    RootLine* const lines = lines_.data();
+    const RootEntry* const roots = roots_.data();
+    const KernelKind* const kinds = engine_.path_kind_.data();
+    const LineFast* const line_fast = engine_.line_fast_.data();
+    const PathFast* const path_fast = engine_.path_fast_.data();
+    // In batches: the clocks and child positions of a batch first, then their easings, points
+    // and writes. An entry is one long chain of dependent operations (a division, the easing,
+    // the point), and the reorder window holds only a few entries' chains: split in two, the
+    // divisions of neighbouring entries overlap, and so do their easings.
+    constexpr std::size_t batch = 16;
+    std::uint32_t index[batch];
+    double xs[batch];
+    while (i < n) {
+        const std::size_t m = std::min(batch, n - i);
+        std::size_t k = 0, count = 0;
+        for (; k < m; ++k) {
+            const std::size_t j = i + k;
+            if (j + ahead < n && (lines[j + ahead].bits & root_mode) == root_one) prefetch(lines[j + ahead].target);
+            RootLine& l = lines[j];
+            const std::uint8_t mode = l.bits & root_mode;
+            if (mode == root_idle) continue;
+            if (mode == root_slow) break;
+            const double elapsed = l.elapsed + dt;
+            if (!(elapsed <= static_cast<double>(l.until))) break;
+            l.elapsed = elapsed;
+            if (mode == root_empty || !l.target) continue;
+            double x;
+            if (l.bits & root_lean) {  // fast_point with scale 1, delay 0, forward, p0 and cj 0
+                const double lp = (l.base + elapsed) / l.duration - static_cast<double>(l.kc);
+                x = (lp * l.duration - l.start) * l.rate;
+            } else {
+                const RootEntry& e = roots[j];
+                x = fast_point(l, e, elapsed).position - e.cj;
+            }
             if (l.bits & root_backward) x = 1.0 - x;
-            u = detail::ease_formula(l.kind, x);
-        } else {
-            const RootEntry& e = roots_[i];
-            x = fast_point(l, e, elapsed).position - e.cj;
-            if (l.bits & root_backward) x = 1.0 - x;
-            u = engine_.ease(l.kind, e.curve, x);
+            index[count] = static_cast<std::uint32_t>(k);
+            xs[count++] = x;
         }
-        if (l.target) write_line(l, engine_.point(l.path, u));
+        for (std::size_t c = 0; c < count; ++c) {
+            const std::size_t j = i + index[c];
+            const RootLine& l = lines[j];
+            const double u = (l.bits & root_lean) ? detail::ease_formula(l.kind, xs[c]) : engine_.ease(l.kind, roots[j].curve, xs[c]);
+            Vec2 p;  // EngineImpl::point, its lines and cubics from the locals
+            const KernelKind kind = kinds[l.path];
+            if (kind == KernelKind::linear && u >= 0.0 && u <= 1.0) {
+                const LineFast& f = line_fast[l.path];
+                p = f.c[0] + f.c[1] * u;
+            } else if (kind == KernelKind::cubic && u >= 0.0 && u <= 1.0) {
+                const PathFast& f = path_fast[l.path];
+                p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+            } else {
+                p = engine_.point(l.path, u);
+            }
+            write_line(l, p);
+        }
+        i += k;
+        if (k < m) return i;
     }
     return n;
 }
 
 void TimelineStore::tick(double dt) {
     const std::size_t n = lines_.size();  // timelines created by handlers start next tick
+    clock_ += dt;
+    // The forecast: the entries whose fast case ends on this tick (capacity reserved at creation).
+    soon_.clear();
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(clock_ <= due_[i])) soon_.push_back(static_cast<std::uint32_t>(i));
+    constexpr int stages = 5;
+    const std::size_t forecast = soon_.size();
+    for (int s = 0; s < stages; ++s)  // the first hand-overs: the steps they would have had
+        for (std::size_t j = 0; j < forecast && static_cast<int>(j) + s < stages; ++j) ask_stage(s, soon_[j]);
+    std::size_t next = 0;  // soon_[next]: the first forecast entry past the current one
     for (std::size_t i = 0; i < n; ++i) {
         i = fast_run(i, n, dt);
         if (i == n) break;
+        while (next < forecast && soon_[next] <= i) ++next;
+        for (int j = 0; j < stages && next + static_cast<std::size_t>(j) < forecast; ++j)
+            ask_stage(stages - 1 - j, soon_[next + static_cast<std::size_t>(j)]);
         if (!cross(i, dt)) step_slow(i, dt);
     }
 }
@@ -344,6 +404,7 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     RootLine& l = lines_[i];
     RootEntry& e = roots_[i];
     l.bits = root_slow;
+    due_[i] = -HUGE_VAL;
     const TimelineRec& r = *recs_[e.slot];
     if (!r.alive || r.parent != UINT32_MAX || r.paused || r.dirty || r.nested > 0 || r.on_update || r.active.size() > 1 ||
         !(r.duration > 0.0))
@@ -387,6 +448,7 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     if (r.active.empty()) {
         l.until = interval_until(l, e, lo, hi, false, r.elapsed);
         l.bits = root_empty;
+        due_[i] = clock_ + (static_cast<double>(l.until) - l.elapsed);
         return;
     }
     // The child: an animation inside one of its plays, written by the engine's plain path.
@@ -427,6 +489,7 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     if (cs.backward) bits |= root_backward;
     if (plain && c.p0 == 0.0 && cj == 0.0 && !has_parameters(h->kind)) bits |= root_lean;
     l.bits = static_cast<std::uint8_t>(bits | root_one);
+    due_[i] = clock_ + (static_cast<double>(l.until) - l.elapsed);
 }
 
 }  // namespace grape::detail

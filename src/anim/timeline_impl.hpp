@@ -203,10 +203,11 @@ private:
     void try_fast(std::size_t i) noexcept;     // enters a fast mode where the state allows it
     bool cross(std::size_t i, double dt);  // a child's end and the next one's start, fast
     std::size_t fast_run(std::size_t i, std::size_t n, double dt) noexcept;  // the fast entries from i
-    void ask_ahead(std::size_t i, std::size_t n, double dt) const noexcept;  // fast_run's prefetches
     void set_mode(std::uint32_t root, RootMode m) noexcept {
         lines_[root].bits = static_cast<std::uint8_t>((lines_[root].bits & ~root_mode) | m);
+        due_[root] = m == root_idle ? HUGE_VAL : -HUGE_VAL;  // slow and idle: slow every tick, never
     }
+    void ask_stage(int stage, std::uint32_t root) const noexcept;  // one stage of a hand-over's prefetch
     RootMode mode(std::uint32_t root) const noexcept { return static_cast<RootMode>(lines_[root].bits & root_mode); }
 
     // the update (timeline_tick.cpp); false: a handler changed this timeline's time, stop
@@ -229,6 +230,12 @@ private:
     std::vector<std::uint32_t> free_;
     std::vector<RootLine> lines_;       // top-level timelines, in creation order
     std::vector<RootEntry> roots_;      // the same, what the tick reads only of non-lean entries
+    // The same again: the store clock past which the entry leaves the fast case (its `until`
+    // moved to the store clock; −inf: slow, +inf: idle). Only a forecast: it chooses what the
+    // tick asks for ahead, never what it does, so rounding in it costs a prefetch at most.
+    std::vector<double> due_;
+    std::vector<std::uint32_t> soon_;   // this tick's entries forecast to leave the fast case
+    double clock_ = 0.0;                // the sum of the ticks' dt
     std::vector<std::uint32_t> driven_;  // animation slot → timeline slot (UINT32_MAX: none)
     std::vector<std::pair<std::uint32_t, std::uint64_t>> stack_;  // updates in progress: slot, epoch
     std::size_t base_ = 0;  // stack_[base_, size) belong to the innermost tick, seek or sync
