@@ -33,6 +33,11 @@ namespace {
 constexpr double margin = 1e-7;  // plays; ≫ play_snap + the rounding of plays below 1e7
 constexpr double most_plays = 1e7;  // (play + 1) · cycle below this: rounding ≤ 2e-9 plays
 constexpr std::size_t ahead = 8;    // entries: ~ a memory latency of fast updates
+// A hand-over's records are asked for in `stages` steps, `stride` hand-overs apart: neighbouring
+// timelines often hand over on the same tick, one right after the other, and one hand-over's
+// time is shorter than a memory latency.
+constexpr std::size_t stages = 5;
+constexpr std::size_t stride = 2;
 
 inline void prefetch(const void* p) noexcept {
 #if defined(__GNUC__) || defined(__clang__)
@@ -160,14 +165,18 @@ void TimelineStore::touch(std::uint32_t animation_slot, bool leave) noexcept {
 // found through the one before: its RootEntry, its TimelineRec's first 256 bytes, the
 // children at the window's edge with `by_end` and `active`, the active child's engine slot,
 // hot and cold records, then the next child's. Without them a hand-over waits on about
-// eight misses in turn. The tick asks for them in `stages` steps, one step per hand-over
-// it meets (~a hundred entries apart, more than a memory latency of fast updates): step s
-// for the hand-over `stages − 1 − s` ahead, so each step reads what the one before brought
-// in. Every read is bounds-checked against the current vectors: a handler may have changed
+// eight misses in turn. The tick asks for them in `stages` steps as it meets hand-overs:
+// step s for the hand-over `stride · (stages − 1 − s)` ahead, so each step reads what the one
+// before brought in. Every read is bounds-checked against the current vectors: a handler may have changed
 // them since the forecast.
 void TimelineStore::ask_stage(int stage, std::uint32_t root) const noexcept {
     if (root >= roots_.size()) return;
     const RootEntry& e = roots_[root];
+    if (stage == 0) {  // nothing of the entry read yet: it is what this step asks for
+        prefetch(&e);
+        prefetch(reinterpret_cast<const char*>(&e) + sizeof(RootEntry) - 1);
+        return;
+    }
     const TimelineRec* r = e.rec;
     const auto& slots = engine_.slots_;
     auto ask_records = [&](std::uint32_t slot) {  // an animation's engine records
@@ -179,10 +188,6 @@ void TimelineStore::ask_stage(int stage, std::uint32_t root) const noexcept {
         }
     };
     switch (stage) {
-        case 0:
-            prefetch(&e);
-            prefetch(reinterpret_cast<const char*>(&e) + sizeof(RootEntry) - 1);
-            return;
         case 1:
             if (r) {
                 const char* p = reinterpret_cast<const char*>(r);
@@ -285,17 +290,17 @@ void TimelineStore::tick(double dt) {
     soon_.clear();
     for (std::size_t i = 0; i < n; ++i)
         if (!(clock_ <= due_[i])) soon_.push_back(static_cast<std::uint32_t>(i));
-    constexpr int stages = 5;
     const std::size_t forecast = soon_.size();
-    for (int s = 0; s < stages; ++s)  // the first hand-overs: the steps they would have had
-        for (std::size_t j = 0; j < forecast && static_cast<int>(j) + s < stages; ++j) ask_stage(s, soon_[j]);
+    // The first hand-overs: the steps they would have had.
+    for (std::size_t s = 0; s < stages; ++s)
+        for (std::size_t j = 0; j < forecast && j < stride * (stages - s); ++j) ask_stage(static_cast<int>(s), soon_[j]);
     std::size_t next = 0;  // soon_[next]: the first forecast entry past the current one
     for (std::size_t i = 0; i < n; ++i) {
         i = fast_run(i, n, dt);
         if (i == n) break;
         while (next < forecast && soon_[next] <= i) ++next;
-        for (int j = 0; j < stages && next + static_cast<std::size_t>(j) < forecast; ++j)
-            ask_stage(stages - 1 - j, soon_[next + static_cast<std::size_t>(j)]);
+        for (std::size_t s = 0; s < stages; ++s)
+            if (const std::size_t j = next + stride * (stages - 1 - s); j < forecast) ask_stage(static_cast<int>(s), soon_[j]);
         if (!cross(i, dt)) step_slow(i, dt);
     }
 }
@@ -384,7 +389,7 @@ bool TimelineStore::cross(std::size_t i, double dt) {
 
 void TimelineStore::step_slow(std::size_t i, double dt) {
     const std::uint32_t slot = roots_[i].slot;
-    TimelineRec& r = *recs_[slot];
+    TimelineRec& r = *roots_[i].rec;  // recs_[slot]
     flush(r, true);
     if (!r.alive || r.paused || r.parent != UINT32_MAX) {
         set_mode(static_cast<std::uint32_t>(i), root_idle);  // until a command on it
@@ -405,7 +410,7 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     RootEntry& e = roots_[i];
     l.bits = root_slow;
     due_[i] = -HUGE_VAL;
-    const TimelineRec& r = *recs_[e.slot];
+    const TimelineRec& r = *e.rec;  // recs_[e.slot], without a miss on recs_
     if (!r.alive || r.parent != UINT32_MAX || r.paused || r.dirty || r.nested > 0 || r.on_update || r.active.size() > 1 ||
         !(r.duration > 0.0))
         return;
