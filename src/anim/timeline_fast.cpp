@@ -286,11 +286,17 @@ GRAPE_FLATTEN std::size_t TimelineStore::fast_run(std::size_t i, std::size_t n, 
 void TimelineStore::tick(double dt) {
     const std::size_t n = lines_.size();  // timelines created by handlers start next tick
     clock_ += dt;
-    // The forecast: the entries whose fast case ends on this tick (capacity reserved at creation).
-    soon_.clear();
-    for (std::size_t i = 0; i < n; ++i)
-        if (!(clock_ <= due_[i])) soon_.push_back(static_cast<std::uint32_t>(i));
-    const std::size_t forecast = soon_.size();
+    // The forecast: the entries whose fast case ends on this tick, without a branch per entry
+    // (a few in a hundred are taken). Capacity reserved at creation: no allocation here.
+    soon_.resize(n);
+    std::size_t forecast = 0;
+    const double now = clock_;
+    const double* const due = due_.data();
+    std::uint32_t* const soon = soon_.data();
+    for (std::size_t i = 0; i < n; ++i) {
+        soon[forecast] = static_cast<std::uint32_t>(i);
+        forecast += !(now <= due[i]);
+    }
     // The first hand-overs: the steps they would have had.
     for (std::size_t s = 0; s < stages; ++s)
         for (std::size_t j = 0; j < forecast && j < stride * (stages - s); ++j) ask_stage(static_cast<int>(s), soon_[j]);
