@@ -32,7 +32,9 @@ namespace {
 
 constexpr double margin = 1e-7;  // plays; ≫ play_snap + the rounding of plays below 1e7
 constexpr double most_plays = 1e7;  // (play + 1) · cycle below this: rounding ≤ 2e-9 plays
-constexpr std::size_t ahead = 8;    // entries: ~ a memory latency of fast updates
+// The active children's targets lie anywhere (no stride a prefetcher could follow): asked for
+// `ahead` entries early, ~250 ns of fast updates, longer than a memory latency.
+constexpr std::size_t ahead = 48;
 // A hand-over's records are asked for in `stages` steps, `stride` hand-overs apart: neighbouring
 // timelines often hand over on the same tick, one right after the other, and one hand-over's
 // time is shorter than a memory latency.
@@ -167,8 +169,8 @@ void TimelineStore::touch(std::uint32_t animation_slot, bool leave) noexcept {
 // hot and cold records, then the next child's. Without them a hand-over waits on about
 // eight misses in turn. The tick asks for them in `stages` steps as it meets hand-overs:
 // step s for the hand-over `stride · (stages − 1 − s)` ahead, so each step reads what the one
-// before brought in. Every read is bounds-checked against the current vectors: a handler may have changed
-// them since the forecast.
+// before brought in. Every read is bounds-checked against the current vectors: a handler may
+// have changed them since the forecast.
 void TimelineStore::ask_stage(int stage, std::uint32_t root) const noexcept {
     if (root >= roots_.size()) return;
     const RootEntry& e = roots_[root];
