@@ -40,8 +40,9 @@ const grape::LinearPath unit_line({0, 0}, {1, 0});  // x is the progress u
 const grape::CubicBezierPath swoop({0, 0}, {40, 90}, {-30, 60}, {100, 10});
 const grape::CubicBezierPath swoop_by_length({0, 0}, {40, 90}, {-30, 60}, {100, 10}, true);
 
-// Two engines built and commanded alike; before every tick the slow one's timelines get a
-// command, which takes a timeline off the fast case.
+// Two engines built and commanded alike. The slow one's timelines have an on_update handler
+// (it does nothing), which keeps them on the general update: off the fast case and off the
+// hand-over's short path; before every tick they also get a command.
 struct Twins {
     Engine fast, slow;
     std::vector<Timeline> fast_lines, slow_lines;
@@ -50,6 +51,7 @@ struct Twins {
     void create(const TimelineDef& def) {
         fast_lines.push_back(fast.create_timeline(def));
         slow_lines.push_back(slow.create_timeline(def));
+        slow_lines.back().on_update([] {});
     }
     // A child placed alike in the timelines made last.
     void add(const Animation& fa, const Animation& sa, const std::string& at) {
@@ -232,6 +234,61 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
                     ASSERT_EQ(w.fast_children[k].repetition(), w.slow_children[k].repetition());
                 }
             ASSERT_EQ(completions_fast, completions_slow);
+        }
+    }
+}
+
+// Children that last whole ticks (k/60 s, ticked at 1/60 s): every hand-over lands on a
+// child's end or within rounding of it, just before (the child within 1e-7 plays of its end)
+// or just past (the next within 1e-7 plays of its start), where the fast case does not
+// hold; the short path takes those steps, and must give the general update's bits. Some
+// timelines loop, some share one target, some are reversed, paused or sought now and then,
+// and every few ticks a tick of another length moves the phase of the ticks.
+TEST(TimelineScale, TickAlignedHandOversGiveTheBitsOfTheGeneralUpdate) {
+    for (std::uint64_t seed = 1200; seed < 1230; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> unit(0, 1);
+        Twins w;
+        std::vector<Point> fast_points(64), slow_points(64);
+        std::size_t next = 0;
+        for (int t = 0; t < 6; ++t) {
+            w.create({.repeat = rng() % 2 == 0 ? -1 : static_cast<int>(rng() % 3)});
+            const int count = 2 + static_cast<int>(rng() % 6);
+            const bool shared = rng() % 2 == 0;
+            const std::size_t first = next;
+            for (int k = 0; k < count; ++k) {
+                const double duration = static_cast<double>(1 + rng() % 40) / 60.0;  // whole ticks
+                const AnimationDef child{.curve = rng() % 2 == 0 ? grape::Curve::quad_in_out() : grape::Curve::linear()};
+                const std::size_t target = shared ? first : next;
+                const grape::Path& path = rng() % 3 == 0 ? static_cast<const grape::Path&>(swoop) : unit_line;
+                Animation fa = w.fast.create_2d_animation(fast_points[target], path, duration, child);
+                Animation sa = w.slow.create_2d_animation(slow_points[target], path, duration, child);
+                ++next;
+                w.add(fa, sa, ">");
+            }
+        }
+        for (int step = 0; step < 500; ++step) {
+            const auto event = rng() % 150;
+            const double dt = event < 3 ? 1.0 / 120.0 : event < 5 ? 1.0 / 30.0 : 1.0 / 60.0;
+            const std::size_t which = rng() % w.fast_lines.size();
+            if (event == 7) {
+                const double at = static_cast<double>(rng() % 120) / 60.0;  // a whole tick
+                w.on_line(which, [at](const Timeline& t) { t.seek(at); });
+            } else if (event >= 10 && event < 14) {
+                constexpr std::uint64_t commands[] = {0, 1, 3, 4};  // reverse, play, pause, resume
+                w.command(commands[event - 10], which, 0);
+            }
+            w.tick(dt);
+            for (std::size_t k = 0; k < next; ++k) {
+                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
+                ASSERT_EQ(fast_points[k].y, slow_points[k].y) << "seed " << seed << " step " << step << " child " << k;
+            }
+            for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
+            if (step % 5 == 0)
+                for (std::size_t k = 0; k < w.fast_children.size(); ++k) {
+                    ASSERT_EQ(w.fast_children[k].progress(), w.slow_children[k].progress()) << "seed " << seed << " step " << step;
+                    ASSERT_EQ(w.fast_children[k].time(), w.slow_children[k].time());
+                }
         }
     }
 }

@@ -316,12 +316,17 @@ void TimelineStore::tick(double dt) {
 // A sequence's child hands over to the next: the general update's sweep across the active
 // child's end and the next child's start, for plain animations that nobody listens to, in a
 // play without callbacks, forward. The same reads, writes and window changes as advance()
-// and sweep() in that case, without their machinery for handlers (none can run here).
+// and sweep() in that case, without their machinery for handlers (none can run here). Also
+// the step that crosses nothing, for a timeline the fast case refused or left within
+// `margin` of a child's start or end: a tick that lands on a child's end (a duration in
+// whole ticks) lands there, or just past it, by rounding.
 bool TimelineStore::cross(std::size_t i, double dt) {
     const RootMode m = mode(static_cast<std::uint32_t>(i));
-    if (m != root_one && m != root_empty) return false;
+    if (m == root_idle) return false;
     TimelineRec& r = *roots_[i].rec;
-    if (!r.alive || r.paused || r.parent != UINT32_MAX || !r.callbacks.empty() || r.dirty || r.on_update || r.nested > 0 || roots_[i].backward || r.active.size() > 1)
+    // (a slow entry's RootEntry is stale; a backward play fails the local-time test below)
+    if (!r.alive || r.paused || r.parent != UINT32_MAX || !r.callbacks.empty() || r.dirty || r.on_update || r.nested > 0 ||
+        (m != root_slow && roots_[i].backward) || r.active.size() > 1)
         return false;
     flush(r, false);
     const double elapsed = r.elapsed + dt;
@@ -347,15 +352,16 @@ bool TimelineStore::cross(std::size_t i, double dt) {
             begun = static_cast<std::uint32_t>(started++);
         }
     }
-    if (ended == UINT32_MAX && begun == UINT32_MAX) return false;
-    if (ended == UINT32_MAX && !r.active.empty()) return false;
+    if (begun != UINT32_MAX && ended == UINT32_MAX && !r.active.empty()) return false;  // two active
     auto plain = [&](std::uint32_t k) {
         const TimelineChild& c = r.children[k];
         if (c.is_timeline) return false;
         const Hot* h = engine_.find(c.slot, c.generation);
         return h && !(h->flags & (flag_dead | flag_custom | flag_listens));
     };
-    if ((ended != UINT32_MAX && !plain(ended)) || (begun != UINT32_MAX && !plain(begun))) return false;
+    if ((ended != UINT32_MAX && !plain(ended)) || (begun != UINT32_MAX && !plain(begun)) ||
+        (!r.active.empty() && !plain(r.active[0])))
+        return false;
     // drive_animation without events: the child at `local`, unless it stands there already.
     auto drive_plain = [&](std::uint32_t k, double local) {
         TimelineChild& c = r.children[k];
