@@ -9,6 +9,7 @@
 //                   per tick, which should not grow with K
 //   create_destroy  create a timeline of 10 fresh animations and kill it: ns each
 //   timelines_shared/N  the same, with a timeline's 10 children moving one target
+//   timelines_aligned/N the shared workload with durations in whole ticks (hand-overs on ticks)
 //   free_floor/N, timelines_floor/N, timelines_shared_floor/N
 //                   the memory traffic each workload cannot avoid, per live update
 // Reports ns per live update (the children the tick moves) and per animation held, the
@@ -102,7 +103,10 @@ void BM_free(benchmark::State& state) {
 
 // shared: the 10 children of a timeline move one target (a sequence of moves of one object),
 // so the live updates write N/10 targets side by side, as free animations write theirs.
-void timelines_bench(benchmark::State& state, bool shared) {
+// aligned (with shared): the children last whole ticks (60 to 180 of them, 1–3 s as above),
+// as durations of 0.5 s or 30 frames do at 60 Hz: every hand-over lands on a tick, or
+// within rounding of one.
+void timelines_bench(benchmark::State& state, bool shared, bool aligned = false) {
     const auto n = static_cast<std::size_t>(state.range(0));
     std::vector<grape::scenes::BenchTarget> targets(shared ? n / 10 : n);
     auto engine = std::make_unique<grape::Engine>();
@@ -112,11 +116,14 @@ void timelines_bench(benchmark::State& state, bool shared) {
         grape::Timeline tl = engine->create_timeline({.repeat = -1});
         for (std::size_t k = 0; k < 10; ++k) {
             const std::size_t i = t * 10 + k;
-            tl.add(engine->create_2d_animation(targets[shared ? t : i], paths[i % paths.size()], grape::scenes::bench_duration(i), def));
+            const double duration =
+                aligned ? static_cast<double>(60 + (i * 7) % 121) * frame : grape::scenes::bench_duration(i);
+            tl.add(engine->create_2d_animation(targets[shared ? t : i], paths[i % paths.size()], duration, def));
         }
     }
     engine->tick(frame);
-    run(state, (shared ? "timelines_shared/" : "timelines/") + std::to_string(n), static_cast<double>(n / 10), [&] {
+    const std::string name = aligned ? "timelines_aligned/" : shared ? "timelines_shared/" : "timelines/";
+    run(state, name + std::to_string(n), static_cast<double>(n / 10), [&] {
         engine->tick(frame);
         benchmark::ClobberMemory();
     });
@@ -177,6 +184,7 @@ void timelines_floor(benchmark::State& state, bool shared) {
 
 void BM_timelines(benchmark::State& state) { timelines_bench(state, false); }
 void BM_timelines_shared(benchmark::State& state) { timelines_bench(state, true); }
+void BM_timelines_aligned(benchmark::State& state) { timelines_bench(state, true, true); }
 void BM_timelines_floor(benchmark::State& state) { timelines_floor(state, false); }
 void BM_timelines_shared_floor(benchmark::State& state) { timelines_floor(state, true); }
 
@@ -224,6 +232,7 @@ BENCHMARK(BM_free_floor)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_timelines_floor)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_timelines_shared)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_timelines_shared_floor)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_timelines_aligned)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_one_active)->Arg(10)->Arg(100000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_create_destroy)->Unit(benchmark::kMicrosecond);
 
@@ -253,6 +262,9 @@ int main(int argc, char** argv) {
     const double sh_ns = median("timelines_shared/1000000"), sh_floor = median("timelines_shared_floor/1000000");
     std::printf("shared targets: timelines %.2f ns per live update (%.2fx free), floor %.2f (%.2fx free's); %.2fx their floor\n",
                 sh_ns, of(sh_ns, free_ns), sh_floor, of(sh_floor, free_floor), of(sh_ns, sh_floor));
+    const double al_ns = median("timelines_aligned/1000000");
+    std::printf("shared targets, durations in whole ticks: timelines %.2f ns per live update (%.2fx free, %.2fx shared)\n",
+                al_ns, of(al_ns, free_ns), of(al_ns, sh_ns));
     std::printf("one active of 10, ns per tick:                 %8.1f\n", median("one_active/10"));
     std::printf("one active of 100000, ns per tick:             %8.1f  (%.2fx of 10)\n", median("one_active/100000"),
                 median("one_active/10") > 0 ? median("one_active/100000") / median("one_active/10") : 0.0);
