@@ -97,6 +97,18 @@ struct Twins {
     }
 };
 
+// After a tick: the first `count` targets of the twins written alike, and every timeline at
+// the same time.
+void expect_agree(const Twins& w, const std::vector<Point>& fast_points, const std::vector<Point>& slow_points,
+                  std::size_t count, std::uint64_t seed, int step) {
+    for (std::size_t k = 0; k < count; ++k) {
+        ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
+        ASSERT_EQ(fast_points[k].y, slow_points[k].y) << "seed " << seed << " step " << step << " child " << k;
+    }
+    for (std::size_t k = 0; k < w.fast_lines.size(); ++k)
+        ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time()) << "seed " << seed << " step " << step << " timeline " << k;
+}
+
 }  // namespace
 
 // The tick's fast case (one animation or none active, no point crossed, no handler) and the
@@ -145,11 +157,7 @@ TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
             const std::size_t child = rng() % w.fast_children.size();
             if (!w.command(event, which, child) && event < 40) w.churn(event, true);
             w.tick(dt);
-            for (std::size_t k = 0; k < next; ++k) {
-                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
-                ASSERT_EQ(fast_points[k].y, slow_points[k].y);
-            }
-            for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
+            ASSERT_NO_FATAL_FAILURE(expect_agree(w, fast_points, slow_points, next, seed, step));
             for (std::size_t k = 0; k < w.fast_children.size(); ++k)
                 ASSERT_EQ(w.fast_children[k].progress(), w.slow_children[k].progress());
         }
@@ -247,7 +255,6 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
 TEST(TimelineScale, TickAlignedHandOversGiveTheBitsOfTheGeneralUpdate) {
     for (std::uint64_t seed = 1200; seed < 1230; ++seed) {
         std::mt19937_64 rng(seed);
-        std::uniform_real_distribution<double> unit(0, 1);
         Twins w;
         std::vector<Point> fast_points(64), slow_points(64);
         std::size_t next = 0;
@@ -279,11 +286,7 @@ TEST(TimelineScale, TickAlignedHandOversGiveTheBitsOfTheGeneralUpdate) {
                 w.command(commands[event - 10], which, 0);
             }
             w.tick(dt);
-            for (std::size_t k = 0; k < next; ++k) {
-                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
-                ASSERT_EQ(fast_points[k].y, slow_points[k].y) << "seed " << seed << " step " << step << " child " << k;
-            }
-            for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
+            ASSERT_NO_FATAL_FAILURE(expect_agree(w, fast_points, slow_points, next, seed, step));
             if (step % 5 == 0)
                 for (std::size_t k = 0; k < w.fast_children.size(); ++k) {
                     ASSERT_EQ(w.fast_children[k].progress(), w.slow_children[k].progress()) << "seed " << seed << " step " << step;
