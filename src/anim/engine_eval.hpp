@@ -21,24 +21,34 @@ inline double EngineImpl::ease(CurveKind kind, std::uint16_t curve, double x) co
 }
 
 // The kernel's formulas on copied coefficients (Path::point bit for bit for cubics, to rounding
-// for lines), the arc-length table's points for reparametrized ones.
-inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
-    if (u >= 0.0 && u <= 1.0) {
-        const KernelKind kind = path_kind_[path];
-        if (kind == KernelKind::linear) {  // from the dense table of lines
-            const LineFast& l = line_fast_[path];
-            return l.c[0] + l.c[1] * u;
-        }
-        const PathFast& f = path_fast_[path];
-        switch (kind) {
-            case KernelKind::cubic: return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
-            case KernelKind::reparam_cubic:
-            case KernelKind::reparam_linear:  // the ends exact, as Path::point has them
-                return u >= 1.0 ? f.c[1] : u <= 0.0 ? f.c[0] : ArcLengthTable::evaluate(f.table, f.steps, u);
-            case KernelKind::linear:  // taken above
-            case KernelKind::generic: break;
-        }
+// for lines), the arc-length table's points for reparametrized ones, from the engine's tables
+// (passed in, so that a hot loop may hold them in locals): false for the other kinds and
+// outside [0, 1], which EngineImpl::point takes to the path itself.
+inline bool kernel_point(const KernelKind* kinds, const LineFast* lines, const PathFast* fast, std::uint32_t path,
+                         double u, Vec2& p) noexcept {
+    if (!(u >= 0.0 && u <= 1.0)) return false;
+    const KernelKind kind = kinds[path];
+    if (kind == KernelKind::linear) {  // from the dense table of lines
+        const LineFast& l = lines[path];
+        p = l.c[0] + l.c[1] * u;
+        return true;
     }
+    const PathFast& f = fast[path];
+    switch (kind) {
+        case KernelKind::cubic: p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0]; return true;
+        case KernelKind::reparam_cubic:
+        case KernelKind::reparam_linear:  // the ends exact, as Path::point has them
+            p = u >= 1.0 ? f.c[1] : u <= 0.0 ? f.c[0] : ArcLengthTable::evaluate(f.table, f.steps, u);
+            return true;
+        case KernelKind::linear:  // taken above
+        case KernelKind::generic: break;
+    }
+    return false;
+}
+
+inline Vec2 EngineImpl::point(std::uint32_t path, double u) const noexcept {
+    Vec2 p;
+    if (kernel_point(path_kind_.data(), line_fast_.data(), path_fast_.data(), path, u, p)) return p;
     return paths_[path].path.point(u);  // other kinds, and outside [0, 1] along the end tangents
 }
 

@@ -266,17 +266,8 @@ GRAPE_FLATTEN std::size_t TimelineStore::fast_run(std::size_t i, std::size_t n, 
             const std::size_t j = i + index[c];
             const RootLine& l = lines[j];
             const double u = (l.bits & root_lean) ? detail::ease_formula(l.kind, xs[c]) : engine_.ease(l.kind, roots[j].curve, xs[c]);
-            Vec2 p;  // EngineImpl::point, its lines and cubics from the locals
-            const KernelKind kind = kinds[l.path];
-            if (kind == KernelKind::linear && u >= 0.0 && u <= 1.0) {
-                const LineFast& f = line_fast[l.path];
-                p = f.c[0] + f.c[1] * u;
-            } else if (kind == KernelKind::cubic && u >= 0.0 && u <= 1.0) {
-                const PathFast& f = path_fast[l.path];
-                p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
-            } else {
-                p = engine_.point(l.path, u);
-            }
+            Vec2 p;  // EngineImpl::point on the locals
+            if (!kernel_point(kinds, line_fast, path_fast, l.path, u, p)) p = engine_.point(l.path, u);
             write_line(l, p);
         }
         i += k;
