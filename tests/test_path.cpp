@@ -12,14 +12,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <new>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "count_allocations.hpp"
 
@@ -511,6 +514,70 @@ TEST(ArcLengthTable, MatchesThePathWithin2e10OfItsLength) {
     }
     EXPECT_GE(built, 290);  // all but cubics that (nearly) stop somewhere
     EXPECT_LE(most_steps, 4096.0);
+}
+
+// The storage order (slot) against the polynomial it stands for: a piece whose only
+// coefficients are x^i's, (1, 2), gives (x^i, 2·x^i) exactly at x = ±½ and ±1 (powers of two:
+// every product exact, every other term an exact zero), in both evaluations.
+TEST(ArcLengthTable, EachSlotHoldsItsPowerOfX) {
+    using grape::detail::ArcLengthTable;
+    alignas(64) double c[ArcLengthTable::stride];
+    for (int i = 0; i <= ArcLengthTable::degree; ++i) {
+        std::fill(std::begin(c), std::end(c), 0.0);
+        c[ArcLengthTable::slot(i)] = 1.0;
+        c[ArcLengthTable::slot(i) + 1] = 2.0;
+        for (const double x : {0.5, -0.5, 1.0, -1.0}) {
+            const double power = std::pow(x, i);
+            EXPECT_EQ(ArcLengthTable::evaluate_piece(c, x), (Vec2{power, 2.0 * power})) << i << " " << x;
+#if GRAPE_WIDE
+            if (grape::detail::wide_lanes()) {
+                EXPECT_EQ(ArcLengthTable::evaluate_piece_wide(c, x), (Vec2{power, 2.0 * power})) << i << " " << x;
+            }
+#endif
+        }
+    }
+    std::vector<std::size_t> slots;  // every word of a piece belongs to one coefficient
+    for (int i = 0; i <= ArcLengthTable::degree; ++i) slots.push_back(ArcLengthTable::slot(i) / 2);
+    std::sort(slots.begin(), slots.end());
+    for (std::size_t k = 0; k < slots.size(); ++k) EXPECT_EQ(slots[k], k);
+}
+
+// The four-lane evaluation the tick uses where the processor has AVX2 does the two-lane one's
+// operations on the same values (no fused multiply-adds), so the bits agree: on fitted tables
+// and on random coefficients of every size, at random x in [−1, 1] and at its ends.
+TEST(ArcLengthTable, FourLanesGiveTheBitsOfTwo) {
+#if GRAPE_WIDE
+    using grape::detail::ArcLengthTable;
+    if (!grape::detail::wide_lanes()) GTEST_SKIP() << "no AVX2 here";
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), exponent(-30.0, 30.0);
+    alignas(64) double c[ArcLengthTable::stride];
+    int compared = 0;
+    for (int n = 0; n < 2000; ++n) {
+        for (double& w : c) w = unit(rng) * std::exp2(exponent(rng));
+        for (int k = 0; k < 50; ++k) {
+            const double x = k == 0 ? -1.0 : k == 1 ? 1.0 : unit(rng);
+            const Vec2 two = ArcLengthTable::evaluate_piece(c, x), four = ArcLengthTable::evaluate_piece_wide(c, x);
+            EXPECT_EQ(std::memcmp(&two, &four, sizeof two), 0) << n << " " << x;
+            ++compared;
+        }
+    }
+    const auto table = ArcLengthTable::build(Path(grape::CubicBezierPath({0, 0}, {0, 300}, {400, -200}, {500, 90}, true)));
+    ASSERT_TRUE(table);
+    const auto values = table->values();
+    for (std::size_t piece = 0; piece < values.size(); piece += ArcLengthTable::stride) {
+        for (int k = 0; k < 200; ++k) {
+            const double x = unit(rng);
+            const Vec2 two = ArcLengthTable::evaluate_piece(values.data() + piece, x);
+            const Vec2 four = ArcLengthTable::evaluate_piece_wide(values.data() + piece, x);
+            EXPECT_EQ(std::memcmp(&two, &four, sizeof two), 0) << piece << " " << x;
+            ++compared;
+        }
+    }
+    EXPECT_GE(compared, 100000);
+#else
+    GTEST_SKIP() << "no four-lane evaluation on this target";
+#endif
 }
 
 TEST(Reparametrized, CubicAArcLengthPointsAndFlag) {

@@ -42,7 +42,7 @@ void fit_piece(F&& point_of_u, double u0, double du, double* out) {
         for (int m = 0; m <= n; ++m) {
             for (int i = 0; i <= n; ++i) b[i] += a[m] * tm[m][i];
         }
-        for (int i = 0; i <= n; ++i) out[2 * i + d] = b[i];
+        for (int i = 0; i <= n; ++i) out[ArcLengthTable::slot(i) + d] = b[i];
     }
 }
 
@@ -51,6 +51,15 @@ void fit_piece(F&& point_of_u, double u0, double du, double* out) {
 // Doubles K until every piece's polynomials land within 1e-10·length of the path's own
 // point at 23 places inside it (12 evenly spaced, and the 11 between the Lobatto points,
 // where an interpolant's error peaks); gives up past 4096 pieces.
+bool wide_lanes() noexcept {
+#if GRAPE_WIDE
+    static const bool wide = __builtin_cpu_supports("avx2");
+    return wide;
+#else
+    return false;
+#endif
+}
+
 std::optional<ArcLengthTable> ArcLengthTable::build(const Path& reparametrized) {
     const PathNode& node = NodeAccess::node(reparametrized);
     if (node.kind() != PathKind::reparametrized) return std::nullopt;

@@ -16,6 +16,14 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+// Four-lane (AVX2) loops chosen at run time: x86-64 compilers that take per-function targets.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define GRAPE_WIDE 1
+#define GRAPE_AVX2 __attribute__((target("avx2")))
+#include <immintrin.h>
+#else
+#define GRAPE_WIDE 0
+#endif
 #include <new>
 #include <optional>
 #include <span>
@@ -31,6 +39,11 @@ namespace grape::detail {
 /// the cubic); a typical cubic needs 8 pieces (1.5 KB). Doubles throughout: floats for the
 /// small high-order coefficients would halve the bytes, but their conversions cost more of
 /// the tick than the third line's traffic does (the tick prefetches the lines).
+///
+/// Each line holds the pairs of x^4k, x^4k+2, x^4k+1, x^4k+3 in that order (`slot`), so that
+/// a four-lane machine forms two of Estrin's first terms with one multiply and one add
+/// (evaluate_piece_wide): the arithmetic, not the table's traffic, is what an arc-length
+/// update costs beyond a plain cubic's.
 class ArcLengthTable {
 public:
     static constexpr int degree = 11;                 ///< of each piece's polynomials
@@ -55,8 +68,13 @@ public:
     Vec2 start() const noexcept { return start_; }
     Vec2 end() const noexcept { return end_; }
     /// The pieces' storage, piece after piece (24·K words, 64-byte aligned: a piece is three
-    /// cache lines): the (x, y) coefficients of x⁰, x¹, … x¹¹.
+    /// cache lines): the (x, y) coefficients of x⁰, x¹, … x¹¹, those of x^i at slot(i).
     std::span<const double> values() const noexcept { return {values_.data(), values_.size()}; }
+    /// Where the (x, y) pair of x^i's coefficients starts within a piece (see the class).
+    static constexpr std::size_t slot(int i) noexcept {
+        constexpr std::size_t within[4] = {0, 4, 2, 6};
+        return 8 * static_cast<std::size_t>(i / 4) + within[i % 4];
+    }
 
     /// point on a table's raw storage (for callers that keep a pointer in a hot record), u
     /// strictly inside (0, 1). K is a power of two, so u·K is exact and u < 1 never reads
@@ -91,7 +109,9 @@ public:
         const double x2 = x * x, x4 = x2 * x2;
 #if defined(__SSE2__)
         const __m128d vx = _mm_set1_pd(x), vx2 = _mm_set1_pd(x2), vx4 = _mm_set1_pd(x4);
-        auto q = [c, vx](int i) { return _mm_add_pd(_mm_load_pd(c + 4 * i), _mm_mul_pd(_mm_load_pd(c + 4 * i + 2), vx)); };
+        auto q = [c, vx](int i) {
+            return _mm_add_pd(_mm_load_pd(c + slot(2 * i)), _mm_mul_pd(_mm_load_pd(c + slot(2 * i + 1)), vx));
+        };
         const __m128d r0 = _mm_add_pd(q(0), _mm_mul_pd(q(1), vx2));
         const __m128d r1 = _mm_add_pd(q(2), _mm_mul_pd(q(3), vx2));
         const __m128d r2 = _mm_add_pd(q(4), _mm_mul_pd(q(5), vx2));
@@ -100,20 +120,43 @@ public:
 #else
         double out[2];
         for (int d = 0; d < 2; ++d) {
-            auto q = [c, d, x](int i) { return c[4 * i + d] + c[4 * i + 2 + d] * x; };
+            auto q = [c, d, x](int i) { return c[slot(2 * i) + d] + c[slot(2 * i + 1) + d] * x; };
             const double r0 = q(0) + q(1) * x2, r1 = q(2) + q(3) * x2, r2 = q(4) + q(5) * x2;
             out[d] = r0 + (r1 + r2 * x4) * x4;
         }
         return {out[0], out[1]};
 #endif
     }
-
+#if GRAPE_WIDE
+    /// evaluate_piece in four lanes (AVX2, without fused multiply-adds): the same operations on
+    /// the same values, so the same bits, in 7 multiplies and 7 adds instead of 11 and 11.
+    /// Only where wide_lanes() says so.
+    GRAPE_AVX2 static Vec2 evaluate_piece_wide(const double* c, double x) noexcept {
+        const __m256d vx = _mm256_set1_pd(x), vx2 = _mm256_mul_pd(vx, vx);  // x² in every lane: x * x
+        const __m128d vx4 = _mm_mul_pd(_mm256_castpd256_pd128(vx2), _mm256_castpd256_pd128(vx2));
+        const __m256d q01 = _mm256_add_pd(_mm256_load_pd(c), _mm256_mul_pd(_mm256_load_pd(c + 4), vx));
+        const __m256d q23 = _mm256_add_pd(_mm256_load_pd(c + 8), _mm256_mul_pd(_mm256_load_pd(c + 12), vx));
+        const __m256d q45 = _mm256_add_pd(_mm256_load_pd(c + 16), _mm256_mul_pd(_mm256_load_pd(c + 20), vx));
+        const __m256d even = _mm256_permute2f128_pd(q01, q23, 0x20);  // q0, q2
+        const __m256d odd = _mm256_permute2f128_pd(q01, q23, 0x31);   // q1, q3
+        const __m256d r01 = _mm256_add_pd(even, _mm256_mul_pd(odd, vx2));
+        const __m128d r2 = _mm_add_pd(_mm256_castpd256_pd128(q45),
+                                      _mm_mul_pd(_mm256_extractf128_pd(q45, 1), _mm256_castpd256_pd128(vx2)));
+        const __m128d r0 = _mm256_castpd256_pd128(r01), r1 = _mm256_extractf128_pd(r01, 1);
+        const __m128d p = _mm_add_pd(r0, _mm_mul_pd(_mm_add_pd(r1, _mm_mul_pd(r2, vx4)), vx4));
+        return {_mm_cvtsd_f64(p), _mm_cvtsd_f64(_mm_unpackhi_pd(p, p))};
+    }
+#endif
 private:
     // Cache-line aligned storage, so that no piece straddles two lines.
     std::vector<double, LineAllocator<double>> values_;
     double steps_ = 0.0;
     Vec2 start_, end_;
 };
+
+/// Whether this processor runs the four-lane (AVX2) loops: evaluate_piece_wide and the
+/// tick's (checked once).
+bool wide_lanes() noexcept;
 
 /// How a kernel evaluates inside [0, 1].
 enum class KernelKind : std::uint8_t {
