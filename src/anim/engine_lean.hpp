@@ -20,6 +20,7 @@ struct LeanTables {
     const PathFast* fast;
     const ArcFast* arc;
     const Cold* cold;        // per record
+    bool wide;               // wide_lanes()
 };
 
 // A play ends for about one record in a hundred per tick, and the general update then reads
@@ -122,79 +123,5 @@ GRAPE_FLATTEN std::size_t lean_run(Hot* hot, const LeanTables& t, std::size_t i,
 }
 
 inline bool is_arc(KernelKind p) noexcept { return p == KernelKind::reparam_cubic || p == KernelKind::reparam_linear; }
-
-// The same on arc-length paths, strictly inside them (the ends are Path::point's exact end
-// points, which plain_write gives), in batches of 32 as plain_run has them: every record of
-// a batch is advanced and its table piece found and asked for before any is written, so
-// that the misses on shared tables overlap. The piece comes from ArcLengthTable's piece_at
-// and evaluate_piece, as in plain_piece.
-template <CurveKind K, bool F>
-GRAPE_FLATTEN std::size_t lean_arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
-    static_assert(!has_parameters(K));
-    constexpr std::uint16_t want = static_cast<std::uint16_t>(static_cast<unsigned>(K) | (F ? flag_float << 8 : 0));
-    constexpr std::size_t batch = 32;
-    const KernelKind* const kinds = t.kind;
-    const ArcFast* const arcs = t.arc;
-    ArcLengthTable::Piece piece[batch];
-    while (i < n) {
-        const std::size_t m = std::min(batch, n - i);
-        std::size_t k = 0;
-        for (; k < m; ++k) {
-            ask_hot_ahead(hot, i + k, n);
-            ask_cold_ahead(hot, t.cold, i + k, n, dt);
-            Hot& h = hot[i + k];
-            const double phase = h.phase + dt * h.rate;
-            if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) ||
-                !h.target || !is_arc(kinds[h.path]))
-                break;
-            const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
-            if (!(u > 0.0 && u < 1.0)) break;
-            h.phase = phase;
-            const ArcFast& f = arcs[h.path];
-            piece[k] = ArcLengthTable::piece_at(f.table, f.steps, u);
-            ArcLengthTable::prefetch_piece(piece[k].c);
-        }
-        for (std::size_t j = 0; j < k; ++j) {
-            const Hot& h = hot[i + j];
-            write_pair<std::conditional_t<F, float, double>>(h.target, h.y_offset,
-                                                             ArcLengthTable::evaluate_piece(piece[j].c, piece[j].x));
-        }
-        i += k;
-        if (k < m) break;
-    }
-    return i;
-}
-
-using LeanRun = std::size_t (*)(Hot*, const LeanTables&, std::size_t, std::size_t, double) noexcept;
-
-// The lean runs for every formula kind, path kernel and target type: [kind][line, cubic,
-// arc length][double, float]; null for the kinds with parameters.
-template <std::size_t... k>
-constexpr auto lean_table(std::index_sequence<k...>) noexcept {
-    constexpr auto row = [](auto kind) {
-        constexpr auto K = static_cast<CurveKind>(decltype(kind)::value);
-        using Row = std::array<std::array<LeanRun, 2>, 3>;
-        if constexpr (has_parameters(K)) return Row{};
-        else
-            return Row{{{&lean_run<K, KernelKind::linear, false>, &lean_run<K, KernelKind::linear, true>},
-                        {&lean_run<K, KernelKind::cubic, false>, &lean_run<K, KernelKind::cubic, true>},
-                        {&lean_arc_run<K, false>, &lean_arc_run<K, true>}}};
-    };
-    return std::array{row(std::integral_constant<std::size_t, k>{})...};
-}
-inline constexpr std::size_t lean_kinds = static_cast<std::size_t>(CurveKind::bounce_out_in) + 1;
-inline constexpr auto lean_runs = lean_table(std::make_index_sequence<lean_kinds>{});
-
-// The lean run that record i would start, or null.
-inline LeanRun lean_for(const Hot& h, const LeanTables& t) noexcept {
-    const auto kind = static_cast<std::size_t>(h.kind);
-    if (kind >= lean_kinds) return nullptr;
-    const KernelKind p = t.kind[h.path];
-    const std::size_t type = (h.flags & flag_float) ? 1 : 0;
-    if (p == KernelKind::linear) return lean_runs[kind][0][type];
-    if (p == KernelKind::cubic) return lean_runs[kind][1][type];
-    if (is_arc(p)) return lean_runs[kind][2][type];
-    return nullptr;
-}
 
 }  // namespace grape::detail

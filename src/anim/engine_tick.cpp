@@ -10,7 +10,7 @@
 #include <string>
 
 #include "engine_eval.hpp"
-#include "engine_lean.hpp"
+#include "engine_lean_table.hpp"
 #include "timeline_impl.hpp"
 
 namespace grape::detail {
@@ -155,7 +155,7 @@ GRAPE_FLATTEN std::size_t EngineImpl::plain_run(std::size_t i, std::size_t n, do
     Hot* const hot = hot_.data();
     Cold* const cold = cold_.data();
     const PathFast* const fast = path_fast_.data();
-    const LeanTables tables{path_kind_.data(), line_fast_.data(), fast, arc_fast_.data(), cold};
+    const LeanTables tables{path_kind_.data(), line_fast_.data(), fast, arc_fast_.data(), cold, wide_lanes()};
     constexpr std::size_t batch = 32;
     double u[batch];
     ArcLengthTable::Piece piece[batch];

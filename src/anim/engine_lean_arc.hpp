@@ -1,0 +1,97 @@
+// The lean runs on arc-length paths: batches whose records are all advanced, their table
+// pieces found and asked for, before any point is written.
+#pragma once
+
+#include "engine_lean.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+namespace grape::detail {
+
+// One record of an arc-length run's batch: advanced, its table piece found and asked for;
+// false (nothing changed) when it does not belong to the run. Far: the records `hot_ahead`
+// on exist, so the look-ahead needs no bound test.
+template <CurveKind K, bool F, bool Far>
+inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::size_t i, std::size_t n, double dt,
+                        ArcLengthTable::Piece& piece) noexcept {
+    constexpr std::uint16_t want = static_cast<std::uint16_t>(static_cast<unsigned>(K) | (F ? flag_float << 8 : 0));
+    if constexpr (Far) {
+        ask_hot(hot, i + hot_ahead);
+        ask_cold_if_ending(hot, cold, i + cold_ahead, dt);
+    } else {
+        ask_hot_ahead(hot, i, n);
+        ask_cold_ahead(hot, cold, i, n, dt);
+    }
+    Hot& h = hot[i];
+    const double phase = h.phase + dt * h.rate;
+    const ArcFast& f = arcs[h.path];  // a table exactly for the arc-length kinds
+    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) ||
+        !h.target || !f.table)
+        return false;
+    const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
+    if (!(u > 0.0 && u < 1.0)) return false;
+    h.phase = phase;
+    piece = ArcLengthTable::piece_at(f.table, f.steps, u);
+    ArcLengthTable::prefetch_piece(piece.c);
+    return true;
+}
+
+// The same on arc-length paths, strictly inside them (the ends are Path::point's exact end
+// points, which plain_write gives), in batches of 32 as plain_run has them: every record of
+// a batch is advanced and its table piece found and asked for before any is written, so
+// that the misses on shared tables overlap. The piece comes from ArcLengthTable's piece_at
+// and evaluate_piece, as in plain_piece. W: the pieces' points in four lanes
+// (evaluate_piece_wide, the same bits).
+template <CurveKind K, bool F, bool W>
+inline std::size_t arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
+    static_assert(!has_parameters(K));
+    constexpr std::size_t batch = 32;
+    const ArcFast* const arcs = t.arc;  // locals: the writes cannot alias them
+    const Cold* const cold = t.cold;
+    ArcLengthTable::Piece piece[batch];
+    while (i < n) {
+        const std::size_t m = std::min(batch, n - i);
+        std::size_t k = 0;
+        if (i + m + hot_ahead <= n) {
+            while (k < m && arc_advance<K, F, true>(hot, arcs, cold, i + k, n, dt, piece[k])) ++k;
+        } else {
+            while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k])) ++k;
+        }
+        for (std::size_t j = 0; j < k; ++j) {
+            const Hot& h = hot[i + j];
+            Vec2 p;
+#if GRAPE_WIDE
+            if constexpr (W) p = ArcLengthTable::evaluate_piece_wide(piece[j].c, piece[j].x);
+            else
+#endif
+                p = ArcLengthTable::evaluate_piece(piece[j].c, piece[j].x);
+            write_pair<std::conditional_t<F, float, double>>(h.target, h.y_offset, p);
+        }
+        i += k;
+        if (k < m) break;
+    }
+    return i;
+}
+
+template <CurveKind K, bool F>
+GRAPE_FLATTEN std::size_t lean_arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
+    return arc_run<K, F, false>(hot, t, i, n, dt);
+}
+#if GRAPE_WIDE
+// The whole loop compiled for AVX2, so that the four-lane evaluation inlines into it.
+template <CurveKind K, bool F>
+GRAPE_AVX2 GRAPE_FLATTEN std::size_t lean_arc_run_wide(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n,
+                                                       double dt) noexcept {
+    return arc_run<K, F, true>(hot, t, i, n, dt);
+}
+#else
+template <CurveKind K, bool F>
+std::size_t lean_arc_run_wide(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
+    return lean_arc_run<K, F>(hot, t, i, n, dt);
+}
+#endif
+
+}  // namespace grape::detail
