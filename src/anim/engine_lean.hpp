@@ -31,13 +31,17 @@ struct LeanTables {
 // records (2 KB) early, beyond what the demand loads reach.
 inline constexpr std::size_t cold_ahead = 16;
 inline constexpr std::size_t hot_ahead = 64;
+// Record j's Cold record (j < n: the caller's bound).
+inline void ask_cold(const Cold* cold, std::size_t j) noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+    __builtin_prefetch(cold + j, 1);
+#else
+    (void)cold, (void)j;
+#endif
+}
 // Record j's Cold record when its play ends on this tick (j < n: the caller's bound).
 inline void ask_cold_if_ending(const Hot* hot, const Cold* cold, std::size_t j, double dt) noexcept {
-#if defined(__GNUC__) || defined(__clang__)
-    if (hot[j].phase + dt * hot[j].rate >= play_end) __builtin_prefetch(cold + j, 1);
-#else
-    (void)hot, (void)cold, (void)j, (void)dt;
-#endif
+    if (hot[j].phase + dt * hot[j].rate >= play_end) ask_cold(cold, j);
 }
 // Record j's hot record (j < n: the caller's bound).
 inline void ask_hot(const Hot* hot, std::size_t j) noexcept {
@@ -69,10 +73,27 @@ inline constexpr std::uint16_t lean_mask = 0xFF | (flag_paused | flag_dead | fla
 // rounding is monotone, so every intermediate keeps its bound).
 constexpr bool stays_on_path(CurveKind k) noexcept { return k <= CurveKind::quint_out_in; }
 
+// What a run of kind K and target type F compares kind_and_flags(h) & lean_mask with.
+template <CurveKind K, bool F>
+inline constexpr std::uint16_t run_want = static_cast<std::uint16_t>(static_cast<unsigned>(K) | (F ? flag_float << 8 : 0));
+
+// The point at u of a line or cubic kernel, from the engine's dense tables.
+template <KernelKind P>
+inline Vec2 lean_point(const LineFast* lines, const PathFast* fast, std::uint32_t path, double u) noexcept {
+    static_assert(P == KernelKind::linear || P == KernelKind::cubic);
+    if constexpr (P == KernelKind::linear) {
+        const LineFast& f = lines[path];
+        return f.c[0] + f.c[1] * u;
+    } else {
+        const PathFast& f = fast[path];
+        return ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
+    }
+}
+
 // One record of a lean run: false (nothing written) when it does not belong to the run.
 template <CurveKind K, KernelKind P, bool F>
 inline bool lean_step(Hot& h, const KernelKind* kinds, const LineFast* lines, const PathFast* fast, double dt) noexcept {
-    constexpr std::uint16_t want = static_cast<std::uint16_t>(static_cast<unsigned>(K) | (F ? flag_float << 8 : 0));
+    constexpr std::uint16_t want = run_want<K, F>;
     const double phase = h.phase + dt * h.rate;
     // started before this tick and still inside the play (either way: the rate is < 0
     // when reversed at run time)
@@ -83,15 +104,7 @@ inline bool lean_step(Hot& h, const KernelKind* kinds, const LineFast* lines, co
     if constexpr (!stays_on_path(K))
         if (!(u >= 0.0 && u <= 1.0)) return false;  // outside the path's ends: Path::point's tangents
     h.phase = phase;
-    Vec2 p;
-    if constexpr (P == KernelKind::linear) {
-        const LineFast& f = lines[h.path];
-        p = f.c[0] + f.c[1] * u;
-    } else {
-        const PathFast& f = fast[h.path];
-        p = ((f.c[3] * u + f.c[2]) * u + f.c[1]) * u + f.c[0];
-    }
-    write_pair<std::conditional_t<F, float, double>>(h.target, h.y_offset, p);
+    write_pair<std::conditional_t<F, float, double>>(h.target, h.y_offset, lean_point<P>(lines, fast, h.path, u));
     return true;
 }
 

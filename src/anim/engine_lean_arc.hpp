@@ -17,7 +17,7 @@ namespace grape::detail {
 template <CurveKind K, bool F, bool Far>
 inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::size_t i, std::size_t n, double dt,
                         ArcLengthTable::Piece& piece) noexcept {
-    constexpr std::uint16_t want = static_cast<std::uint16_t>(static_cast<unsigned>(K) | (F ? flag_float << 8 : 0));
+    constexpr std::uint16_t want = run_want<K, F>;
     if constexpr (Far) {
         ask_hot(hot, i + hot_ahead);
         ask_cold_if_ending(hot, cold, i + cold_ahead, dt);

@@ -1,7 +1,8 @@
 // Lean runs on lines and cubics four records at a time (AVX2, chosen at run time): the
 // clocks, the run's tests, the direction and the polynomial easings in four lanes; the
-// path's point and the write per record. A lean record costs some sixty instructions one at a time, most of them
-// the same few operations on different records; in lanes they are shared by four.
+// path's point and the write per record. A lean record costs some sixty instructions one
+// at a time, most of them the same few operations on different records; in lanes they are
+// shared by four.
 //
 // Every lane does lean_step's operations on the same values (no fused multiply-adds), so
 // the bits are the general update's (tests/test_engine_lean.cpp). A group of four in which
@@ -130,7 +131,7 @@ struct LaneConsts {
 };
 template <CurveKind K, bool F>
 GRAPE_AVX2 inline LaneConsts lane_consts(double dt) noexcept {
-    constexpr std::uint16_t want = static_cast<std::uint16_t>(static_cast<unsigned>(K) | (F ? flag_float << 8 : 0));
+    constexpr std::uint16_t want = run_want<K, F>;
     return {_mm256_set1_pd(dt), _mm256_setzero_pd(), _mm256_set1_pd(play_end),
             _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{lean_mask} << 48)),
             _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{want} << 48))};
@@ -138,8 +139,7 @@ GRAPE_AVX2 inline LaneConsts lane_consts(double dt) noexcept {
 
 // Asks for the hot records `hot_ahead` on and for the Cold records of plays that end when
 // the records `cold_ahead` on are reached (records i + hot_ahead + 3 exist).
-GRAPE_AVX2 inline void ask_ahead_quad(const Hot* hot, const Cold* cold, std::size_t i, double dt,
-                                      const LaneConsts& c) noexcept {
+GRAPE_AVX2 inline void ask_ahead_quad(const Hot* hot, const Cold* cold, std::size_t i, const LaneConsts& c) noexcept {
     ask_hot(hot, i + hot_ahead);
     ask_hot(hot, i + hot_ahead + 2);
     static_assert(cold_ahead < hot_ahead);
@@ -147,7 +147,7 @@ GRAPE_AVX2 inline void ask_ahead_quad(const Hot* hot, const Cold* cold, std::siz
     const __m256d next = _mm256_add_pd(ahead.phase, _mm256_mul_pd(c.step, ahead.rate));
     if (int ending = _mm256_movemask_pd(_mm256_cmp_pd(next, c.end, _CMP_GE_OQ))) {
         for (std::size_t j = 0; ending; ++j, ending >>= 1)
-            if (ending & 1) ask_cold_if_ending(hot, cold, i + cold_ahead + j, dt);
+            if (ending & 1) ask_cold(cold, i + cold_ahead + j);
     }
 }
 
@@ -196,7 +196,7 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t lean_run_wide(Hot* hot, const LeanTables& t
     const LaneConsts c = lane_consts<K, F>(dt);
     const std::size_t far = n > hot_ahead ? n - hot_ahead : 0;
     for (; i + 4 <= far; i += 4) {
-        ask_ahead_quad(hot, cold, i, dt, c);
+        ask_ahead_quad(hot, cold, i, c);
         Hot* const h = hot + i;
         __m256d phase;
         Lanes u;
@@ -209,17 +209,9 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t lean_run_wide(Hot* hot, const LeanTables& t
         store_phases(h, phase);
         alignas(32) double us[4];
         _mm256_store_pd(us, u.v);
-        for (std::size_t j = 0; j < 4; ++j) {  // lean_step's point and write
-            Vec2 p;
-            if constexpr (P == KernelKind::linear) {
-                const LineFast& f = lines[h[j].path];
-                p = f.c[0] + f.c[1] * us[j];
-            } else {
-                const PathFast& f = fast[h[j].path];
-                p = ((f.c[3] * us[j] + f.c[2]) * us[j] + f.c[1]) * us[j] + f.c[0];
-            }
-            write_pair<std::conditional_t<F, float, double>>(h[j].target, h[j].y_offset, p);
-        }
+        for (std::size_t j = 0; j < 4; ++j)  // lean_step's point and write
+            write_pair<std::conditional_t<F, float, double>>(h[j].target, h[j].y_offset,
+                                                             lean_point<P>(lines, fast, h[j].path, us[j]));
     }
     return lean_run<K, P, F>(hot, t, i, n, dt);
 }
