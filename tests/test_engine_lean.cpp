@@ -4,10 +4,14 @@
 // the general path on every tick and are the reference.
 #include <grape/anim.hpp>
 
+#include "path/kernel.hpp"
+
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <random>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -200,3 +204,18 @@ TEST(EngineLean, EveryFormulaKindWritesItsOwnFormulaOnLinesAndCubics) {
 }
 
 }  // namespace
+
+// GRAPE_WIDE_LANES=0 (the ctest engine_lean.one_record_at_a_time) keeps the one-record loops;
+// without it, a processor with AVX2 takes the four-lane ones.
+TEST(EngineLean, WideLanesFollowTheEnvironment) {
+    const char* value = std::getenv("GRAPE_WIDE_LANES");
+    if (value && std::string_view(value) == "0") {
+        EXPECT_FALSE(grape::detail::wide_lanes());
+    } else {
+#if GRAPE_WIDE
+        EXPECT_EQ(grape::detail::wide_lanes(), __builtin_cpu_supports("avx2") != 0);
+#else
+        EXPECT_FALSE(grape::detail::wide_lanes());
+#endif
+    }
+}

@@ -5,6 +5,8 @@
 #include "svg_parser.hpp"
 
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 namespace grape::detail {
 
@@ -51,9 +53,14 @@ void fit_piece(F&& point_of_u, double u0, double du, double* out) {
 // Doubles K until every piece's polynomials land within 1e-10·length of the path's own
 // point at 23 places inside it (12 evenly spaced, and the 11 between the Lobatto points,
 // where an interpolant's error peaks); gives up past 4096 pieces.
+namespace {
+bool is_off(const char* value) noexcept { return value && std::strcmp(value, "0") == 0; }
+}  // namespace
+
 bool wide_lanes() noexcept {
 #if GRAPE_WIDE
-    static const bool wide = __builtin_cpu_supports("avx2");
+    // GRAPE_WIDE_LANES=0 keeps the one-record loops (to compare, and to test them on AVX2 machines).
+    static const bool wide = __builtin_cpu_supports("avx2") && !is_off(std::getenv("GRAPE_WIDE_LANES"));
     return wide;
 #else
     return false;

@@ -155,7 +155,7 @@ private:
 };
 
 /// Whether this processor runs the four-lane (AVX2) loops: evaluate_piece_wide and the
-/// tick's (checked once).
+/// tick's (checked once; the environment variable GRAPE_WIDE_LANES=0 turns them off).
 bool wide_lanes() noexcept;
 
 /// How a kernel evaluates inside [0, 1].
