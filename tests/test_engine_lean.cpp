@@ -149,8 +149,8 @@ TEST(EngineLean, RunsOfOneKindGiveTheBitsOfTheGeneralUpdate) {
 
 // Runs of every formula kind on lines, on cubics, on arc-length paths: where the processor
 // has AVX2, the polynomial kinds on lines and cubics run four records at a time in lanes
-// (engine_lean_wide.hpp) and the arc-length pieces are evaluated in four lanes, which must
-// give the same bits.
+// (engine_lean_wide.hpp), on arc-length paths too (engine_lean_arc.hpp: their pieces found
+// four and evaluated two at a time), which must give the same bits.
 TEST(EngineLean, RunsOnEachKernelGiveTheBitsOfTheGeneralUpdate) {
     for (int only = 1; only <= 3; ++only) {
         for (unsigned seed = 21; seed <= 23; ++seed) {

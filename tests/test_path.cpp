@@ -545,6 +545,14 @@ TEST(ArcLengthTable, EachSlotHoldsItsPowerOfX) {
 // The four-lane evaluation the tick uses where the processor has AVX2 does the two-lane one's
 // operations on the same values (no fused multiply-adds), so the bits agree: on fitted tables
 // and on random coefficients of every size, at random x in [−1, 1] and at its ends.
+#if GRAPE_WIDE
+// ArcLengthTable::four_pieces_at on arrays (its lanes are AVX2 registers).
+GRAPE_AVX2 void four_pieces_at(const double* const tables[4], const double* steps, const double* u,
+                               grape::detail::ArcLengthTable::Piece out[4]) {
+    grape::detail::ArcLengthTable::four_pieces_at(tables, _mm256_loadu_pd(steps), _mm256_loadu_pd(u), out);
+}
+#endif
+
 TEST(ArcLengthTable, FourLanesGiveTheBitsOfTwo) {
 #if GRAPE_WIDE
     using grape::detail::ArcLengthTable;
@@ -560,6 +568,40 @@ TEST(ArcLengthTable, FourLanesGiveTheBitsOfTwo) {
             const Vec2 two = ArcLengthTable::evaluate_piece(c, x), four = ArcLengthTable::evaluate_piece_wide(c, x);
             EXPECT_EQ(std::memcmp(&two, &four, sizeof two), 0) << n << " " << x;
             ++compared;
+        }
+    }
+    // two pieces at once (each of a random pair, at random places) and four pieces found at
+    // once give the bits of one at a time
+    std::vector<double, grape::detail::LineAllocator<double>> many(ArcLengthTable::stride * 64);
+    for (double& w : many) w = unit(rng) * std::exp2(exponent(rng));
+    std::uniform_int_distribution<int> which(0, 63);
+    for (int n = 0; n < 20000; ++n) {
+        const double* a = many.data() + ArcLengthTable::stride * static_cast<std::size_t>(which(rng));
+        const double* b = many.data() + ArcLengthTable::stride * static_cast<std::size_t>(which(rng));
+        const double xa = n % 11 == 0 ? -1.0 : unit(rng), xb = n % 7 == 0 ? xa : n % 13 == 0 ? 1.0 : unit(rng);
+        Vec2 pa, pb;
+        ArcLengthTable::evaluate_two_pieces_wide(a, xa, b, xb, pa, pb);
+        const Vec2 ta = ArcLengthTable::evaluate_piece(a, xa), tb = ArcLengthTable::evaluate_piece(b, xb);
+        EXPECT_EQ(std::memcmp(&pa, &ta, sizeof pa), 0) << n << " " << xa;
+        EXPECT_EQ(std::memcmp(&pb, &tb, sizeof pb), 0) << n << " " << xb;
+        ++compared;
+    }
+    std::uniform_real_distribution<double> fraction(0.0, 1.0);
+    for (int n = 0; n < 20000; ++n) {
+        double u[4], steps[4];
+        const double* tables[4];
+        for (int j = 0; j < 4; ++j) {
+            steps[j] = std::exp2(std::uniform_int_distribution<int>(0, 12)(rng));  // K = 1 … 4096
+            u[j] = n % 5 == 0 ? std::nextafter(1.0, 0.0) : fraction(rng);  // u < 1, the largest too
+            if (!(u[j] > 0.0)) u[j] = 0.5;
+            tables[j] = many.data() + j;
+        }
+        ArcLengthTable::Piece four[4];
+        four_pieces_at(tables, steps, u, four);
+        for (int j = 0; j < 4; ++j) {
+            const ArcLengthTable::Piece one = ArcLengthTable::piece_at(tables[j], steps[j], u[j]);
+            EXPECT_EQ(four[j].c, one.c) << u[j] << " " << steps[j];
+            EXPECT_EQ(std::memcmp(&four[j].x, &one.x, sizeof one.x), 0) << u[j] << " " << steps[j];
         }
     }
     const auto table = ArcLengthTable::build(Path(grape::CubicBezierPath({0, 0}, {0, 300}, {400, -200}, {500, 90}, true)));

@@ -17,11 +17,21 @@ using LeanRun = std::size_t (*)(Hot*, const LeanTables&, std::size_t, std::size_
 // The lean runs for every formula kind, path kernel and target type: [kind][line, cubic,
 // arc length][one record at a time, four-lane][double, float]; null for the kinds with
 // parameters. The four-lane loops take the polynomial easings on lines and cubics (the
-// others: their one-at-a-time loop) and every formula kind on arc-length paths.
+// others: their one-at-a-time loop); on arc-length paths, the polynomial easings' clocks and
+// easing and every formula kind's pieces.
 template <CurveKind K, KernelKind P>
 constexpr std::array<LeanRun, 2> lanes_or_one() noexcept {
     if constexpr (stays_on_path(K)) return {&lean_run_wide<K, P, false>, &lean_run_wide<K, P, true>};
     else return {&lean_run<K, P, false>, &lean_run<K, P, true>};
+}
+// On arc-length paths: the polynomial easings wholly in lanes, the others' pieces only.
+template <CurveKind K>
+constexpr std::array<LeanRun, 2> arc_lanes_or_batch() noexcept {
+#if GRAPE_WIDE
+    if constexpr (stays_on_path(K)) return {&arc_run_lanes<K, false>, &arc_run_lanes<K, true>};
+    else
+#endif
+        return {&lean_arc_run_wide<K, false>, &lean_arc_run_wide<K, true>};
 }
 template <std::size_t... k>
 constexpr auto lean_table(std::index_sequence<k...>) noexcept {
@@ -35,7 +45,7 @@ constexpr auto lean_table(std::index_sequence<k...>) noexcept {
                         {{{&lean_run<K, KernelKind::cubic, false>, &lean_run<K, KernelKind::cubic, true>},
                           lanes_or_one<K, KernelKind::cubic>()}},
                         {{{&lean_arc_run<K, false>, &lean_arc_run<K, true>},
-                          {&lean_arc_run_wide<K, false>, &lean_arc_run_wide<K, true>}}}}};
+                          arc_lanes_or_batch<K>()}}}};
     };
     return std::array{row(std::integral_constant<std::size_t, k>{})...};
 }
