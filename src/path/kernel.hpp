@@ -135,9 +135,7 @@ public:
     GRAPE_AVX2 static Vec2 evaluate_piece_wide(const double* c, double x) noexcept {
         const __m256d vx = _mm256_set1_pd(x), vx2 = _mm256_mul_pd(vx, vx);  // x² in every lane: x * x
         const __m128d vx4 = _mm_mul_pd(_mm256_castpd256_pd128(vx2), _mm256_castpd256_pd128(vx2));
-        const __m256d q01 = _mm256_add_pd(_mm256_load_pd(c), _mm256_mul_pd(_mm256_load_pd(c + 4), vx));
-        const __m256d q23 = _mm256_add_pd(_mm256_load_pd(c + 8), _mm256_mul_pd(_mm256_load_pd(c + 12), vx));
-        const __m256d q45 = _mm256_add_pd(_mm256_load_pd(c + 16), _mm256_mul_pd(_mm256_load_pd(c + 20), vx));
+        const __m256d q01 = q_line(c, 0, vx), q23 = q_line(c, 1, vx), q45 = q_line(c, 2, vx);
         const __m256d even = _mm256_permute2f128_pd(q01, q23, 0x20);  // q0, q2
         const __m256d odd = _mm256_permute2f128_pd(q01, q23, 0x31);   // q1, q3
         const __m256d r01 = _mm256_add_pd(even, _mm256_mul_pd(odd, vx2));
