@@ -190,6 +190,8 @@ void expect_same(const World& a, const World& b, int tick) {
 // 3,000 animations in blocks of 256 records: two threads share phase 1 for real.
 constexpr std::size_t test_size = 3000;
 
+// Two and three threads (slices of 6 and 4 blocks), workers that stay awake between ticks
+// and workers that sleep after each.
 TEST(EngineParallel, TwoThreadsMatchOneBitForBitWithHandlersTouchingOthers) {
     for (unsigned seed = 1; seed <= 12; ++seed) {
         SCOPED_TRACE(seed);
@@ -197,10 +199,11 @@ TEST(EngineParallel, TwoThreadsMatchOneBitForBitWithHandlersTouchingOthers) {
         auto two = std::make_unique<World>();
         build(*one, test_size, seed, true);
         build(*two, test_size, seed, true);
+        const int threads = 2 + static_cast<int>(seed % 2);
         one->engine.set_parallel({.threads = 1});
-        two->engine.set_parallel({.threads = 2, .min_animations = 0});
+        two->engine.set_parallel({.threads = threads, .min_animations = 0, .awake = seed % 3 ? 200e-6 : 0.0});
         ASSERT_EQ(one->engine.tick_threads(), 1);
-        ASSERT_EQ(two->engine.tick_threads(), 2);
+        ASSERT_EQ(two->engine.tick_threads(), threads);
         int tick = 0;
         for (const double dt : random_steps(seed, 90)) {
             one->engine.tick(dt);
@@ -296,6 +299,8 @@ TEST(EngineParallel, SwitchingModesKeepsTheState) {
     engine.tick(0.25);
     engine.set_parallel({.threads = 2});  // fewer workers: the pool is replaced
     engine.tick(0.25);
+    engine.set_parallel({.threads = 2, .awake = 0.0});  // and for another wait
+    EXPECT_EQ(engine.tick_threads(), 2);
     engine.set_serial();
     EXPECT_EQ(engine.tick_threads(), 0);
     engine.tick(0.125);
@@ -308,6 +313,12 @@ TEST(EngineParallel, BadThreadCountsAndCallsFromHandlersThrow) {
               "Engine::set_parallel: threads must be in [1, 256] (got 0)");
     EXPECT_EQ(grape::testing::error_text([&] { engine.set_parallel({.threads = 257}); }),
               "Engine::set_parallel: threads must be in [1, 256] (got 257)");
+    EXPECT_EQ(grape::testing::error_text([&] { engine.set_parallel({.awake = -1e-6}); }),
+              "Engine::set_parallel: awake must be in [0, 1] seconds (got -1e-06)");
+    EXPECT_EQ(grape::testing::error_text([&] { engine.set_parallel({.awake = 1.5}); }),
+              "Engine::set_parallel: awake must be in [0, 1] seconds (got 1.5)");
+    EXPECT_EQ(grape::testing::error_text([&] { engine.set_parallel({.awake = std::nan("")}); }),
+              "Engine::set_parallel: awake must be in [0, 1] seconds (got nan)");
     EXPECT_EQ(engine.tick_threads(), 0);
     Target t;
     const grape::LinearPath line({0, 0}, {1, 0});

@@ -142,9 +142,12 @@ TEST(Threads, SeparateEnginesOnSeparateThreadsShareTheirPaths) {
 // animations over the shared paths and curves, so phase 1 splits into many blocks, with loop
 // handlers that read every target the workers wrote (phase 2 runs after them) and seek
 // other animations.
-std::vector<double> run_parallel_engine(const std::vector<grape::Path>& paths, const grape::Curve& curve, int threads) {
+// awake 0: the workers sleep after every tick, so each tick wakes them (the other path of the
+// pool's hand-over); the default keeps them awake between these back-to-back ticks.
+std::vector<double> run_parallel_engine(const std::vector<grape::Path>& paths, const grape::Curve& curve, int threads,
+                                        double awake = grape::ParallelDef{}.awake) {
     grape::Engine engine;
-    engine.set_parallel({.threads = threads, .min_animations = 0});
+    engine.set_parallel({.threads = threads, .min_animations = 0, .awake = awake});
     constexpr std::size_t count = 6000;
     std::vector<Sprite> sprites(count);
     std::vector<grape::Animation> anims;
@@ -174,6 +177,7 @@ TEST(Threads, ParallelTickOnFourThreadsMatchesOne) {
     const grape::Curve curve = grape::Curve::cubic_bezier(0.42, 0.0, 0.58, 1.0);
     const std::vector<double> reference = run_parallel_engine(paths, curve, 1);
     EXPECT_EQ(run_parallel_engine(paths, curve, thread_count), reference);
+    EXPECT_EQ(run_parallel_engine(paths, curve, thread_count, 0.0), reference);
     // and two such engines at once, each with its own workers
     const auto results = on_threads<std::vector<double>>([&](int) { return run_parallel_engine(paths, curve, 2); });
     for (const std::vector<double>& r : results) EXPECT_EQ(r, reference);

@@ -197,6 +197,10 @@ struct ParallelDef {
     /// (about 4 µs, the time of ~1,000 plain updates, measured at 1,000 animations), and a
     /// worker takes tens of µs to start, so under some thousands it arrives after the work.
     std::size_t min_animations = 16384;
+    /// Seconds a worker stays awake after its share of a tick, waiting for the next one,
+    /// before it sleeps: [0, 1]. Ticks that come sooner (sub-steps, several engines) skip
+    /// the wake-up, tens of µs each; a worker awake keeps its core busy meanwhile.
+    double awake = 200e-6;
 };
 
 /// Owns and advances animations. Not copyable or movable (handles refer to it).
@@ -238,11 +242,12 @@ public:
     void tick(double dt);
 
     /// From the next tick on, ticks in two phases (see above), phase 1 shared among
-    /// def.threads threads: def.threads − 1 workers started here, once, asleep between
-    /// ticks; no allocation per tick once the engine has stopped growing. threads = 1 gives
-    /// the two-phase order on the calling thread alone (the same results as any thread count).
-    /// Throws grape::Error for threads outside [1, max_tick_threads] or when called from
-    /// inside one of the engine's own handlers (std::system_error if a thread cannot start).
+    /// def.threads threads: def.threads − 1 workers started here, once, awake for def.awake
+    /// after each tick and asleep after that; no allocation per tick once the engine has
+    /// stopped growing. threads = 1 gives the two-phase order on the calling thread alone
+    /// (the same results as any thread count). Throws grape::Error for threads outside
+    /// [1, max_tick_threads], awake outside [0, 1], or when called from inside one of the
+    /// engine's own handlers (std::system_error if a thread cannot start).
     void set_parallel(const ParallelDef& def = {});
     /// Back to the one-pass tick on the calling thread; stops the workers. Throws grape::Error
     /// when called from inside one of the engine's own handlers.

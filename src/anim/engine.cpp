@@ -15,7 +15,7 @@ Engine::Engine() : impl_(std::make_unique<detail::EngineImpl>(this)) {}
 Engine::~Engine() = default;
 
 void Engine::tick(double dt) { impl_->tick(dt); }
-void Engine::set_parallel(const ParallelDef& def) { impl_->set_parallel(def.threads, def.min_animations); }
+void Engine::set_parallel(const ParallelDef& def) { impl_->set_parallel(def.threads, def.min_animations, def.awake); }
 void Engine::set_serial() { impl_->set_serial(); }
 int Engine::tick_threads() const noexcept { return impl_->threads(); }
 

@@ -316,7 +316,7 @@ private:
 
     // --- two-phase and parallel ticks (engine_parallel.cpp) ---
 public:
-    void set_parallel(int threads, std::size_t min_records);
+    void set_parallel(int threads, std::size_t min_records, double awake);
     void set_serial();
     int threads() const noexcept { return two_phase_ ? threads_ : 0; }
 
@@ -342,9 +342,18 @@ private:
     std::vector<std::uint32_t> slow_count_;  // per block
     std::size_t block_ = 0;                  // this tick's records per block, blocks and records
     std::size_t blocks_ = 0;
+    int slices_ = 1;  // this tick's: threads_ when shared, else 1
+    std::size_t slice_begin(int s) const noexcept { return blocks_ * static_cast<std::size_t>(s) / static_cast<std::size_t>(slices_); }
     std::size_t plain_n_ = 0;
     double plain_dt_ = 0.0;
-    std::atomic<std::size_t> next_block_{0};
+    // Phase 1's blocks fall into one slice per thread, each slice's taken in order through
+    // its own counter (a cache line each): a thread takes its own slice's blocks, contiguous
+    // records that its prefetchers stream, then helps with the others'.
+    struct alignas(64) SliceCounter {
+        std::atomic<std::size_t> next{0};
+    };
+    std::unique_ptr<SliceCounter[]> slice_next_;  // threads_ of them
+    std::atomic<int> arrivals_{0};                // threads that joined this tick's phase 1
     std::unique_ptr<TickPool, TickPoolDelete> pool_;  // last: its workers stop before the rest goes
 };
 

@@ -1,17 +1,29 @@
-// The worker threads of a parallel tick: one mutex, two condition variables, no allocation
-// after construction.
+// The worker threads of a parallel tick. A job opens with one atomic store; workers awake
+// see it within a spin (a sleeping thread takes tens of µs to start, the time of ~10,000
+// plain updates); the calling thread waits for the last worker's piece the same way (at most
+// one piece of work: the job hands out small pieces).
 #include "tick_pool.hpp"
 
 namespace grape::detail {
 
-TickPool::TickPool(int workers) {
+namespace {
+inline void relax() noexcept {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#elif defined(__aarch64__)
+    asm volatile("yield");
+#endif
+}
+}  // namespace
+
+TickPool::TickPool(int workers, std::chrono::nanoseconds awake) : awake_(awake) {
     threads_.reserve(static_cast<std::size_t>(workers));
     try {
         for (int k = 0; k < workers; ++k) threads_.emplace_back([this] { work(); });
     } catch (...) {
+        stop_.store(true);
         {
             const std::lock_guard lock(mutex_);
-            stop_ = true;
         }
         start_.notify_all();
         for (std::thread& t : threads_) t.join();
@@ -20,42 +32,58 @@ TickPool::TickPool(int workers) {
 }
 
 TickPool::~TickPool() {
+    stop_.store(true);
     {
-        const std::lock_guard lock(mutex_);
-        stop_ = true;
+        const std::lock_guard lock(mutex_);  // a worker between its test and its sleep finishes both
     }
     start_.notify_all();
     for (std::thread& t : threads_) t.join();
 }
 
 void TickPool::run(Job job, void* context) noexcept {
-    {
-        const std::lock_guard lock(mutex_);
-        job_ = job;
-        context_ = context;
-        ++epoch_;
+    job_ = job;
+    context_ = context;
+    const std::uint64_t open = state_.load(std::memory_order_relaxed) + 1;
+    state_.store(open);
+    if (sleepers_.load() > 0) {
+        // A worker that counted itself a sleeper before this load tests state_ under the
+        // mutex: it either sees the open job or is waiting when the notify comes.
+        { const std::lock_guard lock(mutex_); }
+        start_.notify_all();
     }
-    start_.notify_all();
     job(context);
+    state_.store(open + 1);  // closed: a worker that counts itself from now on sees it and leaves
+    for (int spins = 0; active_.load() != 0; ++spins) {
+        if (spins < 4096) relax();
+        else std::this_thread::yield();  // the worker was descheduled mid-piece
+    }
+}
+
+bool TickPool::wait_for_job(std::uint64_t seen) noexcept {
+    // seq_cst: after a sleeper counts itself, this test and run()'s store and load of
+    // sleepers_ are in one order, so either the test sees the job or run() notifies.
+    auto ready = [&] { return stop_.load() || state_.load() != seen; };
+    const auto until = std::chrono::steady_clock::now() + awake_;
+    for (int spins = 1;; ++spins) {
+        if (ready()) return !stop_.load();
+        relax();
+        if (spins % 64 == 0 && std::chrono::steady_clock::now() >= until) break;
+    }
     std::unique_lock lock(mutex_);
-    job_ = nullptr;  // no worker enters from now on
-    done_.wait(lock, [this] { return active_ == 0; });
+    sleepers_.fetch_add(1);
+    start_.wait(lock, ready);
+    sleepers_.fetch_sub(1);
+    return !stop_.load();
 }
 
 void TickPool::work() noexcept {
     std::uint64_t seen = 0;
-    std::unique_lock lock(mutex_);
-    for (;;) {
-        start_.wait(lock, [&] { return stop_ || (job_ && epoch_ != seen); });
-        if (stop_) return;
-        seen = epoch_;
-        const Job job = job_;
-        void* const context = context_;
-        ++active_;
-        lock.unlock();
-        job(context);
-        lock.lock();
-        if (--active_ == 0) done_.notify_all();
+    while (wait_for_job(seen)) {
+        seen = state_.load();
+        if (!(seen & 1)) continue;  // opened and closed already: wait for the next
+        active_.fetch_add(1);
+        if (state_.load() == seen) job_(context_);  // still open: run() waits for this call
+        active_.fetch_sub(1);
     }
 }
 

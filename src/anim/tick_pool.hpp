@@ -1,6 +1,10 @@
-// The worker threads of a parallel tick: started once, asleep between ticks.
+// The worker threads of a parallel tick: started once; between ticks each stays awake for a
+// while (ticks often come back to back: sub-steps, several engines, benchmarks) and then
+// sleeps on a condition variable.
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
@@ -13,32 +17,41 @@ class TickPool {
 public:
     using Job = void (*)(void* context) noexcept;
 
-    /// Starts `workers` threads (may throw std::system_error).
-    explicit TickPool(int workers);
+    /// Starts `workers` threads (may throw std::system_error). After each job a worker waits
+    /// awake for the next one up to `awake`, then sleeps.
+    TickPool(int workers, std::chrono::nanoseconds awake);
     /// Stops and joins the workers.
     ~TickPool();
     TickPool(const TickPool&) = delete;
     TickPool& operator=(const TickPool&) = delete;
 
-    /// Calls job(context) on the calling thread and on every worker that wakes while the
+    /// Calls job(context) on the calling thread and on every worker that joins while the
     /// calling thread's call runs; returns once every call has returned. The job shares its
     /// work through the context (each call takes pieces until none are left), so a worker the
-    /// system schedules late is not waited for: it finds the job closed and sleeps again.
+    /// system schedules late is not waited for: it finds the job closed and waits again.
     void run(Job job, void* context) noexcept;
 
     int workers() const noexcept { return static_cast<int>(threads_.size()); }
+    std::chrono::nanoseconds awake() const noexcept { return awake_; }
 
 private:
     void work() noexcept;
+    // The next open job after `seen`, waiting awake and then asleep; false on stop.
+    bool wait_for_job(std::uint64_t seen) noexcept;
 
-    std::mutex mutex_;
-    std::condition_variable start_;  // a job was opened, or stop
-    std::condition_variable done_;   // the last active worker left the job
-    Job job_ = nullptr;              // the open job (null: closed)
+    // state_ = 2 · jobs run so far, plus 1 while the next one is open. job_ and context_ are
+    // written before a job opens (release) and read by a worker only after it has counted
+    // itself in active_ and seen the same open state again: run() does not return, so does
+    // not write them again, while a worker that saw them open is counted.
+    std::atomic<std::uint64_t> state_{0};
+    std::atomic<int> active_{0};    // workers counted into the current job
+    std::atomic<int> sleepers_{0};  // workers asleep on start_, or about to be
+    std::atomic<bool> stop_{false};
+    Job job_ = nullptr;
     void* context_ = nullptr;
-    std::uint64_t epoch_ = 0;        // jobs opened so far; a worker joins each one at most once
-    int active_ = 0;                 // workers inside job_ now
-    bool stop_ = false;
+    std::chrono::nanoseconds awake_;
+    std::mutex mutex_;               // guards start_'s sleep, not the job
+    std::condition_variable start_;  // a job was opened, or stop
     std::vector<std::thread> threads_;
 };
 
