@@ -112,14 +112,13 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
                 Hot* const h = hot + i + k;
                 __m256d phase;
                 Lanes u;
-                if (!lanes_step<K>(h, c, phase, u) || !arcs[h[0].path].table || !arcs[h[1].path].table ||
-                    !arcs[h[2].path].table || !arcs[h[3].path].table)
-                    break;
-                const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(u.v, _mm256_setzero_pd(), _CMP_GT_OQ),
+                if (!lanes_step<K>(h, c, phase, u)) break;
+                const ArcFast &f0 = arcs[h[0].path], &f1 = arcs[h[1].path], &f2 = arcs[h[2].path], &f3 = arcs[h[3].path];
+                if (!f0.table || !f1.table || !f2.table || !f3.table) break;
+                const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(u.v, c.zero, _CMP_GT_OQ),
                                                      _mm256_cmp_pd(u.v, _mm256_set1_pd(1.0), _CMP_LT_OQ));
                 if (_mm256_movemask_pd(inside) != 0xF) break;
                 store_phases(h, phase);
-                const ArcFast &f0 = arcs[h[0].path], &f1 = arcs[h[1].path], &f2 = arcs[h[2].path], &f3 = arcs[h[3].path];
                 const double* const tables[4] = {f0.table, f1.table, f2.table, f3.table};
                 ArcLengthTable::four_pieces_at(tables, _mm256_setr_pd(f0.steps, f1.steps, f2.steps, f3.steps), u.v,
                                                piece + k);
