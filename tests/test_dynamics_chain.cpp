@@ -5,6 +5,7 @@
 #include <grape/dynamics.hpp>
 
 #include "seed_dynamics.hpp"
+#include "user_constraints.hpp"
 
 #include "error_text.hpp"
 
@@ -156,36 +157,13 @@ TEST(Rattle, EnergyStaysBoundedOverManyPeriods) {
 // particle on the seed's implicit parabola stays on it at round-off (|C|/|∇C| ≤ 1e-9 px for
 // coordinates up to ~100 px) and moves as the parametric bead, within RATTLE's O(h²) error.
 TEST(Rattle, UserFixedPointAndCurveConstraints) {
-    ParticleSystem anchor({.integrator = Integrator::rattle}), user({.integrator = Integrator::rattle});
-    for (ParticleSystem* s : {&anchor, &user}) {
-        const auto p = s->create_particle({.position = {0.6, 0.8}, .velocity = {-1, 0.75}});
-        s->add_gravity({0, 9.81});
-        if (s == &anchor) {
-            s->create_anchor(p, {0, 0}, 1.0);
-        } else {
-            s->create_constraint({{p}, [](std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out) {
-                                   out.value = 0.5 * (dot(x[0], x[0]) - 1.0);
-                                   out.jacobian[0] = x[0];
-                                   out.jdot_v = dot(v[0], v[0]);
-                               }});
-        }
-    }
-    for (int i = 0; i < 240; ++i) {
-        anchor.step(1.0 / 240);
-        user.step(1.0 / 240);
-    }
-    EXPECT_EQ(anchor.positions()[0], user.positions()[0]);
-    EXPECT_LT(anchor.max_residual().distance, 1e-14);
+    const grape::testing::CircleTwins twins = grape::testing::circle_twins({.integrator = Integrator::rattle});
+    EXPECT_EQ(twins.anchor, twins.user);
+    EXPECT_LT(twins.anchor_residual, 1e-14);
 
-    ParticleSystem fixed({.integrator = Integrator::rattle});
-    const auto a = fixed.create_particle({.position = {0, 0}});
-    const auto b = fixed.create_particle({.position = {1, 0}});
-    fixed.add_gravity({0, 9.81});
-    fixed.add_spring(a, b, {.rest_length = 0.5, .stiffness = 50});
-    fixed.create_fixed_point(a, {0, 0});
-    for (int i = 0; i < 240; ++i) fixed.step(1.0 / 240);
-    EXPECT_LT(length(fixed.positions()[0]), 1e-15);
-    EXPECT_GT(length(fixed.positions()[1] - Vec2{1, 0}), 0.1);
+    const grape::testing::FixedAndFree held = grape::testing::fixed_point_against_spring({.integrator = Integrator::rattle});
+    EXPECT_LT(length(held.fixed), 1e-15);
+    EXPECT_GT(length(held.free - Vec2{1, 0}), 0.1);
 
     auto run = [](ParabolaMethod method, Integrator integrator, double dt) {
         return run_parabola({.method = method, .integrator = integrator}, dt, 2.0);  // 2 s from x0 = 100 px
