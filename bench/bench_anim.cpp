@@ -124,7 +124,7 @@ void grape_engine(benchmark::State& state, BenchPathKind kind, const char* name,
 }
 
 // The parallel tick against the one-pass tick, both in wall-clock time, on the linear kind.
-// threads 0: one-pass; else Engine::set_parallel({.threads}).
+// threads 0: one-pass; else Engine::set_parallel({.threads, .min_animations = 0}).
 void grape_engine_wall(benchmark::State& state, BenchPathKind kind, const char* name, int threads) {
     const auto n = static_cast<std::size_t>(state.range(0));
     const auto segments = grape::scenes::bench_segments(distinct_paths);
@@ -134,7 +134,7 @@ void grape_engine_wall(benchmark::State& state, BenchPathKind kind, const char* 
     auto engine = std::make_unique<grape::Engine>();
     grape::scenes::create_bench_animations(*engine, targets, paths, grape::Curve::quad_in_out());
     const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
-    if (threads > 0) engine->set_parallel({.threads = threads});
+    if (threads > 0) engine->set_parallel({.threads = threads, .min_animations = 0});  // 10⁵ too: below the default
     engine->tick(frame);
     run(
         state, name, bytes,

@@ -193,10 +193,11 @@ inline constexpr int max_tick_threads = 256;
 struct ParallelDef {
     int threads = 2;  ///< threads in all, the calling one included: [1, max_tick_threads]
     /// Below this many animations (the engine's own, not those timelines drive) phase 1 runs
-    /// on the calling thread alone: waking the workers costs the calling thread a few µs
-    /// (about 4 µs, the time of ~1,000 plain updates, measured at 1,000 animations), and a
-    /// worker takes tens of µs to start, so under some thousands it arrives after the work.
-    std::size_t min_animations = 16384;
+    /// on the calling thread alone. A worker asleep takes tens of µs to start, and more when
+    /// it has slept a whole frame: ticked once per 60 Hz frame, two threads broke even at
+    /// about 100,000 animations on a 2-core machine (bench/RESULTS.md), though ticks back to
+    /// back (sub-steps, workers still awake) gain from ~16,000. Lower it for those.
+    std::size_t min_animations = 131072;
     /// Seconds a worker stays awake after its share of a tick, waiting for the next one,
     /// before it sleeps: [0, 1]. Ticks that come sooner (sub-steps, several engines) skip
     /// the wake-up, tens of µs each; a worker awake keeps its core busy meanwhile.
