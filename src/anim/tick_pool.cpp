@@ -21,17 +21,14 @@ TickPool::TickPool(int workers, std::chrono::nanoseconds awake) : awake_(awake) 
     try {
         for (int k = 0; k < workers; ++k) threads_.emplace_back([this] { work(); });
     } catch (...) {
-        stop_.store(true);
-        {
-            const std::lock_guard lock(mutex_);
-        }
-        start_.notify_all();
-        for (std::thread& t : threads_) t.join();
+        stop_and_join();
         throw;
     }
 }
 
-TickPool::~TickPool() {
+TickPool::~TickPool() { stop_and_join(); }
+
+void TickPool::stop_and_join() noexcept {
     stop_.store(true);
     {
         const std::lock_guard lock(mutex_);  // a worker between its test and its sleep finishes both
@@ -84,6 +81,7 @@ void TickPool::work() noexcept {
         active_.fetch_add(1);
         if (state_.load() == seen) job_(context_);  // still open: run() waits for this call
         active_.fetch_sub(1);
+        ++seen;  // this job's closed state: wait for the next one, not for this one to close
     }
 }
 

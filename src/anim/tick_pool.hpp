@@ -36,6 +36,8 @@ public:
 
 private:
     void work() noexcept;
+    // Sets stop_, wakes every sleeper and joins every thread started so far.
+    void stop_and_join() noexcept;
     // The next open job after `seen`, waiting awake and then asleep; false on stop.
     bool wait_for_job(std::uint64_t seen) noexcept;
 
