@@ -70,8 +70,12 @@ std::string key(const char* name, std::int64_t n) { return std::string(name) + "
 
 // Times the loop body ourselves too (steady clock), so the summary can print ratios.
 // wall: wall-clock time instead (a parallel tick's work is on several threads).
+// frame_work > 0: before each timed step the calling thread stays busy, untimed, until
+// `frame_work` seconds have passed since the previous step began (a game's own work in a
+// frame), so that the step runs once a frame as in a game, not back to back.
 template <class Step>
-void run(benchmark::State& state, const char* name, double bytes, Step&& step, bool wall = false) {
+void run(benchmark::State& state, const char* name, double bytes, Step&& step, bool wall = false,
+         double frame_work = 0.0) {
     const auto n = state.range(0);
     double seconds = 0;
     std::int64_t frames = 0;
@@ -87,7 +91,12 @@ void run(benchmark::State& state, const char* name, double bytes, Step&& step, b
         return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
     };
     double cpu_seconds = 0;  // the calling thread's CPU time, beside wall time
+    double begun = now();
     for (auto _ : state) {
+        if (frame_work > 0.0) {
+            while (now() < begun + frame_work) benchmark::ClobberMemory();
+            begun = now();
+        }
         const double c0 = wall ? cpu() : 0.0, t0 = now();
         step();
         seconds += now() - t0;
@@ -125,7 +134,10 @@ void grape_engine(benchmark::State& state, BenchPathKind kind, const char* name,
 
 // The parallel tick against the one-pass tick, both in wall-clock time, on the linear kind.
 // threads 0: one-pass; else Engine::set_parallel({.threads, .min_animations = 0}).
-void grape_engine_wall(benchmark::State& state, BenchPathKind kind, const char* name, int threads) {
+// once_a_frame: one tick per 60 Hz frame, the calling thread busy between ticks (run's
+// frame_work), so that the workers have gone to sleep when a tick opens (awake: 200 µs).
+void grape_engine_wall(benchmark::State& state, BenchPathKind kind, const char* name, int threads,
+                       bool once_a_frame = false) {
     const auto n = static_cast<std::size_t>(state.range(0));
     const auto segments = grape::scenes::bench_segments(distinct_paths);
     const auto paths = grape::scenes::bench_paths(kind, segments);
@@ -142,12 +154,18 @@ void grape_engine_wall(benchmark::State& state, BenchPathKind kind, const char* 
             engine->tick(frame);
             benchmark::ClobberMemory();
         },
-        true);
+        true, once_a_frame ? frame : 0.0);
     benchmark::DoNotOptimize(targets.data());
 }
 void BM_wall_one_pass(benchmark::State& s) { grape_engine_wall(s, BenchPathKind::linear, "wall_one_pass", 0); }
 void BM_wall_two_phase_1(benchmark::State& s) { grape_engine_wall(s, BenchPathKind::linear, "wall_two_phase_1", 1); }
 void BM_wall_parallel_2(benchmark::State& s) { grape_engine_wall(s, BenchPathKind::linear, "wall_parallel_2", 2); }
+void BM_wall_frame_one_pass(benchmark::State& s) {
+    grape_engine_wall(s, BenchPathKind::linear, "wall_frame_one_pass", 0, true);
+}
+void BM_wall_frame_parallel_2(benchmark::State& s) {
+    grape_engine_wall(s, BenchPathKind::linear, "wall_frame_parallel_2", 2, true);
+}
 
 void BM_grape_linear(benchmark::State& s) { grape_engine(s, BenchPathKind::linear, "grape_linear"); }
 void BM_grape_cubic(benchmark::State& s) { grape_engine(s, BenchPathKind::cubic_bezier, "grape_cubic"); }
@@ -368,6 +386,9 @@ BENCHMARK(BM_traffic_floor)->Apply(sizes);
 BENCHMARK(BM_wall_one_pass)->Apply(sizes);
 BENCHMARK(BM_wall_two_phase_1)->Apply(sizes);
 BENCHMARK(BM_wall_parallel_2)->Apply(sizes);
+// 16.7 ms a repetition's iteration: the large sizes only, where a parallel tick may pay.
+BENCHMARK(BM_wall_frame_one_pass)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_wall_frame_parallel_2)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_grape_linear)->Apply(sizes);
 BENCHMARK(BM_grape_cubic)->Apply(sizes);
 BENCHMARK(BM_grape_reparam_cubic)->Apply(sizes);
@@ -408,7 +429,8 @@ int main(int argc, char** argv) {
         for (const char* name : {"floor", "traffic_floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "grape_cubic_spread",
                                  "grape_reparam_cubic_spread", "tweeny_linear", "tweeny_quad", "grape_color",
                                  "grape_color_oklab", "grape_user_type", "grape_typed_double",
-                                 "grape_property_double", "wall_one_pass", "wall_two_phase_1", "wall_parallel_2"}) {
+                                 "grape_property_double", "wall_one_pass", "wall_two_phase_1", "wall_parallel_2",
+                                 "wall_frame_one_pass", "wall_frame_parallel_2"}) {
             const auto it = results.find(key(name, n));
             if (it == results.end()) continue;
             const double r = it->second.median();
@@ -453,6 +475,7 @@ int main(int argc, char** argv) {
         ratios("tweeny_quad", "grape_linear", n, "tweeny quad / linear");
         ratios("wall_one_pass", "wall_parallel_2", n, "one-pass / parallel 2 threads");
         ratios("wall_one_pass", "wall_two_phase_1", n, "one-pass / two-phase 1 thread");
+        ratios("wall_frame_one_pass", "wall_frame_parallel_2", n, "frame: one-pass / parallel 2");
         // what the calling thread itself spends: the share of the work it kept
         ratios("wall_one_pass_cpu", "wall_parallel_2_cpu", n, "one-pass / parallel 2, caller's CPU");
     }
