@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -214,6 +215,30 @@ TEST(EngineParallel, TwoThreadsMatchOneBitForBitWithHandlersTouchingOthers) {
         EXPECT_GT(one->log.size(), 1000u);
         EXPECT_FALSE(two->off_thread);
         EXPECT_FALSE(one->off_thread);
+    }
+}
+
+// Ticks with gaps longer than `awake` between them, as once a frame: sleeping workers wake by
+// themselves before the next tick is due (regular gaps) or sleep until a tick opens
+// (irregular ones), and every tick still gives the one-thread bits.
+TEST(EngineParallel, TicksAfterGapsMatchOneBitForBit) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+        SCOPED_TRACE(seed);
+        auto one = std::make_unique<World>();
+        auto two = std::make_unique<World>();
+        build(*one, test_size, seed, true);
+        build(*two, test_size, seed, true);
+        one->engine.set_parallel({.threads = 1});
+        two->engine.set_parallel({.threads = 2, .min_animations = 0, .awake = 100e-6});
+        int tick = 0;
+        for (const double dt : random_steps(seed, 40)) {
+            // 1 ms apart, then every fourth gap 3 ms: the wake the pool expects comes early
+            std::this_thread::sleep_for(std::chrono::microseconds(tick % 4 == 3 ? 3000 : 1000));
+            one->engine.tick(dt);
+            two->engine.tick(dt);
+            ASSERT_NO_FATAL_FAILURE(expect_same(*one, *two, tick++));
+        }
+        EXPECT_FALSE(two->off_thread);
     }
 }
 

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <functional>
 #include <string>
 #include <thread>
@@ -143,9 +144,11 @@ TEST(Threads, SeparateEnginesOnSeparateThreadsShareTheirPaths) {
 // handlers that read every target the workers wrote (phase 2 runs after them) and seek
 // other animations.
 // awake 0: the workers sleep after every tick, so each tick wakes them (the other path of the
-// pool's hand-over); the default keeps them awake between these back-to-back ticks.
+// pool's hand-over); the default keeps them awake between these back-to-back ticks. gap > 0:
+// the ticks that far apart, as once a frame (workers asleep wake before the next is due).
 std::vector<double> run_parallel_engine(const std::vector<grape::Path>& paths, const grape::Curve& curve, int threads,
-                                        double awake = grape::ParallelDef{}.awake) {
+                                        double awake = grape::ParallelDef{}.awake,
+                                        std::chrono::microseconds gap = std::chrono::microseconds(0)) {
     grape::Engine engine;
     engine.set_parallel({.threads = threads, .min_animations = 0, .awake = awake});
     constexpr std::size_t count = 6000;
@@ -165,7 +168,10 @@ std::vector<double> run_parallel_engine(const std::vector<grape::Path>& paths, c
             anims[(i * 31 + static_cast<std::size_t>(play)) % count].seek(0.05);
         });
     }
-    for (int frame = 0; frame < 120; ++frame) engine.tick(1.0 / 60.0);
+    for (int frame = 0; frame < 120; ++frame) {
+        if (gap.count() > 0) std::this_thread::sleep_for(gap);
+        engine.tick(1.0 / 60.0);
+    }
     std::vector<double> out;
     for (const Sprite& s : sprites) out.insert(out.end(), {s.x, s.y, s.rotation});
     out.push_back(seen);
@@ -178,6 +184,7 @@ TEST(Threads, ParallelTickOnFourThreadsMatchesOne) {
     const std::vector<double> reference = run_parallel_engine(paths, curve, 1);
     EXPECT_EQ(run_parallel_engine(paths, curve, thread_count), reference);
     EXPECT_EQ(run_parallel_engine(paths, curve, thread_count, 0.0), reference);
+    EXPECT_EQ(run_parallel_engine(paths, curve, thread_count, 100e-6, std::chrono::microseconds(1000)), reference);
     // and two such engines at once, each with its own workers
     const auto results = on_threads<std::vector<double>>([&](int) { return run_parallel_engine(paths, curve, 2); });
     for (const std::vector<double>& r : results) EXPECT_EQ(r, reference);

@@ -193,14 +193,16 @@ inline constexpr int max_tick_threads = 256;
 struct ParallelDef {
     int threads = 2;  ///< threads in all, the calling one included: [1, max_tick_threads]
     /// Below this many animations (the engine's own, not those timelines drive) phase 1 runs
-    /// on the calling thread alone. A worker asleep takes tens of µs to start, and more when
-    /// it has slept a whole frame: ticked once per 60 Hz frame, two threads broke even at
-    /// about 100,000 animations on a 2-core machine (bench/RESULTS.md), though ticks back to
-    /// back (sub-steps, workers still awake) gain from ~16,000. Lower it for those.
-    std::size_t min_animations = 131072;
+    /// on the calling thread alone. Ticked once per 60 Hz frame, two threads broke even at
+    /// about 32,000 animations on a 2-core machine and gave 1.1–1.2× at 65,536
+    /// (bench/RESULTS.md); ticks back to back (sub-steps) gain from ~16,000. Lower it for those.
+    std::size_t min_animations = 65536;
     /// Seconds a worker stays awake after its share of a tick, waiting for the next one,
     /// before it sleeps: [0, 1]. Ticks that come sooner (sub-steps, several engines) skip
-    /// the wake-up, tens of µs each; a worker awake keeps its core busy meanwhile.
+    /// the wake-up, tens of µs each; a worker awake keeps its core busy meanwhile. Ticks
+    /// that come once a frame (after a gap longer than this) are timed: a sleeping worker
+    /// wakes this long before the next is due and waits for it awake up to this long after,
+    /// so a worker spends up to twice this per frame awake.
     double awake = 200e-6;
 };
 

@@ -38,6 +38,15 @@ void TickPool::stop_and_join() noexcept {
 }
 
 void TickPool::run(Job job, void* context) noexcept {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_closed_ > awake_) {
+        // A job after a gap (a frame's first tick): expect the next one after as long again,
+        // when that is frame-like (up to 250 ms, a 4 Hz frame).
+        const auto period = now - last_gap_open_;
+        const bool regular = last_gap_open_.time_since_epoch().count() != 0 && period <= std::chrono::milliseconds(250);
+        due_.store(regular ? (now + period).time_since_epoch().count() : 0, std::memory_order_relaxed);
+        last_gap_open_ = now;
+    }
     job_ = job;
     context_ = context;
     const std::uint64_t open = state_.load(std::memory_order_relaxed) + 1;
@@ -54,19 +63,37 @@ void TickPool::run(Job job, void* context) noexcept {
         if (spins < 4096) relax();
         else std::this_thread::yield();  // the worker was descheduled mid-piece
     }
+    last_closed_ = std::chrono::steady_clock::now();
+}
+
+template <class Ready>
+bool TickPool::spin_until(Ready&& ready, std::chrono::steady_clock::time_point until) noexcept {
+    for (int spins = 1;; ++spins) {
+        if (ready()) return true;
+        relax();
+        if (spins % 64 == 0 && std::chrono::steady_clock::now() >= until) return ready();
+    }
 }
 
 bool TickPool::wait_for_job(std::uint64_t seen) noexcept {
     // seq_cst: after a sleeper counts itself, this test and run()'s store and load of
     // sleepers_ are in one order, so either the test sees the job or run() notifies.
     auto ready = [&] { return stop_.load() || state_.load() != seen; };
-    const auto until = std::chrono::steady_clock::now() + awake_;
-    for (int spins = 1;; ++spins) {
-        if (ready()) return !stop_.load();
-        relax();
-        if (spins % 64 == 0 && std::chrono::steady_clock::now() >= until) break;
-    }
+    using Clock = std::chrono::steady_clock;
+    if (spin_until(ready, Clock::now() + awake_)) return !stop_.load();
     std::unique_lock lock(mutex_);
+    const Clock::time_point due{Clock::duration{due_.load(std::memory_order_relaxed)}};
+    if (due - awake_ > Clock::now()) {
+        // Asleep until `awake` before the job after a gap is due, then awake until `awake`
+        // after it (a timed wake is late by the timer's slack, ~50 µs on Linux).
+        sleepers_.fetch_add(1);
+        const bool woken = start_.wait_until(lock, due - awake_, ready);
+        sleepers_.fetch_sub(1);
+        if (woken) return !stop_.load();
+        lock.unlock();
+        if (spin_until(ready, due + awake_)) return !stop_.load();
+        lock.lock();
+    }
     sleepers_.fetch_add(1);
     start_.wait(lock, ready);
     sleepers_.fetch_sub(1);
