@@ -2,9 +2,9 @@
 // 60 Hz: grape's engine along (a) linear paths, (b) cubic Béziers, (c) arc-length
 // reparametrized cubic Béziers; tweeny doing the same journeys on two floats (linear and
 // quad-in-out); and a hand-written loop over plain structs with the same arithmetic (the
-// floor). Paths are shared: 1024 distinct shapes (scenes::bench_paths), animation i takes
-// shape i % 1024. Reports ns per animation update and bytes per animation, then a summary
-// with the ratios.
+// floor). Paths are shared: K = 1024 distinct shapes (scenes::bench_paths; GRAPE_BENCH_PATHS
+// sets fewer), animation i takes shape i % K. Reports ns per animation update and bytes per
+// animation, then a summary with the ratios.
 #include <grape/anim.hpp>
 #include <grape/color.hpp>
 
@@ -52,7 +52,19 @@ void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
 namespace {
 
 using grape::scenes::BenchPathKind;
-constexpr std::size_t distinct_paths = 1024;
+// GRAPE_BENCH_PATHS=K (1 … 1024) shares K shapes instead: with few, the arc-length tables
+// stay in cache, which splits that row's cost into the tables' traffic and the arithmetic.
+std::size_t shared_paths() {
+    const char* text = std::getenv("GRAPE_BENCH_PATHS");
+    if (!text) return 1024;
+    const unsigned long k = std::strtoul(text, nullptr, 10);
+    if (k < 1 || k > 1024) {
+        std::fprintf(stderr, "GRAPE_BENCH_PATHS must be 1 ... 1024 (got '%s')\n", text);
+        std::exit(2);
+    }
+    return k;
+}
+const std::size_t distinct_paths = shared_paths();
 constexpr double frame = 1.0 / 60.0;
 
 struct Result {
