@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -187,6 +188,38 @@ TEST(Constraints, FixedPointAndUserCircleBehaveLikeTheirBuiltInEquivalents) {
     const grape::testing::FixedAndFree held = grape::testing::fixed_point_against_spring({});
     EXPECT_LT(length(held.fixed), 1e-9);
     EXPECT_GT(length(held.free - Vec2{1, 0}), 0.1);
+}
+
+// A step evaluates its rows once per integrator stage: the rows it evaluates at the step's
+// start (to refuse degenerate ones) are the first stage's, at the same values, and are not
+// evaluated again. Counted on a user constraint (a bead on a circle of radius 2): euler and
+// semi-implicit Euler 1, midpoint and velocity Verlet 2, RK4 4, over three steps. Baumgarte
+// drift control, so that no projection adds evaluations; the motion itself is the anchor's
+// bit for bit (FixedPointAndUserCircleBehaveLikeTheirBuiltInEquivalents).
+TEST(Constraints, AStepEvaluatesTheRowsOncePerIntegratorStage) {
+    const std::pair<Integrator, int> cases[] = {{Integrator::euler, 1},
+                                                {Integrator::semi_implicit_euler, 1},
+                                                {Integrator::midpoint, 2},
+                                                {Integrator::velocity_verlet, 2},
+                                                {Integrator::rk4, 4}};
+    for (const auto& [integrator, stages] : cases) {
+        ParticleSystem system({.integrator = integrator, .drift = {.method = DriftControl::baumgarte}});
+        const auto p = system.create_particle({.position = {2, 0}, .velocity = {0, 1}});
+        system.add_gravity({0, -9.81});
+        int calls = 0;
+        system.create_constraint({{p}, [&calls](std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out) {
+                                      ++calls;
+                                      out.value = 0.5 * (dot(x[0], x[0]) - 4.0);
+                                      out.jacobian[0] = x[0];
+                                      out.jdot_v = dot(v[0], v[0]);
+                                  }});
+        for (int step = 1; step <= 3; ++step) {
+            const StepStats stats = system.step(1.0 / 60.0);
+            EXPECT_EQ(stats.evaluations, stages) << to_string(integrator);
+            EXPECT_EQ(calls, step * stages) << to_string(integrator) << " step " << step;
+        }
+        EXPECT_NEAR(length(system.position(p)), 2.0, 1e-3) << to_string(integrator);  // still on the circle
+    }
 }
 
 // ---------------------------------------------------------------------------------------

@@ -313,7 +313,7 @@ public:
 private:
     std::uint32_t checked(ParticleId id, std::string_view where) const;
     StepStats single_step(double dt);
-    void refuse_degenerate_rows(bool evaluated);  // throws for a violated row with ∇C = 0
+    void refuse_degenerate_rows();  // throws for a violated row with ∇C = 0 (rows evaluated)
     std::unique_ptr<detail::ParticleState> state_;  // model, state and solver (src/dynamics/particle_state.hpp)
 };
 

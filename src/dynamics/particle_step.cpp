@@ -11,7 +11,6 @@ namespace grape {
 namespace {
 
 using detail::ConstraintRecord;
-using detail::evaluated_rows;
 using detail::number_text;
 
 bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
@@ -25,9 +24,10 @@ bool all_finite(std::span<const Vec2> points) noexcept {
 }  // namespace
 
 
-void ParticleSystem::refuse_degenerate_rows(bool evaluated) {
+// The rows must be evaluated at the current state (both steps do so first).
+void ParticleSystem::refuse_degenerate_rows() {
     if (state_->constraints.empty()) return;
-    auto& s = evaluated ? state_->solver : evaluated_rows(*state_);
+    const auto& s = state_->solver;
     for (std::size_t r = 0; r < s.rows; ++r) {
         // C = 0 with no gradient (a user constraint at rest) asks for no force: let it be.
         if (s.gradient_norm2[r] > 0.0 || s.c[r] == 0.0) continue;
@@ -78,7 +78,7 @@ StepStats ParticleSystem::single_step(double dt) {
     StepStats report;
     if (state_->def.integrator == Integrator::rattle) {
         if (s.rows > 0) s.evaluate_rows(state_->positions, state_->velocities);  // the step's start, as rattle_step reads it
-        refuse_degenerate_rows(true);
+        refuse_degenerate_rows();
         const bool ok = s.rattle_step(state_->time, state_->positions, state_->velocities, dt, report.projection_iterations);
         report.evaluations = s.evaluations;
         report.substeps = 1;
@@ -92,7 +92,9 @@ StepStats ParticleSystem::single_step(double dt) {
         report.status = s.worst;
         return report;
     }
-    refuse_degenerate_rows(false);
+    // The rows at the step's start, for the refusal and for the integrator's first stage.
+    if (!state_->constraints.empty()) detail::evaluated_rows_for_step(*state_);
+    refuse_degenerate_rows();
     const std::span<double> q(reinterpret_cast<double*>(state_->positions.data()), 2 * state_->positions.size());
     const std::span<double> v(reinterpret_cast<double*>(state_->velocities.data()), 2 * state_->velocities.size());
     const StepStats stats = state_->stepper.step(s, state_->time, q, v, dt);

@@ -26,6 +26,9 @@ struct SolverWorkspace final : SecondOrderSystem {
 
     // -- topology, rebuilt when particles or constraints are added --
     bool dirty = true;
+    // The (x, v) the rows were evaluated at by evaluate_rows_for_step, while still current.
+    std::vector<Vec2> rows_x, rows_v;
+    bool rows_remembered = false;
     std::size_t rows = 0;
     std::vector<std::uint32_t> row_constraint;  // row → constraint index
     std::vector<std::uint32_t> row_begin;       // row → first block (rows + 1 entries)
@@ -99,6 +102,10 @@ struct SolverWorkspace final : SecondOrderSystem {
 
     // C, J, Ċ, J̇q̇ for every row at (x, v).
     void evaluate_rows(std::span<const Vec2> x, std::span<const Vec2> v);
+    // evaluate_rows, remembering (x, v) so that the next acceleration() at exactly these
+    // values (an integrator's first stage, on its own copy of the state) uses the rows as they
+    // are instead of evaluating them again. Any other evaluation forgets them.
+    void evaluate_rows_for_step(std::span<const Vec2> x, std::span<const Vec2> v);
     // C, rhs = −C and |∇C|² only (what a Newton iteration on positions needs); returns the largest
     // |C|/|∇C|. Jacobians and rates are left as they were unless a curve or user row forces
     // the full evaluation.

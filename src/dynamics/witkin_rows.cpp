@@ -8,7 +8,15 @@
 
 namespace grape::detail {
 
+void SolverWorkspace::evaluate_rows_for_step(std::span<const Vec2> x, std::span<const Vec2> v) {
+    evaluate_rows(x, v);
+    rows_x.assign(x.begin(), x.end());
+    rows_v.assign(v.begin(), v.end());
+    rows_remembered = true;
+}
+
 void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec2> v) {
+    rows_remembered = false;
     // The built-in kinds write Ċ and |∇C|² with their row; only user rows take the general
     // pass over their blocks at the end.
     std::uint32_t row = 0;
@@ -99,6 +107,7 @@ void SolverWorkspace::evaluate_rows(std::span<const Vec2> x, std::span<const Vec
 }
 
 double SolverWorkspace::evaluate_values(std::span<const Vec2> x, std::span<const Vec2> v) {
+    rows_remembered = false;
     // Rods, anchors and fixed points in one light pass; any other kind takes evaluate_rows.
     std::uint32_t row = 0;
     double worst2 = 0.0;  // max C²/|∇C|²
