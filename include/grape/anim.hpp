@@ -202,7 +202,8 @@ struct ParallelDef {
     /// the wake-up, tens of µs each; a worker awake keeps its core busy meanwhile. Ticks
     /// that come once a frame (after a gap longer than this) are timed: a sleeping worker
     /// wakes this long before the next is due and waits for it awake up to this long after,
-    /// so a worker spends up to twice this per frame awake.
+    /// so a worker spends up to twice this per frame awake. 0: workers never spin and are
+    /// only woken by a tick (no timed wake either).
     double awake = 200e-6;
 };
 

@@ -39,9 +39,10 @@ void TickPool::stop_and_join() noexcept {
 
 void TickPool::run(Job job, void* context) noexcept {
     const auto now = std::chrono::steady_clock::now();
-    if (now - last_closed_ > awake_) {
+    if (awake_.count() > 0 && now - last_closed_ > awake_) {
         // A job after a gap (a frame's first tick): expect the next one after as long again,
-        // when that is frame-like (up to 250 ms, a 4 Hz frame).
+        // when that is frame-like (up to 250 ms, a 4 Hz frame). Not when workers are not to
+        // wait awake at all: a timed wake would then only wake them to sleep again.
         const auto period = now - last_gap_open_;
         const bool regular = last_gap_open_.time_since_epoch().count() != 0 && period <= std::chrono::milliseconds(250);
         due_.store(regular ? (now + period).time_since_epoch().count() : 0, std::memory_order_relaxed);
