@@ -57,8 +57,9 @@ using grape::scenes::BenchPathKind;
 std::size_t shared_paths() {
     const char* text = std::getenv("GRAPE_BENCH_PATHS");
     if (!text) return 1024;
-    const unsigned long k = std::strtoul(text, nullptr, 10);
-    if (k < 1 || k > 1024) {
+    char* end = nullptr;
+    const unsigned long k = std::strtoul(text, &end, 10);
+    if (end == text || *end != '\0' || k < 1 || k > 1024) {
         std::fprintf(stderr, "GRAPE_BENCH_PATHS must be 1 ... 1024 (got '%s')\n", text);
         std::exit(2);
     }

@@ -41,13 +41,6 @@ inline SolverWorkspace& evaluated_rows(ParticleState& state) {
     s.evaluate_rows(state.positions, state.velocities);
     return s;
 }
-// The same before a step: the integrator's first stage, at these very values, reuses them.
-inline SolverWorkspace& evaluated_rows_for_step(ParticleState& state) {
-    auto& s = state.solver;
-    s.look_at(state.view());
-    s.evaluate_rows_for_step(state.positions, state.velocities);
-    return s;
-}
 
 // The integrators see positions and velocities as 2n doubles.
 static_assert(sizeof(Vec2) == 2 * sizeof(double), "positions are viewed as 2n doubles");

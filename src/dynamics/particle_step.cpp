@@ -92,8 +92,9 @@ StepStats ParticleSystem::single_step(double dt) {
         report.status = s.worst;
         return report;
     }
-    // The rows at the step's start, for the refusal and for the integrator's first stage.
-    if (!state_->constraints.empty()) detail::evaluated_rows_for_step(*state_);
+    // The rows at the step's start (prepare() looked at the system), for the refusal and for
+    // the integrator's first stage, which reuses them.
+    if (s.rows > 0) s.evaluate_rows_for_step(state_->positions, state_->velocities);
     refuse_degenerate_rows();
     const std::span<double> q(reinterpret_cast<double*>(state_->positions.data()), 2 * state_->positions.size());
     const std::span<double> v(reinterpret_cast<double*>(state_->velocities.data()), 2 * state_->velocities.size());
