@@ -28,11 +28,21 @@ struct Target {
 struct FloatTarget {
     float x = 0, y = 0;
 };
+// y not right after x (the lanes write an adjacent (x, y) as one pair, these member by
+// member); z must keep its value. The float one's y lies 8 bytes on, a double's step.
+struct SpacedTarget {
+    double y = 0, z = 7, x = 0;
+};
+struct SpacedFloatTarget {
+    float x = 0, z = 7, y = 0;
+};
 
 struct World {
     Engine engine;
     std::vector<Target> doubles;
     std::vector<FloatTarget> floats;
+    std::vector<SpacedTarget> spaced;
+    std::vector<SpacedFloatTarget> spaced_floats;
     std::vector<Animation> anims;
 };
 
@@ -65,6 +75,8 @@ void build(World& w, std::size_t n, unsigned seed, bool runs, bool general, int 
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     w.doubles.resize(n);
     w.floats.resize(n);
+    w.spaced.resize(n);
+    w.spaced_floats.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         AnimationDef def;
         const std::size_t group = runs ? i / 97 : static_cast<std::size_t>(unit(r) * 1000.0);
@@ -80,9 +92,13 @@ void build(World& w, std::size_t n, unsigned seed, bool runs, bool general, int 
         constexpr std::size_t first[] = {0, 0, 2, 6};  // of the pair of paths `only` picks
         const Path& path = paths[only ? first[only] + pick % 2 : pick % std::size(paths)];
         const double duration = 0.2 + 1.8 * unit(r);
-        const bool is_float = runs ? group % 5 == 0 : unit(r) < 0.2;
-        Animation a = is_float ? w.engine.create_2d_animation(w.floats[i], path, duration, def)
-                               : w.engine.create_2d_animation(w.doubles[i], path, duration, def);
+        const double v = unit(r);  // the target's layout: doubles, floats, spaced doubles or floats
+        const std::size_t layout = runs ? (group % 5 == 0 ? 1 : group % 5 == 1 ? 2 + group / 5 % 2 : 0)
+                                        : v < 0.2 ? 1 : v < 0.3 ? 2 : v < 0.35 ? 3 : 0;
+        Animation a = layout == 1   ? w.engine.create_2d_animation(w.floats[i], path, duration, def)
+                      : layout == 2 ? w.engine.create_2d_animation(w.spaced[i], path, duration, def)
+                      : layout == 3 ? w.engine.create_2d_animation(w.spaced_floats[i], path, duration, def)
+                                    : w.engine.create_2d_animation(w.doubles[i], path, duration, def);
         if (unit(r) < 0.05) a.reverse();
         if (general) a.on_update([] {});
         w.anims.push_back(a);
@@ -94,6 +110,11 @@ void expect_same(const World& a, const World& b, int tick) {
         ASSERT_EQ(0, std::memcmp(&a.doubles[k], &b.doubles[k], sizeof(Target)))
             << "tick " << tick << " animation " << k << ": " << a.doubles[k].x << " " << b.doubles[k].x;
         ASSERT_EQ(0, std::memcmp(&a.floats[k], &b.floats[k], sizeof(FloatTarget))) << "tick " << tick << " animation " << k;
+        ASSERT_EQ(0, std::memcmp(&a.spaced[k], &b.spaced[k], sizeof(SpacedTarget))) << "tick " << tick << " animation " << k;
+        ASSERT_EQ(0, std::memcmp(&a.spaced_floats[k], &b.spaced_floats[k], sizeof(SpacedFloatTarget)))
+            << "tick " << tick << " animation " << k;
+        ASSERT_EQ(7.0, a.spaced[k].z) << "animation " << k;
+        ASSERT_EQ(7.0f, a.spaced_floats[k].z) << "animation " << k;
     }
     for (std::size_t k = 0; k < a.anims.size(); ++k) {
         ASSERT_EQ(a.anims[k].alive(), b.anims[k].alive()) << "tick " << tick << " animation " << k;

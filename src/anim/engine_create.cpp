@@ -25,7 +25,7 @@ Hot custom_hot(void* target, double duration, const AnimationDef& def) noexcept 
     Hot h{};
     h.rate = def.time_scale / duration;
     h.target = static_cast<char*>(target);
-    h.kind = def.curve.kind();
+    h.kind = kind_byte(def.curve.kind(), LaneKernel::other);  // add() puts in the path's
     h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
                                         (def.reversed ? flag_reversed : 0));
     return h;
@@ -91,6 +91,7 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int rep
     }
     const auto dense = static_cast<std::uint32_t>(hot_.size());
     hot.phase = delay > 0.0 ? -delay / duration : 0.0;
+    hot.kind = kind_byte(curve_kind(hot), lane_kernel(path_kind_[hot.path]));
     if (hot.flags & flag_reversed) hot.flags |= flag_backward;
     hot_.push_back(hot);
     cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot, 0, curve});
@@ -128,7 +129,7 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
     h.rate = def.time_scale / duration;
     h.target = target ? static_cast<char*>(target) + x_offset : nullptr;
     h.y_offset = static_cast<std::int16_t>(y_from_x);
-    h.kind = def.curve.kind();
+    h.kind = kind_byte(def.curve.kind(), LaneKernel::other);  // add() puts in the path's
     h.flags = static_cast<std::uint8_t>((is_float ? flag_float : 0) | (def.paused ? flag_paused : 0) |
                                         (def.yoyo ? flag_yoyo : 0) | (def.reversed ? flag_reversed : 0));
     std::optional<Extra> extra;

@@ -81,7 +81,7 @@ inline bool EngineImpl::plain_advance(Hot* hot, Cold* cold, std::size_t i, doubl
     if ((h.flags & (flag_paused | flag_dead | flag_custom)) || !(phase >= 0.0) || !h.target ||
         (h.phase < 0.0 && (h.flags & flag_listens)))  // the first play begins: on_start
         return false;
-    if (phase1 && h.kind == CurveKind::function) return false;  // user code: the calling thread
+    if (phase1 && curve_kind(h) == CurveKind::function) return false;  // user code: the calling thread
     if (phase >= play_end) {
         // A new play that nobody listens for, reached within this tick: handled here.
         Cold& c = cold[i];
@@ -92,7 +92,7 @@ inline bool EngineImpl::plain_advance(Hot* hot, Cold* cold, std::size_t i, doubl
     }
     h.phase = phase;
     const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;
-    u = has_parameters(h.kind) ? curves_[cold[i].curve].curve(x) : detail::ease_formula(h.kind, x);
+    u = has_parameters(curve_kind(h)) ? curves_[cold[i].curve].curve(x) : detail::ease_formula(curve_kind(h), x);
     return true;
 }
 

@@ -49,9 +49,30 @@ struct Hot {
     char* target;           // 2-D: the target's x member; N-D: the target (null: nothing to write)
     std::uint32_t path;     // index into the path table
     std::int16_t y_offset;  // 2-D: address of y minus address of x
-    CurveKind kind;
+    std::uint8_t kind;      // CurveKind in the low 6 bits, the path's LaneKernel in the top 2 (see lane_kind)
     std::uint8_t flags;
 };
+
+// A record's kind byte: its curve kind, and which lean loop its path's kernel suits, so the
+// lean runs test the path with the compare of kind and flags they make anyway instead of a
+// load of the path's kernel kind per record. The path of a live record never changes.
+enum class LaneKernel : std::uint8_t { other, linear, cubic, arc };
+inline constexpr unsigned lane_shift = 6;
+static_assert(static_cast<unsigned>(CurveKind::function) < (1u << lane_shift), "CurveKind needs the kind byte's low 6 bits");
+constexpr LaneKernel lane_kernel(KernelKind k) noexcept {
+    switch (k) {
+        case KernelKind::linear: return LaneKernel::linear;
+        case KernelKind::cubic: return LaneKernel::cubic;
+        case KernelKind::reparam_linear:
+        case KernelKind::reparam_cubic: return LaneKernel::arc;
+        default: return LaneKernel::other;
+    }
+}
+constexpr std::uint8_t kind_byte(CurveKind c, LaneKernel p) noexcept {
+    return static_cast<std::uint8_t>(static_cast<unsigned>(c) | static_cast<unsigned>(p) << lane_shift);
+}
+inline CurveKind curve_kind(const Hot& h) noexcept { return static_cast<CurveKind>(h.kind & ((1u << lane_shift) - 1)); }
+inline LaneKernel lane_kind(const Hot& h) noexcept { return static_cast<LaneKernel>(h.kind >> lane_shift); }
 
 /// Read on loops, completion, curves with parameters and queries: 24 bytes.
 struct Cold {
@@ -133,8 +154,8 @@ struct PathEntry {
 /// What the hot loop reads of a shared path, the linear and cubic coefficients copied in so
 /// that most updates never leave the engine's storage. Line-aligned with the kind first: a
 /// cubic reads two cache lines, a reparametrized path one and the three of its table's
-/// piece. Lines read LineFast instead (and the kind from the dense path_kind_), 32 bytes,
-/// so that a thousand shared lines take half the cache they would here.
+/// piece. Lines read LineFast instead, 32 bytes, so that a thousand shared lines take half
+/// the cache they would here.
 struct alignas(64) PathFast {
     KernelKind fast = KernelKind::generic;
     const double* table = nullptr;   // reparametrized: the kernel's ArcLengthTable values
@@ -245,7 +266,7 @@ private:
 
     std::vector<PathEntry> paths_;
     std::vector<PathFast> path_fast_;  // same index as paths_
-    std::vector<KernelKind> path_kind_;  // path_fast_[i].fast, dense (the lean lane's test)
+    std::vector<KernelKind> path_kind_;  // path_fast_[i].fast, dense (kernel_point's test; a record's kind byte)
     std::vector<LineFast> line_fast_;    // path_fast_[i].c[0], c[1] (lines: the lean lane's read)
     std::vector<ArcFast> arc_fast_;      // path_fast_[i].table, steps (arc length: the lean lane's read)
     std::vector<std::uint32_t> free_paths_;

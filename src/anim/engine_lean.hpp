@@ -15,8 +15,7 @@ namespace grape::detail {
 
 // The shared path tables the lean lane reads.
 struct LeanTables {
-    const KernelKind* kind;  // per path
-    const LineFast* line;
+    const LineFast* line;    // per path
     const PathFast* fast;
     const ArcFast* arc;
     const Cold* cold;        // per record
@@ -77,9 +76,12 @@ inline constexpr std::uint16_t lean_mask = 0xFF | (flag_paused | flag_dead | fla
 // rounding is monotone, so every intermediate keeps its bound).
 constexpr bool stays_on_path(CurveKind k) noexcept { return k <= CurveKind::quint_out_in; }
 
-// What a run of kind K and target type F compares kind_and_flags(h) & lean_mask with.
-template <CurveKind K, bool F>
-inline constexpr std::uint16_t run_want = static_cast<std::uint16_t>(static_cast<unsigned>(K) | (F ? flag_float << 8 : 0));
+// What a run of kind K on paths of lane kernel L and target type F compares
+// kind_and_flags(h) & lean_mask with.
+template <CurveKind K, LaneKernel L, bool F>
+inline constexpr std::uint16_t run_want = static_cast<std::uint16_t>(kind_byte(K, L) | (F ? flag_float << 8 : 0));
+template <KernelKind P>
+inline constexpr LaneKernel lane_of = lane_kernel(P);
 
 // The point at u of a line or cubic kernel, from the engine's dense tables.
 template <KernelKind P>
@@ -96,13 +98,12 @@ inline Vec2 lean_point(const LineFast* lines, const PathFast* fast, std::uint32_
 
 // One record of a lean run: false (nothing written) when it does not belong to the run.
 template <CurveKind K, KernelKind P, bool F>
-inline bool lean_step(Hot& h, const KernelKind* kinds, const LineFast* lines, const PathFast* fast, double dt) noexcept {
-    constexpr std::uint16_t want = run_want<K, F>;
+inline bool lean_step(Hot& h, const LineFast* lines, const PathFast* fast, double dt) noexcept {
+    constexpr std::uint16_t want = run_want<K, lane_of<P>, F>;
     const double phase = h.phase + dt * h.rate;
     // started before this tick and still inside the play (either way: the rate is < 0
     // when reversed at run time)
-    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) ||
-        !h.target || kinds[h.path] != P)
+    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) || !h.target)
         return false;
     const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
     if constexpr (!stays_on_path(K))
@@ -124,18 +125,17 @@ template <CurveKind K, KernelKind P, bool F>
 GRAPE_FLATTEN std::size_t lean_run(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
     static_assert(!has_parameters(K) && (P == KernelKind::linear || P == KernelKind::cubic));
     static_assert(cold_ahead < hot_ahead);
-    const KernelKind* const kinds = t.kind;  // locals: the target writes cannot alias them
-    const LineFast* const lines = t.line;
+    const LineFast* const lines = t.line;  // locals: the target writes cannot alias them
     const PathFast* const fast = t.fast;
     const Cold* const cold = t.cold;
     const std::size_t far = n > hot_ahead ? n - hot_ahead : 0;
     for (; i < far; ++i) {
         ask_hot(hot, i + hot_ahead);
         ask_cold_if_ending(hot, cold, i + cold_ahead, dt);
-        if (!lean_step<K, P, F>(hot[i], kinds, lines, fast, dt)) return i;
+        if (!lean_step<K, P, F>(hot[i], lines, fast, dt)) return i;
     }
     for (; i < n; ++i)
-        if (!lean_step<K, P, F>(hot[i], kinds, lines, fast, dt)) return i;
+        if (!lean_step<K, P, F>(hot[i], lines, fast, dt)) return i;
     return i;
 }
 

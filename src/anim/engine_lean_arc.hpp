@@ -18,7 +18,7 @@ namespace grape::detail {
 template <CurveKind K, bool F, bool Far>
 inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::size_t i, std::size_t n, double dt,
                         ArcLengthTable::Piece& piece) noexcept {
-    constexpr std::uint16_t want = run_want<K, F>;
+    constexpr std::uint16_t want = run_want<K, LaneKernel::arc, F>;
     if constexpr (Far) {
         ask_hot(hot, i + hot_ahead);
         ask_cold_if_ending(hot, cold, i + cold_ahead, dt);
@@ -101,7 +101,7 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
     constexpr std::size_t batch = 32;
     const ArcFast* const arcs = t.arc;
     const Cold* const cold = t.cold;
-    const LaneConsts c = lane_consts<K, F>(dt);
+    const LaneConsts c = lane_consts<K, LaneKernel::arc, F>(dt);
     ArcLengthTable::Piece piece[batch];
     while (i < n) {
         const std::size_t m = std::min(batch, n - i);

@@ -54,15 +54,12 @@ inline constexpr auto lean_runs = lean_table(std::make_index_sequence<lean_kinds
 
 // The lean run that record i would start, or null.
 inline LeanRun lean_for(const Hot& h, const LeanTables& t) noexcept {
-    const auto kind = static_cast<std::size_t>(h.kind);
-    if (kind >= lean_kinds) return nullptr;
-    const KernelKind p = t.kind[h.path];
+    const auto kind = static_cast<std::size_t>(curve_kind(h));
+    const LaneKernel p = lane_kind(h);
+    if (kind >= lean_kinds || p == LaneKernel::other) return nullptr;
     const std::size_t type = (h.flags & flag_float) ? 1 : 0;
     const std::size_t wide = t.wide ? 1 : 0;
-    if (p == KernelKind::linear) return lean_runs[kind][0][wide][type];
-    if (p == KernelKind::cubic) return lean_runs[kind][1][wide][type];
-    if (is_arc(p)) return lean_runs[kind][2][wide][type];
-    return nullptr;
+    return lean_runs[kind][static_cast<std::size_t>(p) - 1][wide][type];
 }
 
 }  // namespace grape::detail

@@ -129,9 +129,9 @@ struct LaneConsts {
     __m256d step, zero, end;
     __m256i flags_mask, flags_want;
 };
-template <CurveKind K, bool F>
+template <CurveKind K, LaneKernel L, bool F>
 GRAPE_AVX2 inline LaneConsts lane_consts(double dt) noexcept {
-    constexpr std::uint16_t want = run_want<K, F>;
+    constexpr std::uint16_t want = run_want<K, L, F>;
     return {_mm256_set1_pd(dt), _mm256_setzero_pd(), _mm256_set1_pd(play_end),
             _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{lean_mask} << 48)),
             _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{want} << 48))};
@@ -155,10 +155,11 @@ GRAPE_AVX2 inline void ask_ahead_quad(const Hot* hot, const Cold* cold, std::siz
 // that matters) when any fails lean_step's tests of kind and flags, started and inside the
 // play, a target. The path kernel is the caller's to test.
 template <CurveKind K>
-GRAPE_AVX2 inline bool lanes_step(const Hot* h, const LaneConsts& c, __m256d& phase, Lanes& u) noexcept {
+GRAPE_AVX2 inline bool lanes_step(const Hot* h, const LaneConsts& c, __m256d& phase, Lanes& u, __m256i* rest = nullptr) noexcept {
     constexpr int backward_bit = 56 + 2;  // flag_backward's place in the last word
     static_assert(flag_backward == 1 << (backward_bit - 56));
     const Quad q = load_quad(h);
+    if (rest) *rest = q.rest;
     phase = _mm256_add_pd(q.phase, _mm256_mul_pd(c.step, q.rate));
     const __m256i kind_ok = _mm256_cmpeq_epi64(_mm256_and_si256(q.rest, c.flags_mask), c.flags_want);
     const __m256i no_target = _mm256_cmpeq_epi64(q.target, _mm256_setzero_si256());
@@ -182,6 +183,34 @@ GRAPE_AVX2 inline void store_phases(Hot* h, __m256d phase) noexcept {
     _mm_storeh_pd(&h[3].phase, hi);
 }
 
+// Whether all four records' y member lies right after x (y_offset, bits 32–47 of the last
+// word, is sizeof(T)): the common layout, written as one pair.
+template <class T>
+GRAPE_AVX2 inline bool adjacent(__m256i rest) noexcept {
+    const __m256i y = _mm256_and_si256(rest, _mm256_set1_epi64x(0xFFFFll << 32));
+    return _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(y, _mm256_set1_epi64x(static_cast<long long>(sizeof(T)) << 32)))) == 0xF;
+}
+// lean_point's operations on (x, y) as one pair of lanes: the same bits.
+template <KernelKind P>
+GRAPE_AVX2 inline __m128d pair_point(const LineFast* lines, const PathFast* fast, std::uint32_t path, double u) noexcept {
+    const __m128d v = _mm_set1_pd(u);
+    if constexpr (P == KernelKind::linear) {
+        const auto* c = reinterpret_cast<const double*>(lines[path].c);
+        return _mm_add_pd(_mm_loadu_pd(c), _mm_mul_pd(_mm_loadu_pd(c + 2), v));
+    } else {
+        const auto* c = reinterpret_cast<const double*>(fast[path].c);
+        const __m128d a = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(c + 6), v), _mm_loadu_pd(c + 4));
+        const __m128d b = _mm_add_pd(_mm_mul_pd(a, v), _mm_loadu_pd(c + 2));
+        return _mm_add_pd(_mm_mul_pd(b, v), _mm_loadu_pd(c));
+    }
+}
+// write_pair for y right after x.
+template <class T>
+GRAPE_AVX2 inline void store_pair(char* x, __m128d p) noexcept {
+    if constexpr (std::is_same_v<T, double>) _mm_storeu_pd(reinterpret_cast<double*>(x), p);
+    else _mm_store_sd(reinterpret_cast<double*>(x), _mm_castps_pd(_mm_cvtpd_ps(p)));
+}
+
 // lean_run for the polynomial easings on lines or cubics, four records at a time while at
 // least `hot_ahead` records remain (lean_run takes the rest, and any group of four that holds
 // a record leaving the run, one record at a time).
@@ -189,29 +218,32 @@ template <CurveKind K, KernelKind P, bool F>
 GRAPE_AVX2 GRAPE_FLATTEN std::size_t lean_run_wide(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n,
                                                    double dt) noexcept {
     static_assert(stays_on_path(K) && (P == KernelKind::linear || P == KernelKind::cubic));
-    const KernelKind* const kinds = t.kind;  // locals: the target writes cannot alias them
-    const LineFast* const lines = t.line;
+    const LineFast* const lines = t.line;  // locals: the target writes cannot alias them
     const PathFast* const fast = t.fast;
     const Cold* const cold = t.cold;
-    const LaneConsts c = lane_consts<K, F>(dt);
+    const LaneConsts c = lane_consts<K, lane_of<P>, F>(dt);
+    using T = std::conditional_t<F, float, double>;
     const std::size_t far = n > hot_ahead ? n - hot_ahead : 0;
     for (; i + 4 <= far; i += 4) {
         ask_ahead_quad(hot, cold, i, c);
         Hot* const h = hot + i;
         __m256d phase;
         Lanes u;
-        if (!lanes_step<K>(h, c, phase, u) || kinds[h[0].path] != P || kinds[h[1].path] != P || kinds[h[2].path] != P ||
-            kinds[h[3].path] != P) {
+        __m256i rest;
+        if (!lanes_step<K>(h, c, phase, u, &rest)) {
             for (std::size_t j = 0; j < 4; ++j)
-                if (!lean_step<K, P, F>(h[j], kinds, lines, fast, dt)) return i + j;
+                if (!lean_step<K, P, F>(h[j], lines, fast, dt)) return i + j;
             continue;
         }
         store_phases(h, phase);
         alignas(32) double us[4];
         _mm256_store_pd(us, u.v);
-        for (std::size_t j = 0; j < 4; ++j)  // lean_step's point and write
-            write_pair<std::conditional_t<F, float, double>>(h[j].target, h[j].y_offset,
-                                                             lean_point<P>(lines, fast, h[j].path, us[j]));
+        if (adjacent<T>(rest)) {  // y right after x in all four: (x, y) as one pair
+            for (std::size_t j = 0; j < 4; ++j) store_pair<T>(h[j].target, pair_point<P>(lines, fast, h[j].path, us[j]));
+        } else {
+            for (std::size_t j = 0; j < 4; ++j)  // lean_step's point and write
+                write_pair<T>(h[j].target, h[j].y_offset, lean_point<P>(lines, fast, h[j].path, us[j]));
+        }
     }
     return lean_run<K, P, F>(hot, t, i, n, dt);
 }

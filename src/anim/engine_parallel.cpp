@@ -95,7 +95,7 @@ GRAPE_FLATTEN std::size_t EngineImpl::advance_plain(std::size_t begin, std::size
     Hot* const hot = hot_.data();
     Cold* const cold = cold_.data();
     const PathFast* const fast = path_fast_.data();
-    const LeanTables tables{path_kind_.data(), line_fast_.data(), fast, arc_fast_.data(), cold, wide_lanes()};
+    const LeanTables tables{line_fast_.data(), fast, arc_fast_.data(), cold, wide_lanes()};
     std::size_t k = 0;
     for (std::size_t i = begin; i < end; ++i) {
         if (const LeanRun run = lean_for(hot[i], tables)) {  // formula curves only: no user code

@@ -18,7 +18,7 @@ namespace grape::detail {
 double EngineImpl::progress_of(std::uint32_t dense) const noexcept {
     const Hot& h = hot_[dense];
     const double phase = std::clamp(h.phase, 0.0, 1.0);
-    return ease(h.kind, cold_[dense].curve, (h.flags & flag_backward) ? 1.0 - phase : phase);
+    return ease(curve_kind(h), cold_[dense].curve, (h.flags & flag_backward) ? 1.0 - phase : phase);
 }
 
 Vec2 EngineImpl::value_of(std::uint32_t dense) const noexcept {
@@ -155,7 +155,7 @@ GRAPE_FLATTEN std::size_t EngineImpl::plain_run(std::size_t i, std::size_t n, do
     Hot* const hot = hot_.data();
     Cold* const cold = cold_.data();
     const PathFast* const fast = path_fast_.data();
-    const LeanTables tables{path_kind_.data(), line_fast_.data(), fast, arc_fast_.data(), cold, wide_lanes()};
+    const LeanTables tables{line_fast_.data(), fast, arc_fast_.data(), cold, wide_lanes()};
     constexpr std::size_t batch = 32;
     double u[batch];
     ArcLengthTable::Piece piece[batch];

@@ -487,7 +487,7 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     l.target = h->target;
     l.path = h->path;
     l.y_offset = h->y_offset;
-    l.kind = h->kind;
+    l.kind = curve_kind(*h);
     e.p0 = c.p0;
     e.cj = cj;
     e.curve = engine_.cold(dense).curve;
@@ -497,7 +497,7 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     l.until = interval_until(l, e, lo, hi, true, r.elapsed);
     if (h->flags & flag_float) bits |= root_float;
     if (cs.backward) bits |= root_backward;
-    if (plain && c.p0 == 0.0 && cj == 0.0 && !has_parameters(h->kind)) bits |= root_lean;
+    if (plain && c.p0 == 0.0 && cj == 0.0 && !has_parameters(curve_kind(*h))) bits |= root_lean;
     l.bits = static_cast<std::uint8_t>(bits | root_one);
     due_[i] = clock_ + (static_cast<double>(l.until) - l.elapsed);
 }
