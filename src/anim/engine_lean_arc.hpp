@@ -91,7 +91,8 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t lean_arc_run_wide(Hot* hot, const LeanTable
 
 // lean_arc_run_wide for the polynomial easings: the batch's records advanced four at a time
 // in lanes (lanes_step, then four_pieces_at) while whole groups stay in the run, the rest one
-// at a time; the points two at a time (evaluate_two_pieces_wide). All of it the same bits.
+// at a time; the points two at a time (two_pieces_wide), written as one pair where y follows
+// x. All of it the same bits.
 // A loop of its own: the same steps folded into arc_run through a helper measured ~25 %
 // slower with GCC 12 (cause not found).
 template <CurveKind K, bool F>
@@ -129,13 +130,19 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
             while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k])) ++k;
         }
         std::size_t j = 0;
+        using T = std::conditional_t<F, float, double>;
         for (; j + 2 <= k; j += 2) {
-            Vec2 pa, pb;
-            ArcLengthTable::evaluate_two_pieces_wide(piece[j].c, piece[j].x, piece[j + 1].c, piece[j + 1].x, pa, pb);
+            const __m256d p = ArcLengthTable::two_pieces_wide(piece[j].c, piece[j].x, piece[j + 1].c, piece[j + 1].x);
+            const __m128d pa = _mm256_castpd256_pd128(p), pb = _mm256_extractf128_pd(p, 1);
             const Hot& ha = hot[i + j];
             const Hot& hb = hot[i + j + 1];
-            write_pair<std::conditional_t<F, float, double>>(ha.target, ha.y_offset, pa);
-            write_pair<std::conditional_t<F, float, double>>(hb.target, hb.y_offset, pb);
+            if (ha.y_offset == sizeof(T) && hb.y_offset == sizeof(T)) {  // y right after x: one pair each
+                store_pair<T>(ha.target, pa);
+                store_pair<T>(hb.target, pb);
+            } else {
+                write_pair<T>(ha.target, ha.y_offset, {_mm_cvtsd_f64(pa), _mm_cvtsd_f64(_mm_unpackhi_pd(pa, pa))});
+                write_pair<T>(hb.target, hb.y_offset, {_mm_cvtsd_f64(pb), _mm_cvtsd_f64(_mm_unpackhi_pd(pb, pb))});
+            }
         }
         for (; j < k; ++j) {
             const Hot& h = hot[i + j];

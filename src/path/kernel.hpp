@@ -168,6 +168,13 @@ public:
     /// beside the powers of x, instead of 14 and 14.
     GRAPE_AVX2 static void evaluate_two_pieces_wide(const double* a, double xa, const double* b, double xb,
                                                     Vec2& pa, Vec2& pb) noexcept {
+        const __m256d p = two_pieces_wide(a, xa, b, xb);
+        const __m128d lo = _mm256_castpd256_pd128(p), hi = _mm256_extractf128_pd(p, 1);
+        pa = {_mm_cvtsd_f64(lo), _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo))};
+        pb = {_mm_cvtsd_f64(hi), _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi))};
+    }
+    /// The same, as (pa.x, pa.y, pb.x, pb.y) in four lanes.
+    GRAPE_AVX2 static __m256d two_pieces_wide(const double* a, double xa, const double* b, double xb) noexcept {
         const __m256d va = _mm256_set1_pd(xa), vb = _mm256_set1_pd(xb);
         const __m256d va2 = _mm256_mul_pd(va, va), vb2 = _mm256_mul_pd(vb, vb);
         // x² of a in the low half, of b in the high half; x⁴ the same
@@ -182,10 +189,7 @@ public:
         const __m256d r2 = _mm256_add_pd(_mm256_permute2f128_pd(qa45, qb45, 0x20),
                                          _mm256_mul_pd(_mm256_permute2f128_pd(qa45, qb45, 0x31), vab2));
         const __m256d r0 = _mm256_permute2f128_pd(ra01, rb01, 0x20), r1 = _mm256_permute2f128_pd(ra01, rb01, 0x31);
-        const __m256d p = _mm256_add_pd(r0, _mm256_mul_pd(_mm256_add_pd(r1, _mm256_mul_pd(r2, vab4)), vab4));
-        const __m128d lo = _mm256_castpd256_pd128(p), hi = _mm256_extractf128_pd(p, 1);
-        pa = {_mm_cvtsd_f64(lo), _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo))};
-        pb = {_mm_cvtsd_f64(hi), _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi))};
+        return _mm256_add_pd(r0, _mm256_mul_pd(_mm256_add_pd(r1, _mm256_mul_pd(r2, vab4)), vab4));
     }
 #endif
 private:
