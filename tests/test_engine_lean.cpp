@@ -92,10 +92,11 @@ void build(World& w, std::size_t n, unsigned seed, bool runs, bool general, int 
         constexpr std::size_t first[] = {0, 0, 2, 6};  // of the pair of paths `only` picks
         const Path& path = paths[only ? first[only] + pick % 2 : pick % std::size(paths)];
         const double duration = 0.2 + 1.8 * unit(r);
-        const double v = unit(r);  // the target's layout: doubles, floats, spaced doubles or floats
-        const std::size_t layout = runs ? (group % 5 == 0 ? 1 : group % 5 == 1 ? 2 + group / 5 % 2 : 0)
-                                        : v < 0.2 ? 1 : v < 0.3 ? 2 : v < 0.35 ? 3 : 0;
-        Animation a = layout == 1   ? w.engine.create_2d_animation(w.floats[i], path, duration, def)
+        const double v = unit(r);  // the target: doubles, floats, spaced doubles or floats, none
+        const std::size_t layout = runs ? (group % 5 == 0 ? 1 : group % 5 == 1 ? 2 + group / 5 % 3 : 0)
+                                        : v < 0.2 ? 1 : v < 0.3 ? 2 : v < 0.35 ? 3 : v < 0.4 ? 4 : 0;
+        Animation a = layout == 4   ? w.engine.create_animation(path, duration, def)
+                      : layout == 1 ? w.engine.create_2d_animation(w.floats[i], path, duration, def)
                       : layout == 2 ? w.engine.create_2d_animation(w.spaced[i], path, duration, def)
                       : layout == 3 ? w.engine.create_2d_animation(w.spaced_floats[i], path, duration, def)
                                     : w.engine.create_2d_animation(w.doubles[i], path, duration, def);
@@ -120,6 +121,8 @@ void expect_same(const World& a, const World& b, int tick) {
         ASSERT_EQ(a.anims[k].alive(), b.anims[k].alive()) << "tick " << tick << " animation " << k;
         const double ta = a.anims[k].time(), tb = b.anims[k].time();
         ASSERT_EQ(0, std::memcmp(&ta, &tb, sizeof ta)) << "tick " << tick << " animation " << k;
+        const grape::Vec2 va = a.anims[k].value(), vb = b.anims[k].value();  // those bound to nothing too
+        ASSERT_EQ(0, std::memcmp(&va, &vb, sizeof va)) << "tick " << tick << " animation " << k;
     }
 }
 

@@ -91,7 +91,8 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int rep
     }
     const auto dense = static_cast<std::uint32_t>(hot_.size());
     hot.phase = delay > 0.0 ? -delay / duration : 0.0;
-    hot.kind = kind_byte(curve_kind(hot), lane_kernel(path_kind_[hot.path]));
+    // bound to nothing (a null target): no lean run, so that theirs need not test the target
+    hot.kind = kind_byte(curve_kind(hot), hot.target ? lane_kernel(path_kind_[hot.path]) : LaneKernel::other);
     if (hot.flags & flag_reversed) hot.flags |= flag_backward;
     hot_.push_back(hot);
     cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot, 0, curve});

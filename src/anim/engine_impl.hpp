@@ -53,9 +53,11 @@ struct Hot {
     std::uint8_t flags;
 };
 
-// A record's kind byte: its curve kind, and which lean loop its path's kernel suits, so the
-// lean runs test the path with the compare of kind and flags they make anyway instead of a
-// load of the path's kernel kind per record. The path of a live record never changes.
+// A record's kind byte: its curve kind, and which lean loop its path's kernel suits (other
+// when it has no target), so the lean runs test the path and the target with the compare of
+// kind and flags they make anyway, instead of a load of the path's kernel kind and a test of
+// the target per record. The path of a live record never changes, nor does the target of a
+// record that is not custom.
 enum class LaneKernel : std::uint8_t { other, linear, cubic, arc };
 inline constexpr unsigned lane_shift = 6;
 static_assert(static_cast<unsigned>(CurveKind::function) < (1u << lane_shift), "CurveKind needs the kind byte's low 6 bits");

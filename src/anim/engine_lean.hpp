@@ -103,7 +103,7 @@ inline bool lean_step(Hot& h, const LineFast* lines, const PathFast* fast, doubl
     const double phase = h.phase + dt * h.rate;
     // started before this tick and still inside the play (either way: the rate is < 0
     // when reversed at run time)
-    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) || !h.target)
+    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end))
         return false;
     const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
     if constexpr (!stays_on_path(K))

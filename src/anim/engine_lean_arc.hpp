@@ -29,8 +29,7 @@ inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::si
     Hot& h = hot[i];
     const double phase = h.phase + dt * h.rate;
     const ArcFast& f = arcs[h.path];  // a table exactly for the arc-length kinds
-    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) ||
-        !h.target || !f.table)
+    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) || !f.table)
         return false;
     const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
     if (!(u > 0.0 && u < 1.0)) return false;

@@ -153,7 +153,7 @@ GRAPE_AVX2 inline void ask_ahead_quad(const Hot* hot, const Cold* cold, std::siz
 
 // Records h[0 … 3] in lanes: their new phases and eased progress, false (nothing computed
 // that matters) when any fails lean_step's tests of kind and flags, started and inside the
-// play, a target. The path kernel is the caller's to test.
+// play (the kind byte holds the path kernel and whether there is a target).
 template <CurveKind K>
 GRAPE_AVX2 inline bool lanes_step(const Hot* h, const LaneConsts& c, __m256d& phase, Lanes& u, __m256i* rest = nullptr) noexcept {
     constexpr int backward_bit = 56 + 2;  // flag_backward's place in the last word
@@ -162,12 +162,10 @@ GRAPE_AVX2 inline bool lanes_step(const Hot* h, const LaneConsts& c, __m256d& ph
     if (rest) *rest = q.rest;
     phase = _mm256_add_pd(q.phase, _mm256_mul_pd(c.step, q.rate));
     const __m256i kind_ok = _mm256_cmpeq_epi64(_mm256_and_si256(q.rest, c.flags_mask), c.flags_want);
-    const __m256i no_target = _mm256_cmpeq_epi64(q.target, _mm256_setzero_si256());
     // min(phase before, after) ≥ 0 as lean_step has it: both ≥ 0 (a NaN fails either way)
     const __m256d started = _mm256_and_pd(_mm256_cmp_pd(q.phase, c.zero, _CMP_GE_OQ), _mm256_cmp_pd(phase, c.zero, _CMP_GE_OQ));
     const __m256d inside = _mm256_and_pd(started, _mm256_cmp_pd(phase, c.end, _CMP_LT_OQ));
-    const __m256d ok =
-        _mm256_andnot_pd(_mm256_castsi256_pd(no_target), _mm256_and_pd(inside, _mm256_castsi256_pd(kind_ok)));
+    const __m256d ok = _mm256_and_pd(inside, _mm256_castsi256_pd(kind_ok));
     if (_mm256_movemask_pd(ok) != 0xF) return false;
     // 1 − phase where the play runs backward: the flag's bit moved to the sign, which blendv reads
     const __m256d back = _mm256_castsi256_pd(_mm256_slli_epi64(q.rest, 63 - backward_bit));
