@@ -60,7 +60,8 @@ struct Hot {
 // record that is not custom.
 enum class LaneKernel : std::uint8_t { other, linear, cubic, arc };
 inline constexpr unsigned lane_shift = 6;
-static_assert(static_cast<unsigned>(CurveKind::function) < (1u << lane_shift), "CurveKind needs the kind byte's low 6 bits");
+static_assert(static_cast<unsigned>(CurveKind::function) < (1u << lane_shift),
+              "CurveKind must fit the kind byte's low 6 bits");
 constexpr LaneKernel lane_kernel(KernelKind k) noexcept {
     switch (k) {
         case KernelKind::linear: return LaneKernel::linear;

@@ -139,6 +139,4 @@ GRAPE_FLATTEN std::size_t lean_run(Hot* hot, const LeanTables& t, std::size_t i,
     return i;
 }
 
-inline bool is_arc(KernelKind p) noexcept { return p == KernelKind::reparam_cubic || p == KernelKind::reparam_linear; }
-
 }  // namespace grape::detail

@@ -153,9 +153,11 @@ GRAPE_AVX2 inline void ask_ahead_quad(const Hot* hot, const Cold* cold, std::siz
 
 // Records h[0 … 3] in lanes: their new phases and eased progress, false (nothing computed
 // that matters) when any fails lean_step's tests of kind and flags, started and inside the
-// play (the kind byte holds the path kernel and whether there is a target).
+// play (the kind byte holds the path kernel and whether there is a target). `rest`: the
+// records' last words (path, y offset, kind, flags) in lanes.
 template <CurveKind K>
-GRAPE_AVX2 inline bool lanes_step(const Hot* h, const LaneConsts& c, __m256d& phase, Lanes& u, __m256i* rest = nullptr) noexcept {
+GRAPE_AVX2 inline bool lanes_step(const Hot* h, const LaneConsts& c, __m256d& phase, Lanes& u,
+                                  __m256i* rest = nullptr) noexcept {
     constexpr int backward_bit = 56 + 2;  // flag_backward's place in the last word
     static_assert(flag_backward == 1 << (backward_bit - 56));
     const Quad q = load_quad(h);
@@ -186,7 +188,8 @@ GRAPE_AVX2 inline void store_phases(Hot* h, __m256d phase) noexcept {
 template <class T>
 GRAPE_AVX2 inline bool adjacent(__m256i rest) noexcept {
     const __m256i y = _mm256_and_si256(rest, _mm256_set1_epi64x(0xFFFFll << 32));
-    return _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(y, _mm256_set1_epi64x(static_cast<long long>(sizeof(T)) << 32)))) == 0xF;
+    const __m256i want = _mm256_set1_epi64x(static_cast<long long>(sizeof(T)) << 32);
+    return _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(y, want))) == 0xF;
 }
 // lean_point's operations on (x, y) as one pair of lanes: the same bits.
 template <KernelKind P>
