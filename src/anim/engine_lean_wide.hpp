@@ -205,11 +205,11 @@ GRAPE_AVX2 inline __m128d pair_point(const LineFast* lines, const PathFast* fast
         return _mm_add_pd(_mm_mul_pd(b, v), _mm_loadu_pd(c));
     }
 }
-// write_pair for y right after x.
+// write_pair for y right after x (unaligned stores: a float pair may sit at any 4 bytes).
 template <class T>
 GRAPE_AVX2 inline void store_pair(char* x, __m128d p) noexcept {
     if constexpr (std::is_same_v<T, double>) _mm_storeu_pd(reinterpret_cast<double*>(x), p);
-    else _mm_store_sd(reinterpret_cast<double*>(x), _mm_castps_pd(_mm_cvtpd_ps(p)));
+    else _mm_storel_epi64(reinterpret_cast<__m128i*>(x), _mm_castps_si128(_mm_cvtpd_ps(p)));  // 8 bytes, any alignment
 }
 
 // lean_run for the polynomial easings on lines or cubics, four records at a time while at
