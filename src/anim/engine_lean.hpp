@@ -61,8 +61,9 @@ inline void ask_hot_ahead(const Hot* hot, std::size_t i, std::size_t n) noexcept
     if (i + hot_ahead < n) ask_hot(hot, i + hot_ahead);
 }
 
-// A record's curve kind and flags as one 16-bit word (kind in the low byte), so that one
-// compare checks the kind and every flag a run depends on.
+// A record's kind byte (curve kind and lane kernel) and flags as one 16-bit word (the kind
+// byte low), so that one compare checks the curve, the path, the target and every flag a run
+// depends on.
 // (kind and flags are adjacent: compilers read them as one word)
 inline std::uint16_t kind_and_flags(const Hot& h) noexcept {
     return static_cast<std::uint16_t>(static_cast<unsigned>(h.kind) | (static_cast<unsigned>(h.flags) << 8));
@@ -80,8 +81,6 @@ constexpr bool stays_on_path(CurveKind k) noexcept { return k <= CurveKind::quin
 // kind_and_flags(h) & lean_mask with.
 template <CurveKind K, LaneKernel L, bool F>
 inline constexpr std::uint16_t run_want = static_cast<std::uint16_t>(kind_byte(K, L) | (F ? flag_float << 8 : 0));
-template <KernelKind P>
-inline constexpr LaneKernel lane_of = lane_kernel(P);
 
 // The point at u of a line or cubic kernel, from the engine's dense tables.
 template <KernelKind P>
@@ -99,7 +98,7 @@ inline Vec2 lean_point(const LineFast* lines, const PathFast* fast, std::uint32_
 // One record of a lean run: false (nothing written) when it does not belong to the run.
 template <CurveKind K, KernelKind P, bool F>
 inline bool lean_step(Hot& h, const LineFast* lines, const PathFast* fast, double dt) noexcept {
-    constexpr std::uint16_t want = run_want<K, lane_of<P>, F>;
+    constexpr std::uint16_t want = run_want<K, lane_kernel(P), F>;
     const double phase = h.phase + dt * h.rate;
     // started before this tick and still inside the play (either way: the rate is < 0
     // when reversed at run time)

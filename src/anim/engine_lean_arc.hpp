@@ -28,12 +28,13 @@ inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::si
     }
     Hot& h = hot[i];
     const double phase = h.phase + dt * h.rate;
-    const ArcFast& f = arcs[h.path];  // a table exactly for the arc-length kinds
-    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end) || !f.table)
+    // the arc lane kernel in `want`: the path has a table (reparametrized kernels exist only with one)
+    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end))
         return false;
     const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
     if (!(u > 0.0 && u < 1.0)) return false;
     h.phase = phase;
+    const ArcFast& f = arcs[h.path];
     piece = ArcLengthTable::piece_at(f.table, f.steps, u);
     ArcLengthTable::prefetch_piece(piece.c);
     return true;
@@ -114,7 +115,6 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
                 Lanes u;
                 if (!lanes_step<K>(h, c, phase, u)) break;
                 const ArcFast &f0 = arcs[h[0].path], &f1 = arcs[h[1].path], &f2 = arcs[h[2].path], &f3 = arcs[h[3].path];
-                if (!f0.table || !f1.table || !f2.table || !f3.table) break;
                 const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(u.v, c.zero, _CMP_GT_OQ),
                                                      _mm256_cmp_pd(u.v, _mm256_set1_pd(1.0), _CMP_LT_OQ));
                 if (_mm256_movemask_pd(inside) != 0xF) break;
@@ -139,8 +139,8 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
                 store_pair<T>(ha.target, pa);
                 store_pair<T>(hb.target, pb);
             } else {
-                write_pair<T>(ha.target, ha.y_offset, {_mm_cvtsd_f64(pa), _mm_cvtsd_f64(_mm_unpackhi_pd(pa, pa))});
-                write_pair<T>(hb.target, hb.y_offset, {_mm_cvtsd_f64(pb), _mm_cvtsd_f64(_mm_unpackhi_pd(pb, pb))});
+                write_pair<T>(ha.target, ha.y_offset, vec2_of(pa));
+                write_pair<T>(hb.target, hb.y_offset, vec2_of(pb));
             }
         }
         for (; j < k; ++j) {

@@ -222,7 +222,7 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t lean_run_wide(Hot* hot, const LeanTables& t
     const LineFast* const lines = t.line;  // locals: the target writes cannot alias them
     const PathFast* const fast = t.fast;
     const Cold* const cold = t.cold;
-    const LaneConsts c = lane_consts<K, lane_of<P>, F>(dt);
+    const LaneConsts c = lane_consts<K, lane_kernel(P), F>(dt);
     using T = std::conditional_t<F, float, double>;
     const std::size_t far = n > hot_ahead ? n - hot_ahead : 0;
     for (; i + 4 <= far; i += 4) {

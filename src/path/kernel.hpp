@@ -31,6 +31,11 @@
 
 namespace grape::detail {
 
+#if defined(__SSE2__)
+/// The (x, y) pair in an SSE register's two lanes as a Vec2.
+inline Vec2 vec2_of(__m128d p) noexcept { return {_mm_cvtsd_f64(p), _mm_cvtsd_f64(_mm_unpackhi_pd(p, p))}; }
+#endif
+
 /// The point at u of a reparametrized path (u: fraction of arc length) as K even pieces (K a
 /// power of two), each a degree-11 polynomial in the piece's own x in [−1, 1] for x(u) and
 /// y(u) at once: twelve (x, y) coefficient pairs of doubles, three 64-byte cache lines. A
@@ -117,7 +122,7 @@ public:
         const __m128d r1 = _mm_add_pd(q(2), _mm_mul_pd(q(3), vx2));
         const __m128d r2 = _mm_add_pd(q(4), _mm_mul_pd(q(5), vx2));
         const __m128d p = _mm_add_pd(r0, _mm_mul_pd(_mm_add_pd(r1, _mm_mul_pd(r2, vx4)), vx4));
-        return {_mm_cvtsd_f64(p), _mm_cvtsd_f64(_mm_unpackhi_pd(p, p))};
+        return vec2_of(p);
 #else
         double out[2];
         for (int d = 0; d < 2; ++d) {
@@ -143,7 +148,7 @@ public:
                                       _mm_mul_pd(_mm256_extractf128_pd(q45, 1), _mm256_castpd256_pd128(vx2)));
         const __m128d r0 = _mm256_castpd256_pd128(r01), r1 = _mm256_extractf128_pd(r01, 1);
         const __m128d p = _mm_add_pd(r0, _mm_mul_pd(_mm_add_pd(r1, _mm_mul_pd(r2, vx4)), vx4));
-        return {_mm_cvtsd_f64(p), _mm_cvtsd_f64(_mm_unpackhi_pd(p, p))};
+        return vec2_of(p);
     }
     /// piece_at for four u in lanes (tables[j] with steps[j] for u[j]), the same bits: the
     /// same product, truncation (u·K < 4096 fits an int32) and x.
@@ -170,8 +175,8 @@ public:
                                                     Vec2& pa, Vec2& pb) noexcept {
         const __m256d p = two_pieces_wide(a, xa, b, xb);
         const __m128d lo = _mm256_castpd256_pd128(p), hi = _mm256_extractf128_pd(p, 1);
-        pa = {_mm_cvtsd_f64(lo), _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo))};
-        pb = {_mm_cvtsd_f64(hi), _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi))};
+        pa = vec2_of(lo);
+        pb = vec2_of(hi);
     }
     /// The same, as (pa.x, pa.y, pb.x, pb.y) in four lanes.
     GRAPE_AVX2 static __m256d two_pieces_wide(const double* a, double xa, const double* b, double xb) noexcept {
