@@ -25,15 +25,18 @@ struct LeanTables {
 // A play ends for about one record in a hundred per tick, and the general update then reads
 // its Cold record, a cache miss of ~100 ns that would cost more than the record's whole
 // update: asked for `cold_ahead` records before it is needed, when the record's play ends now
-// (64 records, ~150 ns of lane updates: at 16 the miss still stalled the loop a twentieth of
-// the tick's time under perf). The hot records are read in order, but each costs tens of
-// instructions, so the reorder window holds fewer of their misses than a plain copy loop's:
-// asked for `hot_ahead` records (4 KB) early, beyond what the demand loads reach, and far
-// enough before `cold_ahead` that the test of an ending play reads a record already here.
-// (Measured at 10⁶: 64/128 faster than 16/64 on every row, lines ~5 %, cubics at spread
-// phases ~12 %; 32/128, 40/64 and 96/160 no better.)
-inline constexpr std::size_t cold_ahead = 64;
-inline constexpr std::size_t hot_ahead = 128;
+// (160 records, ~350 ns of lane updates: at 10⁶ the Cold records spread over 24 MB, so the
+// request also waits for a page walk; at 64 the step that ends a run still took a tenth of
+// the tick under perf, most of it waiting for the Cold record, at 160 half as much). The hot
+// records are read in order, but each costs tens of instructions, so the reorder window
+// holds fewer of their misses than a plain copy loop's: asked for `hot_ahead` records (8 KB)
+// early, beyond what the demand loads reach, and far enough before `cold_ahead` that the
+// test of an ending play reads a record already here. (Measured at 10⁶, 6 alternating
+// rounds: 160/256 against 64/128, lines 2.24 → 2.13 ns and cubics 2.73 → 2.61 ns, faster in
+// every round; 256/384 no better than 160/256. Before the four-lane loops, 64/128 beat
+// 16/64, 32/128, 40/64 and 96/160.)
+inline constexpr std::size_t cold_ahead = 160;
+inline constexpr std::size_t hot_ahead = 256;
 // Record j's Cold record (j < n: the caller's bound).
 inline void ask_cold(const Cold* cold, std::size_t j) noexcept {
 #if defined(__GNUC__) || defined(__clang__)
