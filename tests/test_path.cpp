@@ -516,6 +516,33 @@ TEST(ArcLengthTable, MatchesThePathWithin2e10OfItsLength) {
     EXPECT_LE(most_steps, 4096.0);
 }
 
+// The arc-length lanes take a record's table from its path kernel without testing it: the
+// reparametrized kernels must exist only with a table, and a path whose table is refused
+// (a cubic that stops at a cusp) must get the generic kernel. The same random cubics as
+// above, cusps among them.
+TEST(ArcLengthTable, ReparametrizedKernelsCarryTheirTable) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> coordinate(0.0, 1000.0);
+    int refused = 0;
+    for (int n = 0; n < 300; ++n) {
+        const Vec2 a{coordinate(rng), coordinate(rng)}, d{coordinate(rng), coordinate(rng)};
+        Vec2 b{coordinate(rng), coordinate(rng)}, c{coordinate(rng), coordinate(rng)};
+        if (n % 4 == 3) c = b;         // coincident controls
+        if (n % 5 == 4) b = d, c = a;  // controls swapped onto the ends: the curve stops and turns
+        const Path r = n % 10 == 9 ? grape::LinearPath(a, d).reparametrized() : Path(grape::CubicBezierPath(a, b, c, d, true));
+        const grape::detail::PathKernel k = grape::detail::make_kernel(r);
+        const bool reparam =
+            k.kind == grape::detail::KernelKind::reparam_cubic || k.kind == grape::detail::KernelKind::reparam_linear;
+        EXPECT_EQ(reparam, k.table.has_value()) << n;
+        if (!k.table) {
+            ++refused;
+            EXPECT_EQ(k.kind, grape::detail::KernelKind::generic) << n;
+        }
+    }
+    EXPECT_GT(refused, 0);  // both cases met
+    EXPECT_LT(refused, 300);
+}
+
 // The storage order (slot) against the polynomial it stands for: a piece whose only
 // coefficients are x^i's, (1, 2), gives (x^i, 2·x^i) exactly at x = ±½ and ±1 (powers of two:
 // every product exact, every other term an exact zero), in both evaluations.
