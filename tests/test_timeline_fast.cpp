@@ -246,6 +246,95 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
     }
 }
 
+// y two members after x: the write that is not one (x, y) pair.
+struct SpreadPoint {
+    double x = -999.0;
+    double z = 0.0;
+    double y = -999.0;
+};
+
+// Many sequences side by side in blocks that share a formula curve, a path kernel and a target
+// type, as a game's crowd of similar objects: the lean entries of a block run four at a time
+// where the processor has four lanes (a group with any entry that hands over, of another kind
+// or otherwise leaving the run goes one entry at a time). Blocks differ in curve (linear and
+// the polynomials, which the lanes take, and others, which they do not), path (lines, cubics,
+// an arc-length cubic), target type and layout (float members, y not right after x), and some
+// children run reversed; now and then a timeline is reversed, paused, sought, or a child
+// killed. Every target, time and child must have the general update's bits after every tick.
+TEST(TimelineScale, LeanEntriesInLanesGiveTheBitsOfTheGeneralUpdate) {
+    const grape::Curve curves[] = {grape::Curve::linear(),    grape::Curve::quad_in_out(), grape::Curve::cubic_out(),
+                                   grape::Curve::quart_in(),  grape::Curve::quint_out_in(), grape::Curve::quad_out(),
+                                   grape::Curve::sine_in_out()};
+    for (std::uint64_t seed = 1400; seed < 1412; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> unit(0, 1);
+        Twins w;
+        constexpr std::size_t most = 400;
+        std::vector<Point> fast_points(most), slow_points(most);
+        std::vector<FloatPoint> fast_floats(most), slow_floats(most);
+        std::vector<SpreadPoint> fast_spread(most), slow_spread(most);
+        std::size_t next = 0;
+        while (next + 12 * 5 <= most) {
+            const grape::Curve curve = curves[rng() % std::size(curves)];
+            const auto shape = rng() % 5;  // mostly lines and cubics
+            const grape::Path& path = shape < 2   ? static_cast<const grape::Path&>(unit_line)
+                                      : shape < 4 ? static_cast<const grape::Path&>(swoop)
+                                                  : static_cast<const grape::Path&>(swoop_by_length);
+            const auto type = rng() % 6;  // double pairs, float pairs, spread doubles
+            const int lines = 1 + static_cast<int>(rng() % 12);
+            for (int t = 0; t < lines; ++t) {
+                w.create({.repeat = -1});
+                const int count = 2 + static_cast<int>(rng() % 4);
+                for (int k = 0; k < count; ++k) {
+                    const double duration = 0.1 + 0.6 * unit(rng);
+                    const AnimationDef child{.curve = curve, .reversed = rng() % 5 == 0};
+                    Animation fa, sa;
+                    if (type == 0) {
+                        fa = w.fast.create_2d_animation(fast_floats[next], path, duration, child);
+                        sa = w.slow.create_2d_animation(slow_floats[next], path, duration, child);
+                    } else if (type == 1) {
+                        fa = w.fast.create_2d_animation(fast_spread[next], path, duration, child);
+                        sa = w.slow.create_2d_animation(slow_spread[next], path, duration, child);
+                    } else {
+                        fa = w.fast.create_2d_animation(fast_points[next], path, duration, child);
+                        sa = w.slow.create_2d_animation(slow_points[next], path, duration, child);
+                    }
+                    ++next;
+                    w.add(fa, sa, ">");
+                }
+            }
+        }
+        for (int step = 0; step < 300; ++step) {
+            const auto event = rng() % 100;
+            const double dt = event < 3 ? 0.25 * unit(rng) : 1.0 / 60.0;
+            const std::size_t which = rng() % w.fast_lines.size();
+            const std::size_t child = rng() % w.fast_children.size();
+            if (event == 5) {
+                const double at = 2.0 * unit(rng);
+                w.on_line(which, [at](const Timeline& t) { t.seek(at); });
+            } else if (event >= 10 && event < 15) {
+                w.command(event - 10, which, child);  // reverse, play, kill a child, pause, resume
+            }
+            w.tick(dt);
+            for (std::size_t k = 0; k < next; ++k) {
+                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
+                ASSERT_EQ(fast_points[k].y, slow_points[k].y);
+                ASSERT_EQ(fast_floats[k].x, slow_floats[k].x) << "seed " << seed << " step " << step << " child " << k;
+                ASSERT_EQ(fast_floats[k].y, slow_floats[k].y);
+                ASSERT_EQ(fast_spread[k].x, slow_spread[k].x) << "seed " << seed << " step " << step << " child " << k;
+                ASSERT_EQ(fast_spread[k].y, slow_spread[k].y);
+                ASSERT_EQ(fast_spread[k].z, 0.0);  // between x and y: never written
+            }
+            for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
+            if (step % 7 == 0)
+                for (std::size_t k = 0; k < w.fast_children.size(); ++k) {
+                    ASSERT_EQ(w.fast_children[k].progress(), w.slow_children[k].progress()) << "seed " << seed << " step " << step;
+                    ASSERT_EQ(w.fast_children[k].time(), w.slow_children[k].time());
+                }
+        }
+    }
+}
+
 // Children that last whole ticks (k/60 s, ticked at 1/60 s): every hand-over lands on a
 // child's end or within rounding of it, just before (the child within 1e-7 plays of its end)
 // or just past (the next within 1e-7 plays of its start), where the fast case does not

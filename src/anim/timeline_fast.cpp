@@ -21,6 +21,7 @@
 #include "timeline_impl.hpp"
 
 #include "engine_eval.hpp"
+#include "timeline_lanes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,9 +33,7 @@ namespace {
 
 constexpr double margin = 1e-7;  // plays; ≫ play_snap + the rounding of plays below 1e7
 constexpr double most_plays = 1e7;  // (play + 1) · cycle below this: rounding ≤ 2e-9 plays
-// The active children's targets lie anywhere (no stride a prefetcher could follow): asked for
-// `ahead` entries early, ~250 ns of fast updates, longer than a memory latency.
-constexpr std::size_t ahead = 48;
+constexpr std::size_t ahead = timeline_ahead;
 // A hand-over's records are asked for in `stages` steps, `stride` hand-overs apart: neighbouring
 // timelines often hand over on the same tick, one right after the other, and one hand-over's
 // time is shorter than a memory latency.
@@ -237,6 +236,14 @@ GRAPE_FLATTEN std::size_t TimelineStore::fast_run(std::size_t i, std::size_t n, 
     std::uint32_t index[batch];
     double xs[batch];
     while (i < n) {
+        // Lean entries four at a time while they share a run; from the group of four that
+        // stops the run (an entry that hands over, or of another kind) a batch one entry at a
+        // time, and then the lanes again.
+        if (wide_)
+            if (const TimelineLanes run = timeline_lanes_for(lines[i])) {
+                i = run(lines, line_fast, path_fast, i, n, dt);
+                if (i == n) return n;
+            }
         const std::size_t m = std::min(batch, n - i);
         std::size_t k = 0, count = 0;
         for (; k < m; ++k) {
@@ -497,7 +504,8 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     l.until = interval_until(l, e, lo, hi, true, r.elapsed);
     if (h->flags & flag_float) bits |= root_float;
     if (cs.backward) bits |= root_backward;
-    if (plain && c.p0 == 0.0 && cj == 0.0 && !has_parameters(curve_kind(*h))) bits |= root_lean;
+    if (plain && c.p0 == 0.0 && cj == 0.0 && !has_parameters(curve_kind(*h)))
+        bits |= root_lean | static_cast<unsigned>(lane_kind(*h)) << root_kernel_shift;  // other: no target
     l.bits = static_cast<std::uint8_t>(bits | root_one);
     due_[i] = clock_ + (static_cast<double>(l.until) - l.elapsed);
 }

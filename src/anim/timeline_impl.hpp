@@ -55,7 +55,14 @@ enum RootBit : std::uint8_t {
     root_lean = 4,         // scale 1, no delay, a forward play, kc whole, the child's p0 and cj 0
     root_float = 8,        // the child's target members are float
     root_backward = 16,    // the child's play runs back
+    root_kernel = 96,      // lean with a target: the child's path's LaneKernel (timeline_lanes.hpp)
 };
+inline constexpr unsigned root_kernel_shift = 5;
+static_assert(root_kernel >> root_kernel_shift == 3);
+
+// The active children's targets lie anywhere (no stride a prefetcher could follow): asked for
+// this many entries early, ~250 ns of fast updates, longer than a memory latency.
+inline constexpr std::size_t timeline_ahead = 48;
 
 /// What the tick reads of a timeline in a fast mode: one cache line. Lean entries need nothing
 /// else; the others also read their RootEntry.
@@ -148,7 +155,7 @@ struct TimelineRec {
 
 class TimelineStore {
 public:
-    explicit TimelineStore(EngineImpl& engine) : engine_(engine) { stack_.reserve(64); }
+    explicit TimelineStore(EngineImpl& engine) : engine_(engine), wide_(wide_lanes()) { stack_.reserve(64); }
 
     Timeline create(Engine* owner, const TimelineDef& def);
     /// Sets one of `t`'s void() handlers (empty: none); nothing for a dead handle.
@@ -226,6 +233,7 @@ private:
     void set_cursor_tau(TimelineRec& r, double play, double local) noexcept;
 
     EngineImpl& engine_;
+    bool wide_;  // four-lane runs for lean entries (timeline_lanes.hpp)
     std::vector<std::unique_ptr<TimelineRec>> recs_;
     std::vector<std::uint32_t> free_;
     std::vector<RootLine> lines_;       // top-level timelines, in creation order
