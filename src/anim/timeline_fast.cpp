@@ -479,34 +479,26 @@ void TimelineStore::set_child_record(const TimelineChild& c, const PlayState& s)
 void TimelineStore::plan_hand_overs(std::size_t i) noexcept {
     RootEntry& e = roots_[i];
     TimelineRec& r = *e.rec;
-    const bool had = e.plan != nullptr && e.plan == r.plan.data();
-    const std::uint32_t was = e.step;  // the step the entry was at: cross() may have made it since
     e.plan = nullptr;
     e.plan_size = e.step = 0;
     e.next_at = HUGE_VAL;
     if (!r.callbacks.empty() || e.backward || !(e.scale > 0.0) || r.active.size() != 1 || r.started == 0 ||
         r.active[0] != r.started - 1 || e.plan_misses > e.plan_hits + 2)
         return;
-    auto use = [&](std::size_t j) {
+    const std::uint32_t next = r.active[0] + 1;
+    auto use = [&](std::size_t j) {  // plan[j], the hand-over to `next` (its start: plan[j].at)
         e.plan = r.plan.data();
         e.plan_size = static_cast<std::uint32_t>(r.plan.size());
         e.step = static_cast<std::uint32_t>(j);
-        e.next_at = j < r.plan.size() ? r.plan[j].at : HUGE_VAL;
+        e.next_at = j < r.plan.size() ? r.children[next].start : HUGE_VAL;
     };
     // A plan holds the children's constants only, so it outlives the hand-overs cross() and
     // the general update make in its stead (a tick that lands on a child's end) and the
     // timeline's loops: only a command on the timeline or a child clears it (current, touch
-    // and forget with `leave`).
-    if (!r.plan.empty()) {
-        const std::uint32_t next = r.active[0] + 1;
-        if (had)  // the step it was at, or the one after (the lines the tick asked for)
-            for (std::size_t j = was; j < r.plan.size() && j <= was + 1u; ++j)
-                if (r.plan[j].index == next) return use(j);
-        if (next >= r.plan[0].index && next - r.plan[0].index < r.plan.size() &&
-            r.plan[next - r.plan[0].index].index == next)
-            return use(next - r.plan[0].index);
-    }
+    // and forget with `leave`). Found without reading it: its steps are the children in order.
+    if (!r.plan.empty() && next >= r.plan_first && next - r.plan_first < r.plan.size()) return use(next - r.plan_first);
     r.plan.clear();  // capacity: the children's
+    r.plan_first = next;
     auto plain = [&](const TimelineChild& c) -> const Hot* {
         if (c.is_timeline) return nullptr;
         const Hot* h = engine_.find(c.slot, c.generation);
@@ -565,11 +557,12 @@ bool TimelineStore::hand_over(std::size_t i, double dt) noexcept {
     if ((l.bits & root_mode) != root_one) return false;
     RootEntry& e = roots_[i];
     if (e.step >= e.plan_size) return false;
-    const HandOver& o = e.plan[e.step];
-    if (!plan_holds(l, e, o, dt)) {
+    // (the plan is read only when the tick reaches its next point)
+    if (!(fast_point(l, e, l.elapsed + dt).local > e.next_at) || !plan_holds(l, e, e.plan[e.step], dt)) {
         if (e.plan_misses < UINT16_MAX) ++e.plan_misses;
         return false;
     }
+    const HandOver& o = e.plan[e.step];
     const double elapsed = l.elapsed + dt;
     const FastPoint p = fast_point(l, e, elapsed);
     // The child that begins, at p.local (drive_animation's position, fill_child's tests).

@@ -181,6 +181,7 @@ struct TimelineRec {
     std::vector<std::uint32_t> by_end;        // child indices sorted by end (stable)
     std::vector<std::uint32_t> active;        // entered and not ended, ascending
     std::vector<HandOver> plan;               // the fast entry's planned hand-overs (same capacity)
+    std::uint32_t plan_first = 0;             // plan[k] is the hand-over to children[plan_first + k]
     std::vector<TimelineCallback> callbacks;  // sorted by time (stable)
     Handler on_update;
     std::uint64_t epoch = 0;  // bumped by every time change from outside the current update
