@@ -34,18 +34,15 @@ void recycle(TimelineRec& r) noexcept {
     std::vector<TimelineChild> children = std::move(r.children);
     std::vector<std::uint32_t> by_end = std::move(r.by_end);
     std::vector<std::uint32_t> active = std::move(r.active);
-    std::vector<HandOver> plan = std::move(r.plan);
     r = TimelineRec();  // frees its callbacks, labels and handlers
     r.generation = generation;
     if (children.capacity() <= 64) {
         children.clear();
         by_end.clear();
         active.clear();
-        plan.clear();
         r.children = std::move(children);
         r.by_end = std::move(by_end);
         r.active = std::move(active);
-        r.plan = std::move(plan);
     }
 }
 }  // namespace
@@ -124,7 +121,6 @@ void TimelineStore::insert_child(std::uint32_t slot, TimelineChild c) {
     r.children.reserve(capacity);
     r.by_end.reserve(capacity);
     r.active.reserve(capacity);
-    r.plan.reserve(capacity);
     const auto pos = std::upper_bound(r.children.begin(), r.children.end(), c.start,
                                       [](double s, const TimelineChild& x) { return s < x.start; });
     const auto index = static_cast<std::uint32_t>(pos - r.children.begin());
@@ -253,7 +249,6 @@ void TimelineStore::add_timeline(std::uint32_t slot, std::uint32_t child, const 
     ++recs_[slot]->nested;
     if (c.root != UINT32_MAX) {
         flush(c, true);
-        c.plan.clear();
         set_mode(c.root, root_idle);  // driven by its parent from now on
     }
     c.parent = slot;

@@ -15,13 +15,6 @@
 // when anything looks at it (flush). Anything else takes the general path for that tick,
 // after which the entry is filled again if the state allows it.
 //
-// A sequence's hand-overs are planned when the entry is filled (plan_hand_overs): for each
-// next child, its timing and its engine record's constants, and the ending child's end point,
-// so that the tick makes the common hand-over (hand_over) from the entry and its plan alone,
-// without the timeline's record and the children's engine records, which lie anywhere in
-// memory (each a page walk as well as a miss). flush() brings those up to date, as it does
-// the child's phase.
-//
 // Each filled entry also leaves a forecast (`due_`: its `until` on the store's clock), so a
 // tick knows before it starts which entries will hand over, and asks for their records a few
 // hand-overs ahead (ask_stage) instead of testing every entry's neighbours.
@@ -44,7 +37,7 @@ constexpr std::size_t ahead = timeline_ahead;
 // A hand-over's records are asked for in `stages` steps, `stride` hand-overs apart: neighbouring
 // timelines often hand over on the same tick, one right after the other, and one hand-over's
 // time is shorter than a memory latency.
-constexpr std::size_t stages = 6;
+constexpr std::size_t stages = 5;
 constexpr std::size_t stride = 2;
 
 inline void prefetch(const void* p) noexcept {
@@ -116,18 +109,6 @@ float interval_until(const RootLine& l, const RootEntry& e, double lo, double hi
     return f;
 }
 
-// Whether a tick of dt makes the entry's planned hand-over o (hand_over()'s tests before its
-// entry is filled): the timeline stays inside its play, the window after o is not left, and
-// the child that begins is inside its first play, `margin` clear of its end (fill_child).
-bool plan_holds(const RootLine& l, const RootEntry& e, const HandOver& o, double dt) noexcept {
-    const FastPoint p = fast_point(l, e, l.elapsed + dt);
-    if (!(p.lp >= margin && p.lp <= 1.0 - margin && p.local > o.at && p.local < o.hi)) return false;
-    const double into = p.local - o.start;
-    if (!(into > 0.0 && into < o.length)) return false;
-    const PlayState cs = play_at_position(0.0 + into * o.rate, o.plays, o.reversed, o.yoyo, o.gap);
-    return cs.play == 0.0 && !cs.finished && cs.phase > 0.0 && cs.phase <= 1.0 - margin;  // (fill_child)
-}
-
 inline void write_line(const RootLine& l, Vec2 p) noexcept {  // EngineImpl::write_2d
     if (l.bits & root_float) write_pair<float>(l.target, l.y_offset, p);
     else write_pair<double>(l.target, l.y_offset, p);
@@ -148,16 +129,14 @@ TimelineRec* TimelineStore::current(std::uint32_t slot, std::uint32_t generation
     TimelineRec* r = recs_[slot].get();
     if (!r->alive || r->generation != generation) return nullptr;
     flush(*r, leave);
-    if (leave) r->plan.clear();  // a command may change what it was made from
     return r;
 }
 
 void TimelineStore::flush(TimelineRec& r, bool leave) noexcept {
     if (r.root == UINT32_MAX) return;
     const RootLine& l = lines_[r.root];
-    RootEntry& e = roots_[r.root];
+    const RootEntry& e = roots_[r.root];
     const RootMode m = mode(r.root);
-    if (e.done > 0) apply_hand_overs(r, e);
     if (m == root_empty || m == root_one) {
         const FastPoint p = fast_point(l, e, l.elapsed);
         r.elapsed = l.elapsed;
@@ -176,15 +155,11 @@ void TimelineStore::forget(std::uint32_t animation_slot) noexcept {
     if (!drives(animation_slot)) return;
     TimelineRec& r = *recs_[driven_[animation_slot]];
     if (r.root != UINT32_MAX && mode(r.root) == root_one) flush(r, true);
-    r.plan.clear();
     driven_[animation_slot] = UINT32_MAX;
 }
 
 void TimelineStore::touch(std::uint32_t animation_slot, bool leave) noexcept {
-    if (!drives(animation_slot)) return;
-    TimelineRec& r = *recs_[driven_[animation_slot]];
-    flush(r, leave);
-    if (leave) r.plan.clear();  // the child may change
+    if (drives(animation_slot)) flush(*recs_[driven_[animation_slot]], leave);
 }
 
 // An entry that leaves the fast case (a hand-over, a loop) reads a chain of records, each
@@ -195,33 +170,13 @@ void TimelineStore::touch(std::uint32_t animation_slot, bool leave) noexcept {
 // step s for the hand-over `stride · (stages − 1 − s)` ahead, so each step reads what the one
 // before brought in. Every read is bounds-checked against the current vectors: a handler may
 // have changed them since the forecast.
-void TimelineStore::ask_stage(int stage, std::uint32_t root, double dt) const noexcept {
+void TimelineStore::ask_stage(int stage, std::uint32_t root) const noexcept {
     if (root >= roots_.size()) return;
     const RootEntry& e = roots_[root];
     if (stage == 0) {  // nothing of the entry read yet: it is what this step asks for
         prefetch(&e);
         prefetch(reinterpret_cast<const char*>(&e) + sizeof(RootEntry) - 1);
         return;
-    }
-    // A planned hand-over that this tick makes (hand_over) reads its step and the two targets
-    // it writes, nothing of the records; one that it does not make (a tick landing on the
-    // child's end) reads the records a step later than an unplanned one.
-    const RootLine& l = lines_[root];
-    if ((l.bits & root_mode) == root_one && e.step < e.plan_size && fast_point(l, e, l.elapsed + dt).local > e.next_at) {
-        const HandOver& o = e.plan[e.step];
-        if (stage == 1) {
-            prefetch(&o);
-            prefetch(reinterpret_cast<const char*>(&o) + sizeof(HandOver) - 1);
-            return;
-        }
-        if (plan_holds(l, e, o, dt)) {
-            if (stage == 2) {
-                if (o.target) prefetch(o.target);
-                if (o.end_target) prefetch(o.end_target);
-            }
-            return;
-        }
-        --stage;
     }
     const TimelineRec* r = e.rec;
     const auto& slots = engine_.slots_;
@@ -257,11 +212,9 @@ void TimelineStore::ask_stage(int stage, std::uint32_t root, double dt) const no
                 r->children[r->started].slot < slots.size())
                 prefetch(&slots[r->children[r->started].slot]);
             return;
-        case 4:
+        default:
             if (r && r->started < r->children.size() && !r->children[r->started].is_timeline)
                 ask_records(r->children[r->started].slot);
-            return;
-        default:
             return;
     }
 }
@@ -346,15 +299,15 @@ void TimelineStore::tick(double dt) {
     }
     // The first hand-overs: the steps they would have had.
     for (std::size_t s = 0; s < stages; ++s)
-        for (std::size_t j = 0; j < forecast && j < stride * (stages - s); ++j) ask_stage(static_cast<int>(s), soon_[j], dt);
+        for (std::size_t j = 0; j < forecast && j < stride * (stages - s); ++j) ask_stage(static_cast<int>(s), soon_[j]);
     std::size_t next = 0;  // soon_[next]: the first forecast entry past the current one
     for (std::size_t i = 0; i < n; ++i) {
         i = fast_run(i, n, dt);
         if (i == n) break;
         while (next < forecast && soon_[next] <= i) ++next;
         for (std::size_t s = 0; s < stages; ++s)
-            if (const std::size_t j = next + stride * (stages - 1 - s); j < forecast) ask_stage(static_cast<int>(s), soon_[j], dt);
-        if (!hand_over(i, dt) && !cross(i, dt)) step_slow(i, dt);
+            if (const std::size_t j = next + stride * (stages - 1 - s); j < forecast) ask_stage(static_cast<int>(s), soon_[j]);
+        if (!cross(i, dt)) step_slow(i, dt);
     }
 }
 
@@ -414,11 +367,13 @@ bool TimelineStore::cross(std::size_t i, double dt) {
         const double position = into <= 0.0 ? c.p0 : into >= c.length ? HUGE_VAL : c.p0 + into * c.rate;
         if (position == c.last) return;
         c.last = position;
-        const PlayState s = play_at_position(position, c.plays, c.reversed, c.yoyo, c.gap);
-        set_child_record(c, s);
         const std::uint32_t dense = engine_.dense_of(c.slot);
+        const PlayState s = play_at_position(position, c.plays, c.reversed, c.yoyo, c.gap);
         Hot& h = engine_.hot_[dense];
-        if (s.phase < 0.0) h.phase = 0.0;
+        Cold& cold = engine_.cold_[dense];
+        cold.play = s.finished ? cold.plays - 1 : wrap_plays(s.play);
+        h.phase = s.phase < 0.0 ? 0.0 : s.phase + s.gap;
+        h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
         engine_.write_state(dense);  // plain: writes the target, runs nothing
         if (s.phase < 0.0) h.phase = s.phase;
     };
@@ -460,184 +415,6 @@ void TimelineStore::step_slow(std::size_t i, double dt) {
         if (!advance(slot, tau, true)) settle(slot);
     }
     try_fast(i);
-}
-
-void TimelineStore::set_child_record(const TimelineChild& c, const PlayState& s) noexcept {
-    const std::uint32_t dense = engine_.dense_of(c.slot);
-    Hot& h = engine_.hot_[dense];
-    Cold& cold = engine_.cold_[dense];
-    cold.play = s.finished ? cold.plays - 1 : wrap_plays(s.play);
-    h.phase = s.phase < 0.0 ? s.phase : s.phase + s.gap;
-    h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
-}
-
-// The hand-overs of a sequence from the entry's child on, while each is the plain case that
-// cross() takes: the active child is the next to end, the next to start begins exactly at its
-// end and is the next to end after it, both are plain animations (nobody listens; no delay
-// on the one that begins), and no callback lies anywhere. Children, callbacks and handlers
-// change only through a command, and a command takes the entry off the fast path first.
-void TimelineStore::plan_hand_overs(std::size_t i) noexcept {
-    RootEntry& e = roots_[i];
-    TimelineRec& r = *e.rec;
-    e.plan = nullptr;
-    e.plan_size = e.step = 0;
-    e.next_at = HUGE_VAL;
-    if (!r.callbacks.empty() || e.backward || !(e.scale > 0.0) || r.active.size() != 1 || r.started == 0 ||
-        r.active[0] != r.started - 1 || e.plan_misses > e.plan_hits + 2)
-        return;
-    const std::uint32_t next = r.active[0] + 1;
-    auto use = [&](std::size_t j) {  // plan[j], the hand-over to `next` (its start: plan[j].at)
-        e.plan = r.plan.data();
-        e.plan_size = static_cast<std::uint32_t>(r.plan.size());
-        e.step = static_cast<std::uint32_t>(j);
-        e.next_at = j < r.plan.size() ? r.children[next].start : HUGE_VAL;
-    };
-    // A plan holds the children's constants only, so it outlives the hand-overs cross() and
-    // the general update make in its stead (a tick that lands on a child's end) and the
-    // timeline's loops: only a command on the timeline or a child clears it (current, touch
-    // and forget with `leave`). Found without reading it: its steps are the children in order.
-    if (!r.plan.empty() && next >= r.plan_first && next - r.plan_first < r.plan.size()) return use(next - r.plan_first);
-    r.plan.clear();  // capacity: the children's
-    r.plan_first = next;
-    auto plain = [&](const TimelineChild& c) -> const Hot* {
-        if (c.is_timeline) return nullptr;
-        const Hot* h = engine_.find(c.slot, c.generation);
-        return h && !(h->flags & (flag_dead | flag_custom | flag_listens)) ? h : nullptr;
-    };
-    for (std::size_t a = r.active[0], f = r.finished; a + 1 < r.children.size() && r.plan.size() < r.plan.capacity();
-         ++a, ++f) {
-        const TimelineChild& ca = r.children[a];
-        const TimelineChild& cb = r.children[a + 1];
-        if (f + 1 >= r.by_end.size() || r.by_end[f] != a || r.by_end[f + 1] != a + 1) break;
-        if (!(cb.start == ca.end) || !std::isfinite(ca.end) || cb.p0 != 0.0 || cb.entered || cb.ended) break;
-        const Hot* ha = plain(ca);
-        const Hot* hb = plain(cb);
-        if (!ha || !hb) break;
-        HandOver o;
-        o.at = cb.start;
-        o.hi = std::min(a + 2 < r.children.size() ? r.children[a + 2].start : HUGE_VAL, cb.end);
-        o.start = cb.start;
-        o.length = cb.length;
-        o.rate = cb.rate;
-        o.plays = cb.plays;
-        o.gap = cb.gap;
-        o.index = static_cast<std::uint32_t>(a + 1);
-        o.reversed = cb.reversed;
-        o.yoyo = cb.yoyo;
-        o.slot = cb.slot;
-        o.generation = cb.generation;
-        o.target = hb->target;
-        o.path = hb->path;
-        o.y_offset = hb->y_offset;
-        o.kind = hb->kind;
-        o.flags = hb->flags;
-        o.curve = engine_.cold(engine_.dense_of(cb.slot)).curve;
-        // The ending child at its end, as drive_animation writes it: its play state past the
-        // end (its position is its end whatever the length's rounding), then write_state.
-        const PlayState s = play_at_position(HUGE_VAL, ca.plays, ca.reversed, ca.yoyo, ca.gap);
-        const double phase = std::clamp(s.phase < 0.0 ? 0.0 : s.phase + s.gap, 0.0, 1.0);
-        const double u = engine_.ease(curve_kind(*ha), engine_.cold(engine_.dense_of(ca.slot)).curve,
-                                      s.backward ? 1.0 - phase : phase);
-        o.end_write = ha->target != nullptr;
-        o.end = engine_.point(ha->path, u);
-        o.end_target = ha->target;
-        o.end_y_offset = ha->y_offset;
-        o.end_float = (ha->flags & flag_float) != 0;
-        r.plan.push_back(o);
-    }
-    use(0);
-}
-
-// The planned hand-over, when this tick crosses it and nothing else: the timeline stays in
-// its play, the window after it is not left, and the child that begins is inside its first
-// play as the fast case needs. The ending child's end point and the next one's point are
-// written as cross() writes them; the records follow in flush(). False: nothing changed.
-bool TimelineStore::hand_over(std::size_t i, double dt) noexcept {
-    RootLine& l = lines_[i];
-    if ((l.bits & root_mode) != root_one) return false;
-    RootEntry& e = roots_[i];
-    if (e.step >= e.plan_size) return false;
-    // (the plan is read only when the tick reaches its next point)
-    if (!(fast_point(l, e, l.elapsed + dt).local > e.next_at) || !plan_holds(l, e, e.plan[e.step], dt)) {
-        if (e.plan_misses < UINT16_MAX) ++e.plan_misses;
-        return false;
-    }
-    const HandOver& o = e.plan[e.step];
-    const double elapsed = l.elapsed + dt;
-    const FastPoint p = fast_point(l, e, elapsed);
-    // The child that begins, at p.local (drive_animation's position, fill_child's tests).
-    TimelineChild c;
-    c.start = o.start;
-    c.end = o.start + o.length;
-    c.length = o.length;
-    c.slot = o.slot;
-    c.generation = o.generation;
-    c.p0 = 0.0;
-    c.rate = o.rate;
-    c.plays = o.plays;
-    c.gap = o.gap;
-    c.reversed = o.reversed;
-    c.yoyo = o.yoyo;
-    const double into = p.local - c.start;
-    if (!(into > 0.0 && into < c.length)) return false;
-    const double position = c.p0 + into * c.rate;
-    const PlayState cs = play_at_position(position, c.plays, c.reversed, c.yoyo, c.gap);
-    // (plan_holds: its first play, which flush() gives the record)
-    Hot h{};
-    h.target = o.target;
-    h.path = o.path;
-    h.y_offset = o.y_offset;
-    h.kind = o.kind;
-    h.flags = o.flags;
-    const RootLine line = l;  // fill_child's entry, restored if the fast case does not hold
-    const RootEntry entry = e;
-    const double due = due_[i];
-    l.elapsed = elapsed;
-    const bool plain_clock = (l.bits & root_lean) != 0;
-    if (!fill_child(i, c, o.index, h, o.curve, p.local, o.at, o.hi, elapsed, plain_clock) ||
-        !(static_cast<double>(l.until) >= elapsed)) {
-        l = line;
-        e = entry;
-        due_[i] = due;
-        return false;
-    }
-    // cross()'s writes: the ending child's end, then the next child where it is now.
-    if (o.end_write) {
-        if (o.end_float) write_pair<float>(o.end_target, o.end_y_offset, o.end);
-        else write_pair<double>(o.end_target, o.end_y_offset, o.end);
-    }
-    if (o.target) {
-        const double phase = std::clamp(cs.phase + cs.gap, 0.0, 1.0);  // write_state's progress
-        const double u = engine_.ease(curve_kind(h), o.curve, cs.backward ? 1.0 - phase : phase);
-        write_line(l, engine_.point(o.path, u));
-    }
-    ++e.step;
-    ++e.done;
-    if (e.plan_hits < UINT16_MAX) ++e.plan_hits;
-    e.next_at = e.step < e.plan_size ? e.plan[e.step].at : HUGE_VAL;
-    return true;
-}
-
-// The hand-overs the tick made from the plan, into the timeline's record and the children's
-// engine records, as cross() leaves them (the child now active gets its phase in flush()).
-void TimelineStore::apply_hand_overs(TimelineRec& r, RootEntry& e) noexcept {
-    for (; e.done > 0; --e.done) {
-        const std::uint32_t a = r.active[0];
-        const auto b = static_cast<std::uint32_t>(r.started);
-        TimelineChild& ca = r.children[a];
-        ca.last = HUGE_VAL;
-        set_child_record(ca, play_at_position(HUGE_VAL, ca.plays, ca.reversed, ca.yoyo, ca.gap));
-        ca.ended = true;
-        ++r.finished;
-        TimelineChild& cb = r.children[b];
-        cb.entered = true;
-        r.started = b + 1;
-        r.active[0] = b;
-        PlayState first;  // its first play; the phase is flush()'s
-        first.backward = cb.reversed;
-        set_child_record(cb, first);
-    }
-    r.arrived_forward = true;
 }
 
 void TimelineStore::try_fast(std::size_t i) noexcept {
@@ -684,6 +461,7 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     const bool plain = scale == 1.0 && r.delay == 0.0 && !s.backward && kc < 16777216.0 &&
                        static_cast<double>(static_cast<float>(kc)) == kc;
     l.kc = plain ? static_cast<float>(kc) : 0.0f;
+    std::uint8_t bits = 0;
     if (r.active.empty()) {
         l.until = interval_until(l, e, lo, hi, false, r.elapsed);
         l.bits = root_empty;
@@ -701,53 +479,35 @@ void TimelineStore::try_fast(std::size_t i) noexcept {
     const double position = c.p0 + into * c.rate;
     if (position != c.last) return;
     const PlayState cs = play_at_position(position, c.plays, c.reversed, c.yoyo, c.gap);
-    if (h->phase != cs.phase || ((h->flags & flag_backward) != 0) != cs.backward) return;
-    if (!fill_child(i, c, ci, *h, engine_.cold(engine_.dense_of(c.slot)).curve, local, lo, hi, r.elapsed, plain)) return;
-    plan_hand_overs(i);
-}
-
-bool TimelineStore::fill_child(std::size_t i, const TimelineChild& c, std::uint32_t ci, const Hot& h, std::uint16_t curve,
-                               double local, double lo, double hi, double elapsed, bool plain_clock) noexcept {
-    RootLine& l = lines_[i];
-    RootEntry& e = roots_[i];
-    const double into = local - c.start;
-    if (!(into > 0.0 && into < c.length)) return false;
-    const double position = c.p0 + into * c.rate;
-    const PlayState cs = play_at_position(position, c.plays, c.reversed, c.yoyo, c.gap);
     const double child_cycle = 1.0 + c.gap;
-    // `margin` clear of the play's ends, but for the first play's start: no play begins before
-    // it, so no snapping or rounding can pick another one (a tick landing just past the start
-    // of a child, as ticks of whole durations do, stays fast).
-    const bool clear_start = cs.play == 0.0 ? cs.phase > 0.0 : cs.phase >= margin;
-    if (cs.finished || !(clear_start && cs.phase <= 1.0 - margin) || !((cs.play + 1.0) * child_cycle < most_plays))
-        return false;
+    if (cs.finished || !(cs.phase >= margin && cs.phase <= 1.0 - margin) || !((cs.play + 1.0) * child_cycle < most_plays))
+        return;
     const double cj = c.gap > 0.0 ? cs.play * child_cycle : cs.play;
-    if (position - cj != cs.phase) return false;
+    if (position - cj != cs.phase || h->phase != cs.phase || ((h->flags & flag_backward) != 0) != cs.backward) return;
     // local < hi must keep local − start below the length (into ≥ length is the child's end).
     for (int k = 0; k < 64 && hi > local && !(hi - c.start < c.length); ++k) hi = std::nextafter(hi, -HUGE_VAL);
-    if (!(hi - c.start < c.length)) return false;
-    if (!(hi > local)) return false;
+    if (!(hi - c.start < c.length)) return;
+    if (!(hi > local)) return;
+    const std::uint32_t dense = engine_.dense_of(c.slot);
     l.start = c.start;
     l.rate = c.rate;
-    l.target = h.target;
-    l.path = h.path;
-    l.y_offset = h.y_offset;
-    l.kind = curve_kind(h);
+    l.target = h->target;
+    l.path = h->path;
+    l.y_offset = h->y_offset;
+    l.kind = curve_kind(*h);
     e.p0 = c.p0;
     e.cj = cj;
-    e.curve = curve;
+    e.curve = engine_.cold(dense).curve;
     e.child = c.slot;
     e.child_generation = c.generation;
     e.child_index = ci;
-    l.until = interval_until(l, e, lo, hi, true, elapsed);
-    std::uint8_t bits = 0;
-    if (h.flags & flag_float) bits |= root_float;
+    l.until = interval_until(l, e, lo, hi, true, r.elapsed);
+    if (h->flags & flag_float) bits |= root_float;
     if (cs.backward) bits |= root_backward;
-    if (plain_clock && c.p0 == 0.0 && cj == 0.0 && !has_parameters(curve_kind(h)))
-        bits |= root_lean | static_cast<unsigned>(lane_kind(h)) << root_kernel_shift;  // other: no target
+    if (plain && c.p0 == 0.0 && cj == 0.0 && !has_parameters(curve_kind(*h)))
+        bits |= root_lean | static_cast<unsigned>(lane_kind(*h)) << root_kernel_shift;  // other: no target
     l.bits = static_cast<std::uint8_t>(bits | root_one);
     due_[i] = clock_ + (static_cast<double>(l.until) - l.elapsed);
-    return true;
 }
 
 }  // namespace grape::detail

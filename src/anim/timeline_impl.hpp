@@ -41,9 +41,8 @@ struct TimelineChild {
 /// A top-level timeline as the tick walks it (TimelineStore::lines_ and roots_, in creation
 /// order). In the fast modes the clock and the one active child's time are kept in the entry,
 /// and the record's tau, cursor, the child's `last` and its engine record's phase are stale
-/// until flush() (find() and the child's handle flush first), and so are the window and the
-/// children's records after the hand-overs the tick made from the entry's plan: the tick
-/// computes them with the slow path's own operations, so both give the same bits.
+/// until flush() (find() and the child's handle flush first): the tick computes them with the
+/// slow path's own operations, so both give the same bits.
 enum RootMode : std::uint8_t {
     root_slow,   // the record is current; the tick advances it the general way
     root_idle,   // paused, killed or nested: the tick passes over it (commands make it slow)
@@ -85,33 +84,6 @@ static_assert(sizeof(RootLine) == 64);
 
 struct TimelineRec;
 
-/// One hand-over of a sequence, planned when the entry is filled: the active child's end at
-/// `at`, where the next child begins. It holds what the tick needs to make it without the
-/// timeline's record or the children's engine records (they lie anywhere in memory: each is
-/// a page walk as well as a miss); flush() brings those up to date afterwards.
-struct HandOver {
-    double at = 0.0;  // the ending child's end and the next one's start (local seconds)
-    double hi = 0.0;  // the window's next point after it: the next child's end or the start after
-    // the child that begins: its TimelineChild timing
-    double start = 0.0, length = 0.0, rate = 0.0, plays = 0.0, gap = 0.0;
-    std::uint32_t index = 0;  // in TimelineRec::children
-    bool reversed = false, yoyo = false;
-    bool end_write = false;   // the ending child's end point is written (it has a target)
-    bool end_float = false;
-    // and its engine record's constants
-    std::uint32_t slot = 0, generation = 0;
-    char* target = nullptr;
-    std::uint32_t path = 0;
-    std::int16_t y_offset = 0;
-    std::uint8_t kind = 0;   // Hot::kind
-    std::uint8_t flags = 0;  // Hot::flags
-    std::uint16_t curve = 0; // Cold::curve
-    // the ending child's end point and its target
-    std::int16_t end_y_offset = 0;
-    char* end_target = nullptr;
-    Vec2 end{};
-};
-
 /// The rest of a fast entry: the constants lean entries do without, and what flush() needs.
 struct RootEntry {
     double scale = 0.0;     // time_scale · direction
@@ -126,19 +98,6 @@ struct RootEntry {
     std::uint32_t child_index = 0;   // in TimelineRec::children
     std::uint16_t curve = 0;         // Cold::curve (curves with parameters)
     bool backward = false;  // the play runs back (yoyo)
-    // The sequence's next hand-overs (TimelineRec::plan, valid while the entry is fast):
-    // plan[step, plan_size) to come; the last `done` made by the tick and not yet in the
-    // timeline's and the children's records (flush).
-    const HandOver* plan = nullptr;
-    double next_at = HUGE_VAL;  // plan[step].at: whether this tick reaches it, before the plan is read
-    std::uint32_t plan_size = 0;
-    std::uint32_t step = 0;
-    std::uint32_t done = 0;
-    // Planned hand-overs the tick made and missed (a tick landing just before a child's end,
-    // as ticks of whole durations do, leaves it to the general path): a timeline that misses
-    // more than it makes is not planned for.
-    std::uint16_t plan_hits = 0;
-    std::uint16_t plan_misses = 0;
 };
 
 struct TimelineCallback {
@@ -180,8 +139,6 @@ struct TimelineRec {
     std::vector<TimelineChild> children;      // sorted by start (stable)
     std::vector<std::uint32_t> by_end;        // child indices sorted by end (stable)
     std::vector<std::uint32_t> active;        // entered and not ended, ascending
-    std::vector<HandOver> plan;               // the fast entry's planned hand-overs (same capacity)
-    std::uint32_t plan_first = 0;             // plan[k] is the hand-over to children[plan_first + k]
     std::vector<TimelineCallback> callbacks;  // sorted by time (stable)
     Handler on_update;
     std::uint64_t epoch = 0;  // bumped by every time change from outside the current update
@@ -252,20 +209,12 @@ private:
     void step_slow(std::size_t i, double dt);  // one top-level timeline's tick, the general way
     void try_fast(std::size_t i) noexcept;     // enters a fast mode where the state allows it
     bool cross(std::size_t i, double dt);  // a child's end and the next one's start, fast
-    bool hand_over(std::size_t i, double dt) noexcept;  // the same from the entry's plan alone
-    void plan_hand_overs(std::size_t i) noexcept;       // try_fast's plan for a sequence
-    void apply_hand_overs(TimelineRec& r, RootEntry& e) noexcept;  // the plan's done ones, into the records
-    // A plain child's engine record as drive_animation leaves it in state s (nothing written).
-    void set_child_record(const TimelineChild& c, const PlayState& s) noexcept;
-    // The entry's child part for animation child c, a plain record h; false: not fast.
-    bool fill_child(std::size_t i, const TimelineChild& c, std::uint32_t ci, const Hot& h, std::uint16_t curve,
-                    double local, double lo, double hi, double elapsed, bool plain_clock) noexcept;
     std::size_t fast_run(std::size_t i, std::size_t n, double dt) noexcept;  // the fast entries from i
     void set_mode(std::uint32_t root, RootMode m) noexcept {
         lines_[root].bits = static_cast<std::uint8_t>((lines_[root].bits & ~root_mode) | m);
         due_[root] = m == root_idle ? HUGE_VAL : -HUGE_VAL;  // slow and idle: slow every tick, never
     }
-    void ask_stage(int stage, std::uint32_t root, double dt) const noexcept;  // one stage of a hand-over's prefetch
+    void ask_stage(int stage, std::uint32_t root) const noexcept;  // one stage of a hand-over's prefetch
     RootMode mode(std::uint32_t root) const noexcept { return static_cast<RootMode>(lines_[root].bits & root_mode); }
 
     // the update (timeline_tick.cpp); false: a handler changed this timeline's time, stop
