@@ -60,6 +60,13 @@ struct Twins {
         fast_children.push_back(fa);
         slow_children.push_back(sa);
     }
+    // A 2-D child made alike in both engines on the twin targets, placed alike.
+    template <class T>
+    void add_2d(T& fast_target, T& slow_target, const grape::Path& path, double duration, const AnimationDef& def,
+                const std::string& at) {
+        add(fast.create_2d_animation(fast_target, path, duration, def),
+            slow.create_2d_animation(slow_target, path, duration, def), at);
+    }
     template <class F>
     void on_line(std::size_t k, F f) {
         f(fast_lines[k]);
@@ -144,10 +151,8 @@ TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
                                          .time_scale = 0.5 + unit(rng)};
                 const auto roll = rng() % 4;
                 const std::string at = roll == 0 ? "<+0.1" : roll == 1 ? "+=0.2" : ">";
-                Animation fa = w.fast.create_2d_animation(fast_points[next], unit_line, duration, child);
-                Animation sa = w.slow.create_2d_animation(slow_points[next], unit_line, duration, child);
+                w.add_2d(fast_points[next], slow_points[next], unit_line, duration, child, at);
                 ++next;
-                w.add(fa, sa, at);
             }
         }
         for (int step = 0; step < 400; ++step) {
@@ -200,16 +205,9 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
                 const grape::Path& path = shape < 2 ? static_cast<const grape::Path&>(unit_line)
                                           : shape == 2 ? static_cast<const grape::Path&>(swoop)
                                                        : static_cast<const grape::Path&>(swoop_by_length);
-                Animation fa, sa;
-                if (rng() % 5 == 0) {
-                    fa = w.fast.create_2d_animation(fast_floats[target], path, duration, child);
-                    sa = w.slow.create_2d_animation(slow_floats[target], path, duration, child);
-                } else {
-                    fa = w.fast.create_2d_animation(fast_points[target], path, duration, child);
-                    sa = w.slow.create_2d_animation(slow_points[target], path, duration, child);
-                }
+                if (rng() % 5 == 0) w.add_2d(fast_floats[target], slow_floats[target], path, duration, child, at);
+                else w.add_2d(fast_points[target], slow_points[target], path, duration, child, at);
                 ++next;
-                w.add(fa, sa, at);
             }
         }
         int completions_fast = 0, completions_slow = 0;
@@ -288,19 +286,10 @@ TEST(TimelineScale, LeanEntriesInLanesGiveTheBitsOfTheGeneralUpdate) {
                 for (int k = 0; k < count; ++k) {
                     const double duration = 0.1 + 0.6 * unit(rng);
                     const AnimationDef child{.curve = curve, .reversed = rng() % 5 == 0};
-                    Animation fa, sa;
-                    if (type == 0) {
-                        fa = w.fast.create_2d_animation(fast_floats[next], path, duration, child);
-                        sa = w.slow.create_2d_animation(slow_floats[next], path, duration, child);
-                    } else if (type == 1) {
-                        fa = w.fast.create_2d_animation(fast_spread[next], path, duration, child);
-                        sa = w.slow.create_2d_animation(slow_spread[next], path, duration, child);
-                    } else {
-                        fa = w.fast.create_2d_animation(fast_points[next], path, duration, child);
-                        sa = w.slow.create_2d_animation(slow_points[next], path, duration, child);
-                    }
+                    if (type == 0) w.add_2d(fast_floats[next], slow_floats[next], path, duration, child, ">");
+                    else if (type == 1) w.add_2d(fast_spread[next], slow_spread[next], path, duration, child, ">");
+                    else w.add_2d(fast_points[next], slow_points[next], path, duration, child, ">");
                     ++next;
-                    w.add(fa, sa, ">");
                 }
             }
         }
@@ -357,10 +346,8 @@ TEST(TimelineScale, TickAlignedHandOversGiveTheBitsOfTheGeneralUpdate) {
                 const AnimationDef child{.curve = rng() % 2 == 0 ? grape::Curve::quad_in_out() : grape::Curve::linear()};
                 const std::size_t target = shared ? first : next;
                 const grape::Path& path = rng() % 3 == 0 ? static_cast<const grape::Path&>(swoop) : unit_line;
-                Animation fa = w.fast.create_2d_animation(fast_points[target], path, duration, child);
-                Animation sa = w.slow.create_2d_animation(slow_points[target], path, duration, child);
+                w.add_2d(fast_points[target], slow_points[target], path, duration, child, ">");
                 ++next;
-                w.add(fa, sa, ">");
             }
         }
         for (int step = 0; step < 500; ++step) {
