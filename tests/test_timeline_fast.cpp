@@ -106,12 +106,19 @@ struct Twins {
 
 // After a tick: the first `count` targets of the twins written alike, and every timeline at
 // the same time.
-void expect_agree(const Twins& w, const std::vector<Point>& fast_points, const std::vector<Point>& slow_points,
-                  std::size_t count, std::uint64_t seed, int step) {
+// The first `count` twin targets written alike.
+template <class T>
+void expect_targets(const std::vector<T>& fast_points, const std::vector<T>& slow_points, std::size_t count,
+                    std::uint64_t seed, int step) {
     for (std::size_t k = 0; k < count; ++k) {
         ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
         ASSERT_EQ(fast_points[k].y, slow_points[k].y) << "seed " << seed << " step " << step << " child " << k;
     }
+}
+
+void expect_agree(const Twins& w, const std::vector<Point>& fast_points, const std::vector<Point>& slow_points,
+                  std::size_t count, std::uint64_t seed, int step) {
+    ASSERT_NO_FATAL_FAILURE(expect_targets(fast_points, slow_points, count, seed, step));
     for (std::size_t k = 0; k < w.fast_lines.size(); ++k)
         ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time()) << "seed " << seed << " step " << step << " timeline " << k;
 }
@@ -226,12 +233,8 @@ TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
                 w.churn(event, false);
             }
             w.tick(dt);
-            for (std::size_t k = 0; k < next; ++k) {
-                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
-                ASSERT_EQ(fast_points[k].y, slow_points[k].y);
-                ASSERT_EQ(fast_floats[k].x, slow_floats[k].x) << "seed " << seed << " step " << step << " child " << k;
-                ASSERT_EQ(fast_floats[k].y, slow_floats[k].y);
-            }
+            ASSERT_NO_FATAL_FAILURE(expect_targets(fast_points, slow_points, next, seed, step));
+            ASSERT_NO_FATAL_FAILURE(expect_targets(fast_floats, slow_floats, next, seed, step));
             for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
             if (step % 3 == 0)
                 for (std::size_t k = 0; k < w.fast_children.size(); ++k) {
@@ -305,15 +308,10 @@ TEST(TimelineScale, LeanEntriesInLanesGiveTheBitsOfTheGeneralUpdate) {
                 w.command(event - 10, which, child);  // reverse, play, kill a child, pause, resume
             }
             w.tick(dt);
-            for (std::size_t k = 0; k < next; ++k) {
-                ASSERT_EQ(fast_points[k].x, slow_points[k].x) << "seed " << seed << " step " << step << " child " << k;
-                ASSERT_EQ(fast_points[k].y, slow_points[k].y);
-                ASSERT_EQ(fast_floats[k].x, slow_floats[k].x) << "seed " << seed << " step " << step << " child " << k;
-                ASSERT_EQ(fast_floats[k].y, slow_floats[k].y);
-                ASSERT_EQ(fast_spread[k].x, slow_spread[k].x) << "seed " << seed << " step " << step << " child " << k;
-                ASSERT_EQ(fast_spread[k].y, slow_spread[k].y);
-                ASSERT_EQ(fast_spread[k].z, 0.0);  // between x and y: never written
-            }
+            ASSERT_NO_FATAL_FAILURE(expect_targets(fast_points, slow_points, next, seed, step));
+            ASSERT_NO_FATAL_FAILURE(expect_targets(fast_floats, slow_floats, next, seed, step));
+            ASSERT_NO_FATAL_FAILURE(expect_targets(fast_spread, slow_spread, next, seed, step));
+            for (std::size_t k = 0; k < next; ++k) ASSERT_EQ(fast_spread[k].z, 0.0);  // between x and y: never written
             for (std::size_t k = 0; k < w.fast_lines.size(); ++k) ASSERT_EQ(w.fast_lines[k].time(), w.slow_lines[k].time());
             if (step % 7 == 0)
                 for (std::size_t k = 0; k < w.fast_children.size(); ++k) {
