@@ -26,8 +26,7 @@ Hot custom_hot(void* target, double duration, const AnimationDef& def) noexcept 
     h.rate = def.time_scale / duration;
     h.target = static_cast<char*>(target);
     h.kind = kind_byte(def.curve.kind(), LaneKernel::other);  // add() puts in the path's
-    h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0) |
-                                        (def.reversed ? flag_reversed : 0));
+    h.flags = static_cast<std::uint8_t>(flag_custom | (def.paused ? flag_paused : 0) | (def.yoyo ? flag_yoyo : 0));
     return h;
 }
 
@@ -77,7 +76,7 @@ void validate_placement(std::string_view where, const AnimationDef& def, bool si
 
 }  // namespace
 
-Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay,
+Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, const AnimationDef& def,
                           std::optional<Extra> extra) {
     std::uint32_t slot;
     if (free_slot_ != UINT32_MAX) {
@@ -90,12 +89,14 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, int rep
         slots_.push_back({0, 0});
     }
     const auto dense = static_cast<std::uint32_t>(hot_.size());
-    hot.phase = delay > 0.0 ? -delay / duration : 0.0;
+    hot.phase = def.delay > 0.0 ? -def.delay / duration : 0.0;
     // bound to nothing (a null target): no lean run, so that theirs need not test the target
     hot.kind = kind_byte(curve_kind(hot), hot.target ? lane_kernel(path_kind_[hot.path]) : LaneKernel::other);
-    if (hot.flags & flag_reversed) hot.flags |= flag_backward;
+    if (def.reversed) hot.flags |= flag_backward;
+    if (def.repeat < 0) hot.flags |= flag_forever;
     hot_.push_back(hot);
-    cold_.push_back({duration, repeat < 0 ? 0u : static_cast<std::uint32_t>(repeat) + 1u, slot, 0, curve});
+    const std::uint32_t plays = def.repeat < 0 ? 0u : static_cast<std::uint32_t>(def.repeat) + 1u;
+    cold_.push_back({duration, plays, slot, 0, curve, 0, def.reversed});
     slots_[slot].dense = dense;
     if (driven_begin_ != dense) {  // the first driven record moves to the end; this one takes its place
         const std::uint32_t first = driven_begin_;
@@ -132,7 +133,7 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
     h.y_offset = static_cast<std::int16_t>(y_from_x);
     h.kind = kind_byte(def.curve.kind(), LaneKernel::other);  // add() puts in the path's
     h.flags = static_cast<std::uint8_t>((is_float ? flag_float : 0) | (def.paused ? flag_paused : 0) |
-                                        (def.yoyo ? flag_yoyo : 0) | (def.reversed ? flag_reversed : 0));
+                                        (def.yoyo ? flag_yoyo : 0));
     std::optional<Extra> extra;
     if (def.heading || on_update || bind.ref || def.overwrite || has_range(def) || def.offset != 0.0) {
         extra.emplace();
@@ -159,7 +160,7 @@ Animation EngineImpl::create(void* target, std::size_t x_offset, std::size_t y_o
     }
     h.path = acquire_path(path);
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
-    const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+    const Animation a = add(h, curve, duration, def, std::move(extra));
     if (find(a.slot_, a.generation_)) remember_scale(a.slot_, def.time_scale);  // unless a handler killed it
     return a;
 }
@@ -189,7 +190,7 @@ Animation EngineImpl::create_nd(void* target, std::vector<MemberRef> members, Pa
     }
     h.path = acquire_path(Path());  // shared placeholder: N-D values come from the Extra
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
-    const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+    const Animation a = add(h, curve, duration, def, std::move(extra));
     if (find(a.slot_, a.generation_)) remember_scale(a.slot_, def.time_scale);  // unless a handler killed it
     return a;
 }

@@ -36,7 +36,7 @@ enum HotFlag : std::uint8_t {
     flag_float = 2,     // the target's members are float (else double)
     flag_backward = 4,  // the current play runs from the path's end to its start
     flag_yoyo = 8,
-    flag_reversed = 16,
+    flag_forever = 16,  // plays forever (Cold::plays is 0): no play is the last, known without the Cold record
     flag_custom = 32,   // written through its Extra (N-D, callback, heading)
     flag_dead = 64,     // killed or completed during a dispatch; removed afterwards
     flag_listens = 128, // has loop or complete handlers in its Extra
@@ -87,6 +87,7 @@ struct Cold {
     // time_scale() = rate·duration moved by this many ulps (rate·duration is up to ~2 ulps
     // off the scale set); scale_in_extra: too far, the scale is in Extra::time_scale
     std::int8_t scale_ulps = 0;
+    bool reversed = false;  // AnimationDef::reversed: every play starts backward unless yoyo turns it
 };
 
 /// A handle slot: 8 bytes. `dense` is the record index while alive; free slots chain
@@ -242,7 +243,7 @@ private:
     // path slot if acquiring the curve throws.
     std::uint16_t acquire_curve_for(std::uint32_t path, const Curve& curve);
     void release_curve(std::uint16_t index) noexcept;
-    Animation add(Hot hot, std::uint16_t curve, double duration, int repeat, double delay, std::optional<Extra> extra);
+    Animation add(Hot hot, std::uint16_t curve, double duration, const AnimationDef& def, std::optional<Extra> extra);
 
     double ease(CurveKind kind, std::uint16_t curve, double x) const noexcept;
     Vec2 point(std::uint32_t path, double u) const noexcept;

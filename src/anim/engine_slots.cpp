@@ -35,7 +35,7 @@ void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
     const PlayState s = play_at_position(seconds / c.duration, static_cast<double>(c.plays),
-                                         (h.flags & flag_reversed) != 0, (h.flags & flag_yoyo) != 0, gap_of(dense));
+                                         c.reversed, (h.flags & flag_yoyo) != 0, gap_of(dense));
     c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
     h.phase = s.phase + s.gap;
     h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));

@@ -240,14 +240,13 @@ void EngineImpl::advance_back(std::uint32_t dense, double phase) {
     if (position <= 0.0) {
         c.play = 0;
         h.phase = 0.0;
-        const bool reversed = (h.flags & flag_reversed) != 0;
-        h.flags = static_cast<std::uint8_t>(reversed ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+        h.flags = static_cast<std::uint8_t>(c.reversed ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
         if (was_at_start) return;
         write_state(dense);
         if (h.flags & flag_listens) fire_simple(dense, &Extra::on_reverse_complete);
         return;
     }
-    const PlayState s = play_at_position(position, static_cast<double>(c.plays), (h.flags & flag_reversed) != 0,
+    const PlayState s = play_at_position(position, static_cast<double>(c.plays), c.reversed,
                                          (h.flags & flag_yoyo) != 0, gap);
     c.play = wrap_plays(s.play);
     h.phase = s.phase + s.gap;

@@ -199,7 +199,7 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
     c.rate = std::fabs(h.rate);  // a run-time reverse does not carry into the timeline
     c.plays = cold.plays;
     c.gap = engine_.gap_of(dense);
-    c.reversed = (h.flags & flag_reversed) != 0;
+    c.reversed = cold.reversed;
     c.yoyo = (h.flags & flag_yoyo) != 0;
     if (c.plays == 0.0 || !(c.rate > 0.0))
         throw Error(w + ": an endless animation (repeat -1 or time_scale 0) has no end to place");

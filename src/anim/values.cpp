@@ -26,7 +26,7 @@ Animation EngineImpl::create_value(void* object, std::unique_ptr<TargetRef> ref,
     }
     h.path = acquire_path(Path());  // shared placeholder: the value comes from the track
     const std::uint16_t curve = acquire_curve_for(h.path, def.curve);
-    const Animation a = add(h, curve, duration, def.repeat, def.delay, std::move(extra));
+    const Animation a = add(h, curve, duration, def, std::move(extra));
     if (find(a.slot_, a.generation_)) remember_scale(a.slot_, def.time_scale);  // unless a handler killed it
     return a;
 }
@@ -103,7 +103,7 @@ void EngineImpl::hold_at_play(std::uint32_t dense, double play) {
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
     const PlayState s =
-        play_at_position(play, static_cast<double>(c.plays), (h.flags & flag_reversed) != 0, (h.flags & flag_yoyo) != 0);
+        play_at_position(play, static_cast<double>(c.plays), c.reversed, (h.flags & flag_yoyo) != 0);
     c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
     h.phase = s.phase;
     h.flags = static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
