@@ -191,6 +191,37 @@ TEST(EngineLean, ShuffledKindsGiveTheBitsOfTheGeneralUpdate) {
     }
 }
 
+// Plays that end on the same tick all through long runs (two runs of 500, one on a line and
+// one on a cubic), so that far more loops than the run's log of new plays holds (64) come in
+// one run: each record's play count (its time) and target as the general update has them.
+TEST(EngineLean, PlaysEndingTogetherInLongRunsAreAllCounted) {
+    constexpr std::size_t n = 1000;
+    const Path line = grape::LinearPath({3, -4}, {280, 380});
+    const Path cubic = grape::CubicBezierPath({0, 0}, {10, 40}, {60, -20}, {100, 0});
+    auto make = [&](World& w, bool general) {
+        w.doubles.resize(n);
+        w.floats.resize(n);
+        w.spaced.resize(n);
+        w.spaced_floats.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const AnimationDef def{.curve = Curve::quad_in_out(), .repeat = -1, .reversed = i % 3 == 0, .yoyo = i % 2 == 0};
+            Animation a = w.engine.create_2d_animation(w.doubles[i], i < n / 2 ? line : cubic, 0.5, def);
+            if (general) a.on_update([] {});
+            w.anims.push_back(a);
+        }
+    };
+    auto lean = std::make_unique<World>();
+    auto reference = std::make_unique<World>();
+    make(*lean, false);
+    make(*reference, true);
+    for (int tick = 0; tick < 60; ++tick) {
+        lean->engine.tick(0.1);  // every fifth tick ends every play
+        reference->engine.tick(0.1);
+        ASSERT_NO_FATAL_FAILURE(expect_same(*lean, *reference, tick));
+    }
+    EXPECT_NEAR(lean->anims[7].time(), 6.0, 1e-12);  // 60 sums of 0.1: a few ulps of 6
+}
+
 // Every formula kind on a line and on a cubic, double and float targets, mid-play: the value
 // curve.hpp's formula and Path::point give (lines: a + (b − a)·u where Path::point has lerp,
 // within an ulp of the coordinates' size; cubics: Path::point's own formula, exactly).

@@ -18,13 +18,16 @@ struct LeanTables {
     const LineFast* line;    // per path
     const PathFast* fast;
     const ArcFast* arc;
-    const Cold* cold;        // per record
+    Cold* cold;              // per record
     bool wide;               // wide_lanes()
 };
 
 // A play ends for about one record in a hundred per tick, and the general update then reads
 // its Cold record, a cache miss of ~100 ns that would cost more than the record's whole
-// update: asked for `cold_ahead` records before it is needed, when the record's play ends now
+// update: the arc-length runs ask for it `cold_ahead` records before it is needed, when the
+// record's play ends now (the runs on lines and cubics do not: lean_loop takes the plays that
+// loop forever without it, and the test ahead cost them more than it saved the others; see
+// ask_hot_quad)
 // (160 records, ~350 ns of lane updates: at 10⁶ the Cold records spread over 24 MB, so the
 // request also waits for a page walk; at 64 the step that ends a run still took a tenth of
 // the tick under perf, most of it waiting for the Cold record, at 160 half as much). The hot
@@ -115,29 +118,83 @@ inline bool lean_step(Hot& h, const LineFast* lines, const PathFast* fast, doubl
     return true;
 }
 
+// The records that began a new play inside a lean run, whose Cold play counts are added
+// in one pass when the run returns (or the log is full): an ending play is the only update
+// of a lean record that writes its Cold record, a cache and TLB miss (the Cold records of 10⁶
+// animations spread over 24 MB), and taken where it comes, asked for or not, that wait cost a
+// sixth of the linear run at 10⁶; in one pass the misses overlap. Nothing reads a record's
+// play count while the run goes on.
+class NewPlays {
+public:
+    explicit NewPlays(Cold* cold) noexcept : cold_(cold) {}
+    NewPlays(const NewPlays&) = delete;
+    NewPlays& operator=(const NewPlays&) = delete;
+    ~NewPlays() { flush(); }
+    void add(std::size_t i) noexcept {
+        index_[count_++] = static_cast<std::uint32_t>(i);
+        if (count_ == capacity) flush();
+    }
+    void flush() noexcept {
+        for (std::size_t k = 0; k < count_; ++k) ++cold_[index_[k]].play;  // wraps at 2³², parity kept
+        count_ = 0;
+    }
+
+private:
+    static constexpr std::size_t capacity = 64;  // ~8,000 records of a run at one ending in ~120
+    Cold* cold_;
+    std::size_t count_ = 0;
+    std::uint32_t index_[capacity];
+};
+
+// Whether a record's next play, when its play ends, is lean_loop's (no look at its Cold
+// record): it plays forever and nobody listens.
+inline bool loops_lean(std::uint8_t flags) noexcept { return (flags & (flag_forever | flag_listens)) == flag_forever; }
+
+// Record i of a lean run when its play ends on this tick and it plays forever with nobody
+// listening: its next play, as plain_advance makes it, without reading its Cold record (the
+// count goes to `plays`); false, nothing changed, for any other record.
+template <CurveKind K, KernelKind P, bool F>
+inline bool lean_loop(Hot& h, const LineFast* lines, const PathFast* fast, double dt, std::size_t i,
+                      NewPlays& plays) noexcept {
+    constexpr std::uint16_t want = run_want<K, lane_kernel(P), F>;
+    double phase = h.phase + dt * h.rate;
+    if ((kind_and_flags(h) & lean_mask) != want || !loops_lean(h.flags) || !(phase >= play_end && phase < 2.0 - play_snap))
+        return false;
+    phase = std::max(phase - 1.0, 0.0);
+    const bool backward = ((h.flags & flag_backward) != 0) != ((h.flags & flag_yoyo) != 0);
+    const double u = detail::ease_formula(K, backward ? 1.0 - phase : phase);
+    if constexpr (!stays_on_path(K))
+        if (!(u >= 0.0 && u <= 1.0)) return false;  // outside the path's ends: Path::point's tangents
+    h.phase = phase;
+    h.flags = static_cast<std::uint8_t>(backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+    write_pair<std::conditional_t<F, float, double>>(h.target, h.y_offset, lean_point<P>(lines, fast, h.path, u));
+    plays.add(i);
+    return true;
+}
+
 // Records from i on while they share curve kind K (no parameters), path kernel P (lines or
 // cubics) and target type F (float or double), stay inside the current play, are not
 // paused, dead or custom, have a target and started before this tick; returns the first
-// record that does not (or n), unchanged. What it writes is plain_step's, bit for bit: the
-// same formulas on the same values. The easing and path formula are inline and nothing
-// else is tested, so a record costs a few instructions more than a hand-written loop; the
-// records up to `hot_ahead` before the end ask for those ahead without bound tests, the
-// last ones ask for nothing.
+// record that does not (or n), unchanged; a record whose new play lean_loop takes stays in
+// the run. What it writes is plain_step's, bit for bit: the same formulas on the same values.
+// The easing and path formula are inline and nothing else is tested, so a record costs a few
+// instructions more than a hand-written loop; the records up to `hot_ahead` before the end ask
+// for those ahead without bound tests, the last ones ask for nothing.
 template <CurveKind K, KernelKind P, bool F>
 GRAPE_FLATTEN std::size_t lean_run(Hot* hot, const LeanTables& t, std::size_t i, std::size_t n, double dt) noexcept {
     static_assert(!has_parameters(K) && (P == KernelKind::linear || P == KernelKind::cubic));
-    static_assert(cold_ahead < hot_ahead);
     const LineFast* const lines = t.line;  // locals: the target writes cannot alias them
     const PathFast* const fast = t.fast;
-    const Cold* const cold = t.cold;
+    NewPlays plays(t.cold);
     const std::size_t far = n > hot_ahead ? n - hot_ahead : 0;
     for (; i < far; ++i) {
         ask_hot(hot, i + hot_ahead);
-        ask_cold_if_ending(hot, cold, i + cold_ahead, dt);
-        if (!lean_step<K, P, F>(hot[i], lines, fast, dt)) return i;
+        if (!lean_step<K, P, F>(hot[i], lines, fast, dt) && !lean_loop<K, P, F>(hot[i], lines, fast, dt, i, plays))
+            return i;
     }
     for (; i < n; ++i)
-        if (!lean_step<K, P, F>(hot[i], lines, fast, dt)) return i;
+        if (!lean_step<K, P, F>(hot[i], lines, fast, dt) && !lean_loop<K, P, F>(hot[i], lines, fast, dt, i, plays))
+            return i;
     return i;
 }
 
