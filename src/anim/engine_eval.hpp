@@ -68,6 +68,18 @@ inline void write_target(const Hot& h, Vec2 p) noexcept {
 
 inline void EngineImpl::write_2d(const Hot& h, Vec2 p) const noexcept { write_target(h, p); }
 
+// A play that ends within a tick leads into the next one alone while the phase stays below
+// next_play_end (beyond it the tick crosses a whole play: the timing model's work): the next
+// play's phase, and its direction after the yoyo's turn. The tick's loops share it.
+inline constexpr double next_play_end = 2.0 - play_snap;
+struct NextPlay {
+    double phase;
+    std::uint8_t flags;
+};
+inline NextPlay next_play(const Hot& h, double phase) noexcept {
+    return {std::max(phase - 1.0, 0.0), static_cast<std::uint8_t>((h.flags & flag_yoyo) ? h.flags ^ flag_backward : h.flags)};
+}
+
 // The common case of a tick: playing, not paused, dead or custom, a target to write, no play
 // end that anybody listens for. Reads and writes record i alone (and its target), so records
 // may run on separate threads; the general path takes everything else. In two stages, so
@@ -85,10 +97,11 @@ inline bool EngineImpl::plain_advance(Hot* hot, Cold* cold, std::size_t i, doubl
     if (phase >= play_end) {
         // A new play that nobody listens for, reached within this tick: handled here.
         Cold& c = cold[i];
-        if ((h.flags & flag_listens) || phase >= 2.0 - play_snap || (c.plays != 0 && c.play + 1 >= c.plays)) return false;
+        if ((h.flags & flag_listens) || phase >= next_play_end || (c.plays != 0 && c.play + 1 >= c.plays)) return false;
         ++c.play;
-        phase = std::max(phase - 1.0, 0.0);
-        if (h.flags & flag_yoyo) h.flags ^= flag_backward;
+        const NextPlay next = next_play(h, phase);
+        phase = next.phase;
+        h.flags = next.flags;
     }
     h.phase = phase;
     const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;

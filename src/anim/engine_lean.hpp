@@ -157,16 +157,15 @@ template <CurveKind K, KernelKind P, bool F>
 inline bool lean_loop(Hot& h, const LineFast* lines, const PathFast* fast, double dt, std::size_t i,
                       NewPlays& plays) noexcept {
     constexpr std::uint16_t want = run_want<K, lane_kernel(P), F>;
-    double phase = h.phase + dt * h.rate;
-    if ((kind_and_flags(h) & lean_mask) != want || !loops_lean(h.flags) || !(phase >= play_end && phase < 2.0 - play_snap))
+    const double phase = h.phase + dt * h.rate;
+    if ((kind_and_flags(h) & lean_mask) != want || !loops_lean(h.flags) || !(phase >= play_end && phase < next_play_end))
         return false;
-    phase = std::max(phase - 1.0, 0.0);
-    const bool backward = ((h.flags & flag_backward) != 0) != ((h.flags & flag_yoyo) != 0);
-    const double u = detail::ease_formula(K, backward ? 1.0 - phase : phase);
+    const NextPlay next = next_play(h, phase);
+    const double u = detail::ease_formula(K, (next.flags & flag_backward) ? 1.0 - next.phase : next.phase);
     if constexpr (!stays_on_path(K))
         if (!(u >= 0.0 && u <= 1.0)) return false;  // outside the path's ends: Path::point's tangents
-    h.phase = phase;
-    h.flags = static_cast<std::uint8_t>(backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward));
+    h.phase = next.phase;
+    h.flags = next.flags;
     write_pair<std::conditional_t<F, float, double>>(h.target, h.y_offset, lean_point<P>(lines, fast, h.path, u));
     plays.add(i);
     return true;
