@@ -191,13 +191,18 @@ TEST(EngineLean, ShuffledKindsGiveTheBitsOfTheGeneralUpdate) {
     }
 }
 
-// Plays that end on the same tick all through long runs (two runs of 500, one on a line and
-// one on a cubic), so that far more loops than the run's log of new plays holds (64) come in
-// one run: each record's play count (its time) and target as the general update has them.
+// Plays that end on the same tick all through long runs (three runs of 500: on a line, on a
+// cubic, on an arc-length path), so that far more loops than the run's log of new plays
+// holds (64) come in one run: each record's play count (its time) and target as the general
+// update has them. Plays of 4.5 ticks, so that each new play begins half a tick in, where
+// the arc-length run takes it too (it leaves the path's exact ends, u = 0 and 1, to
+// Path::point).
 TEST(EngineLean, PlaysEndingTogetherInLongRunsAreAllCounted) {
-    constexpr std::size_t n = 1000;
+    constexpr std::size_t n = 1500;
     const Path line = grape::LinearPath({3, -4}, {280, 380});
     const Path cubic = grape::CubicBezierPath({0, 0}, {10, 40}, {60, -20}, {100, 0});
+    const Path arc = cubic.reparametrized();
+    const Path* const paths[] = {&line, &cubic, &arc};  // runs of 500 on each kernel
     auto make = [&](World& w, bool general) {
         w.doubles.resize(n);
         w.floats.resize(n);
@@ -205,7 +210,7 @@ TEST(EngineLean, PlaysEndingTogetherInLongRunsAreAllCounted) {
         w.spaced_floats.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             const AnimationDef def{.curve = Curve::quad_in_out(), .repeat = -1, .reversed = i % 3 == 0, .yoyo = i % 2 == 0};
-            Animation a = w.engine.create_2d_animation(w.doubles[i], i < n / 2 ? line : cubic, 0.5, def);
+            Animation a = w.engine.create_2d_animation(w.doubles[i], *paths[i / 500], 0.45, def);
             if (general) a.on_update([] {});
             w.anims.push_back(a);
         }
@@ -215,7 +220,7 @@ TEST(EngineLean, PlaysEndingTogetherInLongRunsAreAllCounted) {
     make(*lean, false);
     make(*reference, true);
     for (int tick = 0; tick < 60; ++tick) {
-        lean->engine.tick(0.1);  // every fifth tick ends every play
+        lean->engine.tick(0.1);
         reference->engine.tick(0.1);
         ASSERT_NO_FATAL_FAILURE(expect_same(*lean, *reference, tick));
     }

@@ -22,36 +22,18 @@ struct LeanTables {
     bool wide;               // wide_lanes()
 };
 
-// A play ends for about one record in a hundred per tick, and the general update then reads
-// its Cold record, a cache miss of ~100 ns that would cost more than the record's whole
-// update: the arc-length runs ask for it `cold_ahead` records before it is needed, when the
-// record's play ends now (the runs on lines and cubics do not: lean_loop takes the plays that
-// loop forever without it, and the test ahead cost them more than it saved the others; see
-// ask_hot_quad)
-// (160 records, ~350 ns of lane updates: at 10⁶ the Cold records spread over 24 MB, so the
-// request also waits for a page walk; at 64 the step that ends a run still took a tenth of
-// the tick under perf, most of it waiting for the Cold record, at 160 half as much). The hot
-// records are read in order, but each costs tens of instructions, so the reorder window
-// holds fewer of their misses than a plain copy loop's: asked for `hot_ahead` records (8 KB)
-// early, beyond what the demand loads reach, and far enough before `cold_ahead` that the
-// test of an ending play reads a record already here. (Measured at 10⁶, 6 alternating
-// rounds: 160/256 against 64/128, lines 2.24 → 2.13 ns and cubics 2.73 → 2.61 ns, faster in
-// every round; 256/384 no better than 160/256. Before the four-lane loops, 64/128 beat
-// 16/64, 32/128, 40/64 and 96/160.)
-inline constexpr std::size_t cold_ahead = 160;
+// A play ends for about one record in a hundred per tick. The plays that loop forever with
+// nobody listening begin their next play inside the run (lean_loop, arc_advance); the rest
+// leave it for the general update, which reads their Cold record, a cache miss. No run asks
+// for that record ahead any more: the test of a play ending ahead read hot records asked for
+// only shortly before, and that wait cost more than the misses it saved (lines, a sixth of
+// the run at 10⁶; arc-length paths, arc / cubic 2.5 → 2.1). The hot records are read in
+// order, but each costs tens of instructions, so the reorder window holds fewer of their
+// misses than a plain copy loop's: asked for `hot_ahead` records (8 KB) early, beyond what
+// the demand loads reach. (Measured at 10⁶, 6 alternating rounds, with Cold records asked
+// for 160 ahead: 160/256 against 64/128, lines 2.24 → 2.13 ns and cubics 2.73 → 2.61 ns,
+// faster in every round; 256/384 no better than 160/256.)
 inline constexpr std::size_t hot_ahead = 256;
-// Record j's Cold record (j < n: the caller's bound).
-inline void ask_cold(const Cold* cold, std::size_t j) noexcept {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(cold + j, 1);
-#else
-    (void)cold, (void)j;
-#endif
-}
-// Record j's Cold record when its play ends on this tick (j < n: the caller's bound).
-inline void ask_cold_if_ending(const Hot* hot, const Cold* cold, std::size_t j, double dt) noexcept {
-    if (hot[j].phase + dt * hot[j].rate >= play_end) ask_cold(cold, j);
-}
 // Record j's hot record (j < n: the caller's bound).
 inline void ask_hot(const Hot* hot, std::size_t j) noexcept {
 #if defined(__GNUC__) || defined(__clang__)
@@ -59,9 +41,6 @@ inline void ask_hot(const Hot* hot, std::size_t j) noexcept {
 #else
     (void)hot, (void)j;
 #endif
-}
-inline void ask_cold_ahead(const Hot* hot, const Cold* cold, std::size_t i, std::size_t n, double dt) noexcept {
-    if (i + cold_ahead < n) ask_cold_if_ending(hot, cold, i + cold_ahead, dt);
 }
 inline void ask_hot_ahead(const Hot* hot, std::size_t i, std::size_t n) noexcept {
     if (i + hot_ahead < n) ask_hot(hot, i + hot_ahead);

@@ -13,27 +13,35 @@
 namespace grape::detail {
 
 // One record of an arc-length run's batch: advanced, its table piece found and asked for;
-// false (nothing changed) when it does not belong to the run. Far: the records `hot_ahead`
-// on exist, so the look-ahead needs no bound test.
+// false (nothing changed) when it does not belong to the run. A play that ends and loops
+// forever with nobody listening begins its next play here, as lean_loop has it (its count
+// goes to `plays`). Far: the records `hot_ahead` on exist, so the look-ahead needs no bound
+// test.
 template <CurveKind K, bool F, bool Far>
-inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::size_t i, std::size_t n, double dt,
-                        ArcLengthTable::Piece& piece) noexcept {
+inline bool arc_advance(Hot* hot, const ArcFast* arcs, std::size_t i, std::size_t n, double dt,
+                        ArcLengthTable::Piece& piece, NewPlays& plays) noexcept {
     constexpr std::uint16_t want = run_want<K, LaneKernel::arc, F>;
-    if constexpr (Far) {
-        ask_hot(hot, i + hot_ahead);
-        ask_cold_if_ending(hot, cold, i + cold_ahead, dt);
-    } else {
-        ask_hot_ahead(hot, i, n);
-        ask_cold_ahead(hot, cold, i, n, dt);
-    }
+    if constexpr (Far) ask_hot(hot, i + hot_ahead);
+    else ask_hot_ahead(hot, i, n);
     Hot& h = hot[i];
-    const double phase = h.phase + dt * h.rate;
+    double phase = h.phase + dt * h.rate;
     // the arc lane kernel in `want`: the path has a table (reparametrized kernels exist only with one)
-    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end))
-        return false;
-    const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
+    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0)) return false;
+    std::uint8_t flags = h.flags;
+    const bool loops = !(phase < play_end);
+    if (loops) {
+        if (!loops_lean(flags) || !(phase < next_play_end)) return false;  // (a NaN phase fails here)
+        const NextPlay next = next_play(h, phase);
+        phase = next.phase;
+        flags = next.flags;
+    }
+    const double u = detail::ease_formula(K, (flags & flag_backward) ? 1.0 - phase : phase);
     if (!(u > 0.0 && u < 1.0)) return false;
     h.phase = phase;
+    if (loops) {
+        h.flags = flags;
+        plays.add(i);
+    }
     const ArcFast& f = arcs[h.path];
     piece = ArcLengthTable::piece_at(f.table, f.steps, u);
     ArcLengthTable::prefetch_piece(piece.c);
@@ -51,15 +59,15 @@ inline std::size_t arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::si
     static_assert(!has_parameters(K));
     constexpr std::size_t batch = 32;
     const ArcFast* const arcs = t.arc;  // locals: the writes cannot alias them
-    const Cold* const cold = t.cold;
+    NewPlays plays(t.cold);
     ArcLengthTable::Piece piece[batch];
     while (i < n) {
         const std::size_t m = std::min(batch, n - i);
         std::size_t k = 0;
         if (i + m + hot_ahead <= n) {
-            while (k < m && arc_advance<K, F, true>(hot, arcs, cold, i + k, n, dt, piece[k])) ++k;
+            while (k < m && arc_advance<K, F, true>(hot, arcs, i + k, n, dt, piece[k], plays)) ++k;
         } else {
-            while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k])) ++k;
+            while (k < m && arc_advance<K, F, false>(hot, arcs, i + k, n, dt, piece[k], plays)) ++k;
         }
         for (std::size_t j = 0; j < k; ++j) {
             const Hot& h = hot[i + j];
@@ -101,15 +109,15 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
     static_assert(stays_on_path(K));
     constexpr std::size_t batch = 32;
     const ArcFast* const arcs = t.arc;
-    const Cold* const cold = t.cold;
     const LaneConsts c = lane_consts<K, LaneKernel::arc, F>(dt);
+    NewPlays plays(t.cold);
     ArcLengthTable::Piece piece[batch];
     while (i < n) {
         const std::size_t m = std::min(batch, n - i);
         std::size_t k = 0;
         if (i + m + hot_ahead <= n) {
             for (; k + 4 <= m; k += 4) {
-                ask_ahead_quad(hot, cold, i + k, c);
+                ask_hot_quad(hot, i + k);
                 Hot* const h = hot + i + k;
                 __m256d phase;
                 Lanes u;
@@ -124,9 +132,9 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
                                                piece + k);
                 for (std::size_t j = 0; j < 4; ++j) ArcLengthTable::prefetch_piece(piece[k + j].c);
             }
-            while (k < m && arc_advance<K, F, true>(hot, arcs, cold, i + k, n, dt, piece[k])) ++k;
+            while (k < m && arc_advance<K, F, true>(hot, arcs, i + k, n, dt, piece[k], plays)) ++k;
         } else {
-            while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k])) ++k;
+            while (k < m && arc_advance<K, F, false>(hot, arcs, i + k, n, dt, piece[k], plays)) ++k;
         }
         std::size_t j = 0;
         using T = std::conditional_t<F, float, double>;

@@ -137,26 +137,10 @@ GRAPE_AVX2 inline LaneConsts lane_consts(double dt) noexcept {
             _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{want} << 48))};
 }
 
-// Asks for the hot records `hot_ahead` on (records i + hot_ahead + 3 exist). Not for any
-// Cold record, as the arc-length runs do (ask_ahead_quad): the test of a play ending
-// `cold_ahead` records on reads records asked for only 96 records earlier, and that wait
-// cost more (a sixth of the linear run at 10⁶, every play looping forever) than the Cold
-// records of the plays that lean_loop does not take save.
+// Asks for the hot records `hot_ahead` on (records i + hot_ahead + 3 exist).
 GRAPE_AVX2 inline void ask_hot_quad(const Hot* hot, std::size_t i) noexcept {
     ask_hot(hot, i + hot_ahead);
     ask_hot(hot, i + hot_ahead + 2);
-}
-// Asks for the hot records `hot_ahead` on and for the Cold records of plays that end when
-// the records `cold_ahead` on are reached (records i + hot_ahead + 3 exist).
-GRAPE_AVX2 inline void ask_ahead_quad(const Hot* hot, const Cold* cold, std::size_t i, const LaneConsts& c) noexcept {
-    ask_hot_quad(hot, i);
-    static_assert(cold_ahead < hot_ahead);
-    const Quad ahead = load_quad(hot + i + cold_ahead);
-    const __m256d next = _mm256_add_pd(ahead.phase, _mm256_mul_pd(c.step, ahead.rate));
-    if (int ending = _mm256_movemask_pd(_mm256_cmp_pd(next, c.end, _CMP_GE_OQ))) {
-        for (std::size_t j = 0; ending; ++j, ending >>= 1)
-            if (ending & 1) ask_cold(cold, i + cold_ahead + j);
-    }
 }
 
 // Records h[0 … 3] in lanes: their new phases and eased progress, false (nothing computed
