@@ -12,17 +12,57 @@
 
 namespace grape::detail {
 
+// A play that ends and that the run does not continue (it does not loop forever, or somebody
+// listens) leaves the run for the general update, which reads the record's Cold record, a
+// cache and TLB miss: asked for `cold_ahead` records before (~800 ns of arc-length updates,
+// so the hot record tested there arrived long ago). The plays the run continues are not
+// asked for: their play counts are added in one pass (NewPlays), where the misses overlap.
+inline constexpr std::size_t cold_ahead = 160;
+static_assert(cold_ahead < hot_ahead);
+inline void ask_cold_if_leaving(const Hot* hot, const Cold* cold, std::size_t j, double dt) noexcept {
+    const Hot& h = hot[j];
+    if (h.phase + dt * h.rate >= play_end && !loops_lean(h.flags)) {
+#if defined(__GNUC__) || defined(__clang__)
+        __builtin_prefetch(cold + j, 1);
+#else
+        (void)cold;
+#endif
+    }
+}
+
+#if GRAPE_WIDE
+// ask_cold_if_leaving for the records `cold_ahead` on, four at a time (records i + hot_ahead
+// + 3 exist): one compare for the four, the flags read only where a play ends.
+GRAPE_AVX2 inline void ask_leaving_quad(const Hot* hot, const Cold* cold, std::size_t i, const LaneConsts& c) noexcept {
+    const Quad ahead = load_quad(hot + i + cold_ahead);
+    const __m256d next = _mm256_add_pd(ahead.phase, _mm256_mul_pd(c.step, ahead.rate));
+    if (int ending = _mm256_movemask_pd(_mm256_cmp_pd(next, c.end, _CMP_GE_OQ))) {
+        for (std::size_t j = i + cold_ahead; ending; ++j, ending >>= 1)
+            if ((ending & 1) && !loops_lean(hot[j].flags)) {
+#if defined(__GNUC__) || defined(__clang__)
+                __builtin_prefetch(cold + j, 1);
+#endif
+            }
+    }
+}
+#endif
+
 // One record of an arc-length run's batch: advanced, its table piece found and asked for;
 // false (nothing changed) when it does not belong to the run. A play that ends and loops
-// forever with nobody listening begins its next play here, as lean_loop has it (its count
+// forever with nobody listening leads into the next here, as lean_loop has it (its count
 // goes to `plays`). Far: the records `hot_ahead` on exist, so the look-ahead needs no bound
 // test.
 template <CurveKind K, bool F, bool Far>
-inline bool arc_advance(Hot* hot, const ArcFast* arcs, std::size_t i, std::size_t n, double dt,
+inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::size_t i, std::size_t n, double dt,
                         ArcLengthTable::Piece& piece, NewPlays& plays) noexcept {
     constexpr std::uint16_t want = run_want<K, LaneKernel::arc, F>;
-    if constexpr (Far) ask_hot(hot, i + hot_ahead);
-    else ask_hot_ahead(hot, i, n);
+    if constexpr (Far) {
+        ask_hot(hot, i + hot_ahead);
+        ask_cold_if_leaving(hot, cold, i + cold_ahead, dt);
+    } else {
+        ask_hot_ahead(hot, i, n);
+        if (i + cold_ahead < n) ask_cold_if_leaving(hot, cold, i + cold_ahead, dt);
+    }
     Hot& h = hot[i];
     double phase = h.phase + dt * h.rate;
     // the arc lane kernel in `want`: the path has a table (reparametrized kernels exist only with one)
@@ -59,15 +99,16 @@ inline std::size_t arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::si
     static_assert(!has_parameters(K));
     constexpr std::size_t batch = 32;
     const ArcFast* const arcs = t.arc;  // locals: the writes cannot alias them
+    const Cold* const cold = t.cold;
     NewPlays plays(t.cold);
     ArcLengthTable::Piece piece[batch];
     while (i < n) {
         const std::size_t m = std::min(batch, n - i);
         std::size_t k = 0;
         if (i + m + hot_ahead <= n) {
-            while (k < m && arc_advance<K, F, true>(hot, arcs, i + k, n, dt, piece[k], plays)) ++k;
+            while (k < m && arc_advance<K, F, true>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
         } else {
-            while (k < m && arc_advance<K, F, false>(hot, arcs, i + k, n, dt, piece[k], plays)) ++k;
+            while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
         }
         for (std::size_t j = 0; j < k; ++j) {
             const Hot& h = hot[i + j];
@@ -109,6 +150,7 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
     static_assert(stays_on_path(K));
     constexpr std::size_t batch = 32;
     const ArcFast* const arcs = t.arc;
+    const Cold* const cold = t.cold;
     const LaneConsts c = lane_consts<K, LaneKernel::arc, F>(dt);
     NewPlays plays(t.cold);
     ArcLengthTable::Piece piece[batch];
@@ -118,6 +160,7 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
         if (i + m + hot_ahead <= n) {
             for (; k + 4 <= m; k += 4) {
                 ask_hot_quad(hot, i + k);
+                ask_leaving_quad(hot, cold, i + k, c);
                 Hot* const h = hot + i + k;
                 __m256d phase;
                 Lanes u;
@@ -132,9 +175,9 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
                                                piece + k);
                 for (std::size_t j = 0; j < 4; ++j) ArcLengthTable::prefetch_piece(piece[k + j].c);
             }
-            while (k < m && arc_advance<K, F, true>(hot, arcs, i + k, n, dt, piece[k], plays)) ++k;
+            while (k < m && arc_advance<K, F, true>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
         } else {
-            while (k < m && arc_advance<K, F, false>(hot, arcs, i + k, n, dt, piece[k], plays)) ++k;
+            while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
         }
         std::size_t j = 0;
         using T = std::conditional_t<F, float, double>;
