@@ -192,11 +192,11 @@ TEST(EngineLean, ShuffledKindsGiveTheBitsOfTheGeneralUpdate) {
 }
 
 // Plays that end on the same tick all through long runs (three runs of 500: on a line, on a
-// cubic, on an arc-length path), so that far more loops than the run's log of new plays
-// holds (64) come in one run: each record's play count (its time) and target as the general
-// update has them. Plays of 4.5 ticks, so that each new play begins half a tick in, where
-// the arc-length run takes it too (it leaves the path's exact ends, u = 0 and 1, to
-// Path::point).
+// cubic, on an arc-length path; endless and of 6 plays), so that far more new plays than the
+// run's log holds (64) come in one run: each record's play count (its time), whether it is
+// alive and its target as the general update has them. Plays of 4.5 ticks, so that each new
+// play begins half a tick in, where the arc-length run takes it too (it leaves the path's
+// exact ends, u = 0 and 1, to Path::point).
 TEST(EngineLean, PlaysEndingTogetherInLongRunsAreAllCounted) {
     constexpr std::size_t n = 1500;
     const Path line = grape::LinearPath({3, -4}, {280, 380});
@@ -209,7 +209,9 @@ TEST(EngineLean, PlaysEndingTogetherInLongRunsAreAllCounted) {
         w.spaced.resize(n);
         w.spaced_floats.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
-            const AnimationDef def{.curve = Curve::quad_in_out(), .repeat = -1, .reversed = i % 3 == 0, .yoyo = i % 2 == 0};
+            // a quarter with 6 plays: the run leads into their next play until the last, which ends them
+            const AnimationDef def{
+                .curve = Curve::quad_in_out(), .repeat = i % 4 == 1 ? 5 : -1, .reversed = i % 3 == 0, .yoyo = i % 2 == 0};
             Animation a = w.engine.create_2d_animation(w.doubles[i], *paths[i / 500], 0.45, def);
             if (general) a.on_update([] {});
             w.anims.push_back(a);

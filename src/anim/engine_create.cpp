@@ -93,10 +93,11 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, const A
     // bound to nothing (a null target): no lean run, so that theirs need not test the target
     hot.kind = kind_byte(curve_kind(hot), hot.target ? lane_kernel(path_kind_[hot.path]) : LaneKernel::other);
     if (def.reversed) hot.flags |= flag_backward;
-    if (def.repeat < 0) hot.flags |= flag_forever;
-    hot_.push_back(hot);
     const std::uint32_t plays = def.repeat < 0 ? 0u : static_cast<std::uint32_t>(def.repeat) + 1u;
-    cold_.push_back({duration, plays, slot, 0, curve, 0, def.reversed});
+    const Cold cold{duration, plays, slot, 0, curve, 0, def.reversed};
+    hot.flags = with_more(hot.flags, cold);
+    hot_.push_back(hot);
+    cold_.push_back(cold);
     slots_[slot].dense = dense;
     if (driven_begin_ != dense) {  // the first driven record moves to the end; this one takes its place
         const std::uint32_t first = driven_begin_;

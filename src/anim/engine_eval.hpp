@@ -101,7 +101,7 @@ inline bool EngineImpl::plain_advance(Hot* hot, Cold* cold, std::size_t i, doubl
         ++c.play;
         const NextPlay next = next_play(h, phase);
         phase = next.phase;
-        h.flags = next.flags;
+        h.flags = with_more(next.flags, c);
     }
     h.phase = phase;
     const double x = (h.flags & flag_backward) ? 1.0 - phase : phase;

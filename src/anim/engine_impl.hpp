@@ -36,7 +36,7 @@ enum HotFlag : std::uint8_t {
     flag_float = 2,     // the target's members are float (else double)
     flag_backward = 4,  // the current play runs from the path's end to its start
     flag_yoyo = 8,
-    flag_forever = 16,  // plays forever (Cold::plays is 0): no play is the last, known without the Cold record
+    flag_more = 16,     // a play follows the current one (see with_more), known without the Cold record
     flag_custom = 32,   // written through its Extra (N-D, callback, heading)
     flag_dead = 64,     // killed or completed during a dispatch; removed afterwards
     flag_listens = 128, // has loop or complete handlers in its Extra
@@ -89,6 +89,13 @@ struct Cold {
     std::int8_t scale_ulps = 0;
     bool reversed = false;  // AnimationDef::reversed: every play starts backward unless yoyo turns it
 };
+
+// flag_more for a record whose Cold play count is `c`: set when the record plays forever or
+// its current play is not its last. Every change of Cold::play sets it again, so that it is
+// never set on a last play (the lean runs begin the next play on its word alone).
+inline std::uint8_t with_more(std::uint8_t flags, const Cold& c) noexcept {
+    return static_cast<std::uint8_t>((c.plays == 0 || c.play + 1 < c.plays) ? flags | flag_more : flags & ~flag_more);
+}
 
 /// A handle slot: 8 bytes. `dense` is the record index while alive; free slots chain
 /// through it with the high bit set.

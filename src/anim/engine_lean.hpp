@@ -22,9 +22,10 @@ struct LeanTables {
     bool wide;               // wide_lanes()
 };
 
-// A play ends for about one record in a hundred per tick. The plays that loop forever with
-// nobody listening begin their next play inside the run (lean_loop, arc_advance); the rest
-// leave it for the general update, which reads their Cold record, a cache miss. No run asks
+// A play ends for about one record in a hundred per tick. The plays that another follows,
+// with nobody listening, begin the next inside the run (lean_loop, arc_advance); the rest
+// (last plays, listeners) leave it for the general update, which reads their Cold record, a
+// cache miss. No run asks
 // for that record ahead any more: the test of a play ending ahead read hot records asked for
 // only shortly before, and that wait cost more than the misses it saved (lines, a sixth of
 // the run at 10⁶; arc-length paths, arc / cubic 2.5 → 2.1). The hot records are read in
@@ -98,14 +99,15 @@ inline bool lean_step(Hot& h, const LineFast* lines, const PathFast* fast, doubl
 }
 
 // The records that began a new play inside a lean run, whose Cold play counts are added
-// in one pass when the run returns (or the log is full): an ending play is the only update
-// of a lean record that writes its Cold record, a cache and TLB miss (the Cold records of 10⁶
-// animations spread over 24 MB), and taken where it comes, asked for or not, that wait cost a
-// sixth of the linear run at 10⁶; in one pass the misses overlap. Nothing reads a record's
-// play count while the run goes on.
+// in one pass when the run returns (or the log is full), each with its flag_more for the
+// play after: an ending play is the only update of a lean record that writes its Cold
+// record, a cache and TLB miss (the Cold records of 10⁶ animations spread over 24 MB), and
+// taken where it comes, asked for or not, that wait cost a sixth of the linear run at 10⁶;
+// in one pass the misses overlap. Nothing reads a record's play count while the run goes on,
+// and a record begins at most one play a run.
 class NewPlays {
 public:
-    explicit NewPlays(Cold* cold) noexcept : cold_(cold) {}
+    NewPlays(Hot* hot, Cold* cold) noexcept : hot_(hot), cold_(cold) {}
     NewPlays(const NewPlays&) = delete;
     NewPlays& operator=(const NewPlays&) = delete;
     ~NewPlays() { flush(); }
@@ -114,23 +116,28 @@ public:
         if (count_ == capacity) flush();
     }
     void flush() noexcept {
-        for (std::size_t k = 0; k < count_; ++k) ++cold_[index_[k]].play;  // wraps at 2³², parity kept
+        for (std::size_t k = 0; k < count_; ++k) {
+            Cold& c = cold_[index_[k]];
+            ++c.play;  // wraps at 2³², parity kept
+            hot_[index_[k]].flags = with_more(hot_[index_[k]].flags, c);
+        }
         count_ = 0;
     }
 
 private:
     static constexpr std::size_t capacity = 64;  // ~8,000 records of a run at one ending in ~120
+    Hot* hot_;
     Cold* cold_;
     std::size_t count_ = 0;
     std::uint32_t index_[capacity];
 };
 
 // Whether a record's next play, when its play ends, is lean_loop's (no look at its Cold
-// record): it plays forever and nobody listens.
-inline bool loops_lean(std::uint8_t flags) noexcept { return (flags & (flag_forever | flag_listens)) == flag_forever; }
+// record): another play follows (forever, or not the last of its repeats) and nobody listens.
+inline bool loops_lean(std::uint8_t flags) noexcept { return (flags & (flag_more | flag_listens)) == flag_more; }
 
-// Record i of a lean run when its play ends on this tick and it plays forever with nobody
-// listening: its next play, as plain_advance makes it, without reading its Cold record (the
+// Record i of a lean run when its play ends on this tick, another play follows and nobody
+// listens: its next play, as plain_advance makes it, without reading its Cold record (the
 // count goes to `plays`); false, nothing changed, for any other record.
 template <CurveKind K, KernelKind P, bool F>
 inline bool lean_loop(Hot& h, const LineFast* lines, const PathFast* fast, double dt, std::size_t i,
@@ -163,7 +170,7 @@ GRAPE_FLATTEN std::size_t lean_run(Hot* hot, const LeanTables& t, std::size_t i,
     static_assert(!has_parameters(K) && (P == KernelKind::linear || P == KernelKind::cubic));
     const LineFast* const lines = t.line;  // locals: the target writes cannot alias them
     const PathFast* const fast = t.fast;
-    NewPlays plays(t.cold);
+    NewPlays plays(hot, t.cold);
     const std::size_t far = n > hot_ahead ? n - hot_ahead : 0;
     for (; i < far; ++i) {
         ask_hot(hot, i + hot_ahead);

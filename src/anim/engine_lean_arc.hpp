@@ -12,11 +12,11 @@
 
 namespace grape::detail {
 
-// A play that ends and that the run does not continue (it does not loop forever, or somebody
-// listens) leaves the run for the general update, which reads the record's Cold record, a
-// cache and TLB miss: asked for `cold_ahead` records before (~800 ns of arc-length updates,
-// so the hot record tested there arrived long ago). The plays the run continues are not
-// asked for: their play counts are added in one pass (NewPlays), where the misses overlap.
+// A play that ends and that the run does not continue (a last play, listeners) leaves the run
+// for the general update, which reads the record's Cold record, a cache and TLB miss: asked
+// for `cold_ahead` records before (~800 ns of arc-length updates, so the hot record tested
+// there arrived long ago). The plays the run continues are not asked for: their play counts
+// are added in one pass (NewPlays), where the misses overlap.
 inline constexpr std::size_t cold_ahead = 160;
 static_assert(cold_ahead < hot_ahead);
 inline void ask_cold_if_leaving(const Hot* hot, const Cold* cold, std::size_t j, double dt) noexcept {
@@ -48,8 +48,8 @@ GRAPE_AVX2 inline void ask_leaving_quad(const Hot* hot, const Cold* cold, std::s
 #endif
 
 // One record of an arc-length run's batch: advanced, its table piece found and asked for;
-// false (nothing changed) when it does not belong to the run. A play that ends and loops
-// forever with nobody listening leads into the next here, as lean_loop has it (its count
+// false (nothing changed) when it does not belong to the run. A play that ends, with another
+// to follow and nobody listening, leads into the next here, as lean_loop has it (its count
 // goes to `plays`). Far: the records `hot_ahead` on exist, so the look-ahead needs no bound
 // test.
 template <CurveKind K, bool F, bool Far>
@@ -100,7 +100,7 @@ inline std::size_t arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::si
     constexpr std::size_t batch = 32;
     const ArcFast* const arcs = t.arc;  // locals: the writes cannot alias them
     const Cold* const cold = t.cold;
-    NewPlays plays(t.cold);
+    NewPlays plays(hot, t.cold);
     ArcLengthTable::Piece piece[batch];
     while (i < n) {
         const std::size_t m = std::min(batch, n - i);
@@ -152,7 +152,7 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
     const ArcFast* const arcs = t.arc;
     const Cold* const cold = t.cold;
     const LaneConsts c = lane_consts<K, LaneKernel::arc, F>(dt);
-    NewPlays plays(t.cold);
+    NewPlays plays(hot, t.cold);
     ArcLengthTable::Piece piece[batch];
     while (i < n) {
         const std::size_t m = std::min(batch, n - i);

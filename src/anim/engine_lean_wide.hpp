@@ -213,7 +213,7 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t lean_run_wide(Hot* hot, const LeanTables& t
     static_assert(stays_on_path(K) && (P == KernelKind::linear || P == KernelKind::cubic));
     const LineFast* const lines = t.line;  // locals: the target writes cannot alias them
     const PathFast* const fast = t.fast;
-    NewPlays plays(t.cold);
+    NewPlays plays(hot, t.cold);
     const LaneConsts c = lane_consts<K, lane_kernel(P), F>(dt);
     using T = std::conditional_t<F, float, double>;
     const std::size_t far = n > hot_ahead ? n - hot_ahead : 0;
