@@ -25,15 +25,15 @@ struct LeanTables {
 // A play ends for about one record in a hundred per tick. The plays that another follows,
 // with nobody listening, begin the next inside the run (lean_loop, arc_advance); the rest
 // (last plays, listeners) leave it for the general update, which reads their Cold record, a
-// cache miss. No run asks
-// for that record ahead any more: the test of a play ending ahead read hot records asked for
-// only shortly before, and that wait cost more than the misses it saved (lines, a sixth of
-// the run at 10⁶; arc-length paths, arc / cubic 2.5 → 2.1). The hot records are read in
-// order, but each costs tens of instructions, so the reorder window holds fewer of their
-// misses than a plain copy loop's: asked for `hot_ahead` records (8 KB) early, beyond what
-// the demand loads reach. (Measured at 10⁶, 6 alternating rounds, with Cold records asked
-// for 160 ahead: 160/256 against 64/128, lines 2.24 → 2.13 ns and cubics 2.73 → 2.61 ns,
-// faster in every round; 256/384 no better than 160/256.)
+// cache miss. The runs on lines and cubics do not ask for that record ahead: the test of a
+// play ending ahead read hot records asked for only shortly before, and that wait cost more
+// than the misses it saved (a sixth of the linear run at 10⁶); the arc-length runs, whose
+// records take longer, do (engine_lean_arc.hpp). The hot records are read in order, but each
+// costs tens of instructions, so the reorder window holds fewer of their misses than a plain
+// copy loop's: asked for `hot_ahead` records (8 KB) early, beyond what the demand loads
+// reach. (Measured at 10⁶, 6 alternating rounds, with Cold records asked for 160 ahead:
+// 160/256 against 64/128, lines 2.24 → 2.13 ns and cubics 2.73 → 2.61 ns, faster in every
+// round; 256/384 no better than 160/256.)
 inline constexpr std::size_t hot_ahead = 256;
 // Record j's hot record (j < n: the caller's bound).
 inline void ask_hot(const Hot* hot, std::size_t j) noexcept {
