@@ -321,6 +321,9 @@ TEST(Spring, NamesAndErrors) {
     expect_error([] { (void)Curve::spring({.stiffness = -1, .damping = 1}); }, {"stiffness must be finite and > 0"});
     expect_error([] { (void)Curve::spring({.mass = NAN}); }, {"mass must be finite and > 0"});
     expect_error([] { (void)Curve::spring({.velocity = INFINITY}); }, {"velocity must be finite"});
+    // ζ ≈ 6e-38: ~1e38 swings before it settles (the count a loop of n ± 1 never got through)
+    expect_error([] { (void)grape::parse_curve("spring(100,10,6.6e72,0)"); }, {"swings more than a million times"});
+    expect_error([] { (void)Curve::spring({.stiffness = 1e6, .damping = 1e-6}); }, {"swings more than a million times"});
     expect_error([] { (void)Curve::spring_duration(0.5, 1.0); }, {"bounce must be in (-1, 1) (got 1)"});
     expect_error([] { (void)Curve::spring_duration(0.0); }, {"duration must be finite and > 0"});
     expect_error([] { (void)grape::parse_curve("spring(1)"); }, {"takes 2 to 4 arguments (got 1)"});

@@ -63,7 +63,12 @@ double fall_time(const SpringData& d, double lo, double hi) noexcept {
     return hi;
 }
 
-// The spring time after which |x| stays within the tolerance: the last fall of |x| through it.
+// Half-oscillations of an under-damped spring before it settles, at most: a million, far more
+// than any animation shows (a frame would hold thousands of swings).
+constexpr double max_half_periods = 1e6;
+
+// The spring time after which |x| stays within the tolerance: the last fall of |x| through it;
+// NaN for an under-damped spring that swings more than max_half_periods times first.
 // |x| is monotone between consecutive extrema of x, so the fall lies after the last extremum
 // (or the release) where |x| still exceeds the tolerance, before the next extremum.
 double settle_time(const SpringData& d, double v0) noexcept {
@@ -82,8 +87,12 @@ double settle_time(const SpringData& d, double v0) noexcept {
         const double first = std::abs(detail::spring_offset(d, at(0.0)));
         if (!(first > tol)) return fall_time(d, 0.0, at(0.0));  // |x| falls from 1 before the first extremum
         double n = std::floor(std::log(first / tol) / (rho * half));
-        while (n > 0.0 && !(std::abs(detail::spring_offset(d, at(n))) > tol)) n -= 1.0;
-        while (std::abs(detail::spring_offset(d, at(n + 1.0))) > tol) n += 1.0;
+        // Beyond max_half_periods no animation could show the swings, and n ± 1 stops
+        // changing n long before n reaches 2^53: refused (NaN) rather than stepped through.
+        if (!(n <= max_half_periods)) return std::nan("");
+        // n is the exact count to rounding: a step or two corrects it
+        for (int k = 0; k < 64 && n > 0.0 && !(std::abs(detail::spring_offset(d, at(n))) > tol); ++k) n -= 1.0;
+        for (int k = 0; k < 64 && std::abs(detail::spring_offset(d, at(n + 1.0))) > tol; ++k) n += 1.0;
         return fall_time(d, at(n), at(n + 1.0));
     }
     // Critical and over-damped: at most one extremum after release, where x′ = 0.
@@ -144,6 +153,10 @@ Curve Curve::spring(const SpringCurveDef& def) {
                     number_text(def.damping) + " and mass " + number_text(def.mass) +
                     " give a spring whose rates a double cannot hold");
     d->span = settle_time(*d, def.velocity);
+    if (std::isnan(d->span))
+        throw Error(std::string(where) + ": the spring swings more than a million times before it settles (stiffness " +
+                    number_text(def.stiffness) + ", damping " + number_text(def.damping) + ", mass " +
+                    number_text(def.mass) + ")");
     if (!(std::isfinite(d->span) && d->span > 0.0))
         throw Error(std::string(where) + ": the spring does not settle in a time a double can hold (stiffness " +
                     number_text(def.stiffness) + ", damping " + number_text(def.damping) + ")");
