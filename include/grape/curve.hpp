@@ -346,6 +346,8 @@ public:
     /// stays below spring_settle_tolerance), normalized so that curve(1) = 1 exactly:
     /// curve(t) = 1 − x(t·T) + t·x(T), within 1e-3 of the physical value everywhere. Outside
     /// [0, 1] holds 0 and 1. Play it over settling_time() seconds to move in physical time.
+    /// Throws grape::Error for a parameter out of range and for a spring that swings more
+    /// than a million times before it settles (ζ below ~2.2e-6: ln(1000)/(π·ζ) half-swings).
     static Curve spring(const SpringCurveDef& def);
     /// A spring by perceptual duration and bounce, as SwiftUI's Spring(duration:bounce:) and
     /// CSS spring generators give it: mass 1, stiffness (2π/duration)², damping
