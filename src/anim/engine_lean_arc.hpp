@@ -21,13 +21,7 @@ inline constexpr std::size_t cold_ahead = 160;
 static_assert(cold_ahead < hot_ahead);
 inline void ask_cold_if_leaving(const Hot* hot, const Cold* cold, std::size_t j, double dt) noexcept {
     const Hot& h = hot[j];
-    if (h.phase + dt * h.rate >= play_end && !loops_lean(h.flags)) {
-#if defined(__GNUC__) || defined(__clang__)
-        __builtin_prefetch(cold + j, 1);
-#else
-        (void)cold;
-#endif
-    }
+    if (h.phase + dt * h.rate >= play_end && !loops_lean(h.flags)) ask_cold(cold, j);
 }
 
 #if GRAPE_WIDE
@@ -38,11 +32,7 @@ GRAPE_AVX2 inline void ask_leaving_quad(const Hot* hot, const Cold* cold, std::s
     const __m256d next = _mm256_add_pd(ahead.phase, _mm256_mul_pd(c.step, ahead.rate));
     if (int ending = _mm256_movemask_pd(_mm256_cmp_pd(next, c.end, _CMP_GE_OQ))) {
         for (std::size_t j = i + cold_ahead; ending; ++j, ending >>= 1)
-            if ((ending & 1) && !loops_lean(hot[j].flags)) {
-#if defined(__GNUC__) || defined(__clang__)
-                __builtin_prefetch(cold + j, 1);
-#endif
-            }
+            if ((ending & 1) && !loops_lean(hot[j].flags)) ask_cold(cold, j);
     }
 }
 #endif

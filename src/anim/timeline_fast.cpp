@@ -40,14 +40,6 @@ constexpr std::size_t ahead = timeline_ahead;
 constexpr std::size_t stages = 5;
 constexpr std::size_t stride = 2;
 
-inline void prefetch(const void* p) noexcept {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(p, 1);
-#else
-    (void)p;
-#endif
-}
-
 struct Depth {
     int& depth;
     explicit Depth(int& d) noexcept : depth(d) { ++depth; }
@@ -174,8 +166,8 @@ void TimelineStore::ask_stage(int stage, std::uint32_t root) const noexcept {
     if (root >= roots_.size()) return;
     const RootEntry& e = roots_[root];
     if (stage == 0) {  // nothing of the entry read yet: it is what this step asks for
-        prefetch(&e);
-        prefetch(reinterpret_cast<const char*>(&e) + sizeof(RootEntry) - 1);
+        ask_line(&e);
+        ask_line(reinterpret_cast<const char*>(&e) + sizeof(RootEntry) - 1);
         return;
     }
     const TimelineRec* r = e.rec;
@@ -184,33 +176,33 @@ void TimelineStore::ask_stage(int stage, std::uint32_t root) const noexcept {
         if (slot >= slots.size()) return;
         const Slot s = slots[slot];
         if (!(s.dense & free_bit) && s.dense < engine_.hot_.size()) {
-            prefetch(&engine_.hot_[s.dense]);
-            prefetch(&engine_.cold_[s.dense]);
+            ask_line(&engine_.hot_[s.dense]);
+            ask_line(&engine_.cold_[s.dense]);
         }
     };
     switch (stage) {
         case 1:
             if (r) {
                 const char* p = reinterpret_cast<const char*>(r);
-                for (std::size_t line = 0; line < 256; line += 64) prefetch(p + line);  // the fields an update reads
+                for (std::size_t line = 0; line < 256; line += 64) ask_line(p + line);  // the fields an update reads
             }
-            if (e.child < slots.size()) prefetch(&slots[e.child]);
+            if (e.child < slots.size()) ask_line(&slots[e.child]);
             return;
         case 2:
             if (r) {
                 const std::size_t count = r->children.size();
-                if (r->started < count) prefetch(r->children.data() + r->started);  // the next to start
-                if (r->started + 1 < count) prefetch(r->children.data() + r->started + 1);  // and the one after
-                if (e.child_index < count) prefetch(r->children.data() + e.child_index);
-                if (r->finished < r->by_end.size()) prefetch(r->by_end.data() + r->finished);
-                prefetch(r->active.data());
+                if (r->started < count) ask_line(r->children.data() + r->started);  // the next to start
+                if (r->started + 1 < count) ask_line(r->children.data() + r->started + 1);  // and the one after
+                if (e.child_index < count) ask_line(r->children.data() + e.child_index);
+                if (r->finished < r->by_end.size()) ask_line(r->by_end.data() + r->finished);
+                ask_line(r->active.data());
             }
             ask_records(e.child);
             return;
         case 3:
             if (r && r->started < r->children.size() && !r->children[r->started].is_timeline &&
                 r->children[r->started].slot < slots.size())
-                prefetch(&slots[r->children[r->started].slot]);
+                ask_line(&slots[r->children[r->started].slot]);
             return;
         default:
             if (r && r->started < r->children.size() && !r->children[r->started].is_timeline)
@@ -248,7 +240,7 @@ GRAPE_FLATTEN std::size_t TimelineStore::fast_run(std::size_t i, std::size_t n, 
         std::size_t k = 0, count = 0;
         for (; k < m; ++k) {
             const std::size_t j = i + k;
-            if (j + ahead < n && (lines[j + ahead].bits & root_mode) == root_one) prefetch(lines[j + ahead].target);
+            if (j + ahead < n && (lines[j + ahead].bits & root_mode) == root_one) ask_line(lines[j + ahead].target);
             RootLine& l = lines[j];
             const std::uint8_t mode = l.bits & root_mode;
             if (mode == root_idle) continue;

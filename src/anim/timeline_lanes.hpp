@@ -85,7 +85,7 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t timeline_lanes(RootLine* lines, const LineF
     for (; i + 4 <= n; i += 4) {
         RootLine* const l = lines + i;
         if (i + timeline_ahead + 4 <= n)
-            for (std::size_t k = 0; k < 4; ++k) __builtin_prefetch(l[timeline_ahead + k].target, 1);
+            for (std::size_t k = 0; k < 4; ++k) ask_line(l[timeline_ahead + k].target);
         const LineQuad q = load_lines(l);
         const __m256d elapsed = _mm256_add_pd(q.elapsed, step);
         const __m256i kind_ok = _mm256_cmpeq_epi64(_mm256_and_si256(q.rest, mask), want);
