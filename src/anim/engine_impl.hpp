@@ -96,6 +96,10 @@ struct Cold {
 inline std::uint8_t with_more(std::uint8_t flags, const Cold& c) noexcept {
     return static_cast<std::uint8_t>((c.plays == 0 || c.play + 1 < c.plays) ? flags | flag_more : flags & ~flag_more);
 }
+// The flags after Cold::play or the direction changed: flag_backward as `backward`, flag_more anew.
+inline std::uint8_t play_flags(std::uint8_t flags, bool backward, const Cold& c) noexcept {
+    return with_more(static_cast<std::uint8_t>(backward ? flags | flag_backward : flags & ~flag_backward), c);
+}
 
 /// A handle slot: 8 bytes. `dense` is the record index while alive; free slots chain
 /// through it with the high bit set.

@@ -38,7 +38,7 @@ void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
                                          c.reversed, (h.flags & flag_yoyo) != 0, gap_of(dense));
     c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
     h.phase = s.phase + s.gap;
-    h.flags = with_more(static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward)), c);
+    h.flags = play_flags(h.flags, s.backward, c);
     try {
         Dispatch d(*this);
         write_state(dense);

@@ -215,7 +215,7 @@ void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
         completes = s.finished;
         c.play = completes ? c.plays - 1 : c.play + wrap_plays(s.play);
         phase = s.phase + s.gap;  // inside a repeat delay the phase runs past 1 (clamped when drawn)
-        h.flags = with_more(static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward)), c);
+        h.flags = play_flags(h.flags, s.backward, c);
     }
     h.phase = phase;
     write_state(dense);
@@ -240,7 +240,7 @@ void EngineImpl::advance_back(std::uint32_t dense, double phase) {
     if (position <= 0.0) {
         c.play = 0;
         h.phase = 0.0;
-        h.flags = with_more(static_cast<std::uint8_t>(c.reversed ? (h.flags | flag_backward) : (h.flags & ~flag_backward)), c);
+        h.flags = play_flags(h.flags, c.reversed, c);
         if (was_at_start) return;
         write_state(dense);
         if (h.flags & flag_listens) fire_simple(dense, &Extra::on_reverse_complete);
@@ -250,7 +250,7 @@ void EngineImpl::advance_back(std::uint32_t dense, double phase) {
                                          (h.flags & flag_yoyo) != 0, gap);
     c.play = wrap_plays(s.play);
     h.phase = s.phase + s.gap;
-    h.flags = with_more(static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward)), c);
+    h.flags = play_flags(h.flags, s.backward, c);
     write_state(dense);
 }
 

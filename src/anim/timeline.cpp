@@ -216,7 +216,7 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
     pending_driven_.push_back(a.slot_);
     cold.play = 0;
     hot.phase = 0.0;
-    hot.flags = with_more(static_cast<std::uint8_t>(c.reversed ? (hot.flags | flag_backward) : (hot.flags & ~flag_backward)), cold);
+    hot.flags = play_flags(hot.flags, c.reversed, cold);
     {
         EngineImpl::Dispatch d(engine_);
         engine_.write_state(dense);

@@ -365,7 +365,7 @@ bool TimelineStore::cross(std::size_t i, double dt) {
         Cold& cold = engine_.cold_[dense];
         cold.play = s.finished ? cold.plays - 1 : wrap_plays(s.play);
         h.phase = s.phase < 0.0 ? 0.0 : s.phase + s.gap;
-        h.flags = with_more(static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward)), cold);
+        h.flags = play_flags(h.flags, s.backward, cold);
         engine_.write_state(dense);  // plain: writes the target, runs nothing
         if (s.phase < 0.0) h.phase = s.phase;
     };

@@ -106,7 +106,7 @@ void EngineImpl::hold_at_play(std::uint32_t dense, double play) {
         play_at_position(play, static_cast<double>(c.plays), c.reversed, (h.flags & flag_yoyo) != 0);
     c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
     h.phase = s.phase;
-    h.flags = with_more(static_cast<std::uint8_t>(s.backward ? (h.flags | flag_backward) : (h.flags & ~flag_backward)), c);
+    h.flags = play_flags(h.flags, s.backward, c);
     write_state(dense);
 }
 
