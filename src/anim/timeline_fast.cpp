@@ -176,8 +176,8 @@ void TimelineStore::ask_stage(int stage, std::uint32_t root) const noexcept {
         if (slot >= slots.size()) return;
         const Slot s = slots[slot];
         if (!(s.dense & free_bit) && s.dense < engine_.hot_.size()) {
-            ask_line(&engine_.hot_[s.dense]);
-            ask_line(&engine_.cold_[s.dense]);
+            ask_hot(engine_.hot_.data(), s.dense);
+            ask_cold(engine_.cold_.data(), s.dense);
         }
     };
     switch (stage) {
