@@ -182,10 +182,16 @@ bool TimelineStore::advance(std::uint32_t slot, double tau, bool fire) {
     r = recs_[slot].get();
     r->tau = from;  // the sweep's points set it from their local times, which may round
     if (tau == from) return true;
-    // A handler that places children may lengthen the play: at the end of the update the
-    // window goes, silently, to where the time now falls in it.
+    // A handler that places children may lengthen the play, or place them behind the playhead
+    // or across it after the last point this update crosses: at the end of the update the
+    // window goes, silently, to where the time now falls in it, and the children active there
+    // are brought to it (as sync does for children placed from outside an update).
     const double planned = r->duration;
-    auto done = [&] { return recs_[slot]->duration == planned || advance(slot, recs_[slot]->tau, false); };
+    auto done = [&] {
+        const TimelineRec& now = *recs_[slot];
+        if (now.duration == planned && !now.dirty) return true;
+        return advance(slot, now.tau, false) && drive_active(slot, recs_[slot]->cursor, false);
+    };
     const PlayPoint b = point_of(*r, tau);
     if (tau > from) {
         if (b.waiting) {
