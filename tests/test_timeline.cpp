@@ -260,7 +260,9 @@ std::vector<double> unfold(const Tree& tree, const std::vector<Laid>& laid, int 
     const double plays = d.repeat < 0 ? 1e9 : d.repeat + 1.0;
     for (double k = 0; k < plays; k += 1.0) {
         const double begin = d.delay + k * (duration + d.repeat_delay);
-        if (begin > horizon) break;
+        // Only endless plays (the root's) are cut: `horizon` is in root seconds, and a nested
+        // timeline's own seconds run ahead of them by its parents' time scales.
+        if (d.repeat < 0 && begin > horizon) break;
         const bool back = d.yoyo && std::fmod(k, 2.0) == 1.0;
         out.push_back(begin + (back ? duration - x : x));
     }
@@ -330,6 +332,13 @@ TEST(TimelineEvents, CallbacksMatchTheReferenceUnderRandomTrees) {
         std::vector<int> expected;
         double tau = 0.0;
         const double delay = tree.nodes[0].def.delay;
+        // A tick that starts more than max_loop_events plays of the root goes straight to the
+        // last one (timeline.hpp): only the crossings in the play it leaves and in the one it
+        // reaches fire. (Nested timelines play at most three times: never capped.)
+        const TimelineDef& root_def = tree.nodes[0].def;
+        const double cycle = lay_out(tree)[0].duration + root_def.repeat_delay;
+        const double last_play = root_def.repeat < 0 ? INFINITY : root_def.repeat;
+        auto play_of = [&](double t) { return t <= delay ? 0.0 : std::min(std::floor((t - delay) / cycle), last_play); };
         for (int step = 0; step < 120; ++step) {
             if (rng() % 8 == 0) {
                 if (built.root.reversed()) built.root.play();
@@ -339,12 +348,15 @@ TEST(TimelineEvents, CallbacksMatchTheReferenceUnderRandomTrees) {
             engine.tick(dt);
             const double now = built.root.time() + delay;
             // The reference's crossings between the two times, in the order of travel.
+            const double from_play = play_of(tau), to_play = play_of(now);
+            const bool skips = std::fabs(to_play - from_play) > grape::max_loop_events;
+            auto fires = [&](double t) { return !skips || play_of(t) == from_play || play_of(t) == to_play; };
             if (now > tau) {
                 for (const Occurrence& o : crossings)
-                    if (o.tau > tau && o.tau <= now) expected.push_back(o.id);
+                    if (o.tau > tau && o.tau <= now && fires(o.tau)) expected.push_back(o.id);
             } else {
                 for (auto it = crossings.rbegin(); it != crossings.rend(); ++it)
-                    if (it->tau < tau && it->tau >= now) expected.push_back(it->id);
+                    if (it->tau < tau && it->tau >= now && fires(it->tau)) expected.push_back(it->id);
             }
             tau = now;
             if (tau >= horizon - 1.0) break;
@@ -366,6 +378,44 @@ TEST(TimelineEvents, CallbacksMatchTheReferenceUnderRandomTrees) {
         compared += static_cast<int>(log.size());
     }
     EXPECT_GT(compared, 2000);  // the trees do cross their callbacks
+}
+
+// Work per update is bounded: up to max_loop_events plays started in one tick, every crossing
+// fires; beyond, the callbacks of the play the tick leaves and of the play it reaches fire and
+// the plays between are crossed silently, forward and backward (the random trees above reach
+// this only with a few seeds in thousands).
+TEST(TimelineEvents, ATickAcrossManyPlaysFiresItsFirstAndLastPlayBeyondMaxLoopEvents) {
+    static_assert(grape::max_loop_events == 16);  // the ticks below start 16 and 17 plays
+    Engine engine;
+    std::vector<double> at;
+    std::vector<int> loops;
+    Timeline tl = engine.create_timeline({.repeat = -1});
+    tl.gap(1.0, 0.0).call([&] { at.push_back(tl.time()); }, 0.5);  // plays of 1 s, a callback halfway
+    tl.on_loop([&](int play) { loops.push_back(play); });
+    engine.tick(0.25);
+    engine.tick(16.0);  // 0.25 → 16.25: 16 plays start, all fire
+    std::vector<double> every;
+    std::vector<int> each;
+    for (int k = 0; k < 16; ++k) every.push_back(k + 0.5), each.push_back(k + 1);
+    EXPECT_EQ(at, every);
+    EXPECT_EQ(loops, each);
+    at.clear();
+    loops.clear();
+    engine.tick(17.5);  // 16.25 → 33.75: 17 plays start
+    EXPECT_EQ(at, (std::vector<double>{16.5, 33.5}));
+    EXPECT_EQ(loops, std::vector<int>{33});  // once, for the last play (as for animations)
+    EXPECT_EQ(tl.time(), 33.75);
+    at.clear();
+    loops.clear();
+    tl.reverse();
+    engine.tick(17.5);  // back to 16.25: play 33's part, then play 16's
+    EXPECT_EQ(at, (std::vector<double>{33.5, 16.5}));
+    EXPECT_TRUE(loops.empty());  // no loop events going backward
+    EXPECT_EQ(tl.time(), 16.25);
+    at.clear();
+    engine.tick(16.0);  // 16.25 → 0.25 backward: 16 plays, all fire
+    std::reverse(every.begin(), every.end());
+    EXPECT_EQ(at, every);
 }
 
 // Determinism: random trees three deep (repeats, yoyo, repeat delays, time scales at every
@@ -726,6 +776,41 @@ TEST(TimelineHandlers, AnUpdateEndedByAHandlerLeavesTheStateOfItsTime) {
         EXPECT_EQ(a.x, r.x);  // the state seek gives, to the bit (0.3 + 1 ulp here)
         away_and_back(tl, {&a});
     }
+}
+
+// Children placed from the timeline's own on_update, after the last point its update crosses,
+// take the state of the time before the tick returns: one behind the playhead at its end, one
+// across it where the time falls in it (a timeline built with them from the start and sought
+// there gives the reference).
+TEST(TimelineHandlers, ChildrenPlacedFromOnUpdateTakeTheirStateInThatTick) {
+    auto make = [](Engine& engine, Point& a, Point& b, Point& c, bool all) {
+        Timeline tl = engine.create_timeline();
+        tl.add(engine.create_2d_animation(a, unit_line, 4.0));
+        if (all) {
+            tl.add(engine.create_2d_animation(b, unit_line, 0.5), 0.25);  // ends at 0.75
+            tl.add(engine.create_2d_animation(c, unit_line, 2.0), 1.5);   // runs 1.5 … 3.5
+        }
+        return tl;
+    };
+    Engine engine, reference;
+    Point a, b, c, ra, rb, rc;
+    Timeline tl = make(engine, a, b, c, false);
+    engine.tick(2.0);
+    bool placed = false;
+    tl.on_update([&] {
+        if (placed) return;
+        placed = true;
+        tl.add(engine.create_2d_animation(b, unit_line, 0.5), 0.25);
+        tl.add(engine.create_2d_animation(c, unit_line, 2.0), 1.5);
+    });
+    engine.tick(0.5);
+    EXPECT_EQ(tl.time(), 2.5);
+    EXPECT_EQ(b.x, 1.0);  // at its end
+    EXPECT_EQ(c.x, 0.5);  // 1 s into 2 s: exact
+    make(reference, ra, rb, rc, true).seek(2.5);
+    EXPECT_EQ(a.x, ra.x);
+    EXPECT_EQ(b.x, rb.x);
+    EXPECT_EQ(c.x, rc.x);
 }
 
 // Children that lengthen the play move where the time falls in it, never the time: placed

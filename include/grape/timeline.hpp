@@ -31,9 +31,13 @@
 // the other: within one update, the first one's events up to that point come before the
 // second one's. Each callback fires once per crossing (forward: when time reaches it; backward:
 // when time goes back to it), also when one large dt crosses many. A yoyo play running back
-// crosses its callbacks backward. Children that are animations fire their on_start,
-// on_loop, on_complete and on_reverse_complete as the timeline drives them across those
-// points, not dying at their end.
+// crosses its callbacks backward. Work per update is bounded as for loop events: an update
+// that starts more than max_loop_events plays of one timeline (either way) fires what it
+// crosses in the play it leaves and in the play it reaches, and crosses the plays between
+// silently (their callbacks and children's events do not fire; their state is reached).
+// Children that are animations fire their on_start, on_loop, on_complete and
+// on_reverse_complete as the timeline drives them across those points, not dying at their
+// end.
 //
 // Handlers may create, kill, pause, seek or reverse anything, this timeline included. A
 // handler that seeks, pauses, reverses, re-times or kills a timeline ends that timeline's
