@@ -539,6 +539,36 @@ TEST(SceneErrors, SyntaxAndNesting) {
     expect_error(R"({"paths": [{"name": "deep", "path": )" + deep + "}]}", where, "nested more than 32 deep");
 }
 
+// Every scene that loads saves to one that loads: the depth bound also holds for a path as
+// written out, where a named path is spelled out in full and a closed chordal Catmull–Rom
+// spline becomes a complex path of its Béziers (one level deeper than the object read).
+TEST(SceneErrors, NestingCountsThePathAsWrittenOut) {
+    const std::string loop = R"({"name": "loop", "path": {"kind": "catmull_rom_spline", "closed": true, "type": "chordal",
+                                 "points": [[0, 0], [100, 0], [100, 100], [0, 80]]}})";
+    const std::string pair = R"({"name": "pair", "path": {"kind": "complex", "parts": [{"kind": "complex", "parts": [
+                                 {"kind": "linear", "start": [0, 0], "end": [1, 0]}]}]}})";  // two levels
+    auto nest = [](std::string inner, int levels) {
+        for (int i = 0; i < levels; ++i) inner = R"({"kind": "complex", "parts": [)" + inner + "]}";
+        return inner;
+    };
+    auto scene = [&](const std::string& named, const std::string& path) {
+        return R"({"paths": [)" + named + R"(, {"name": "all", "path": )" + path + "}]}";
+    };
+    // At the bound as written (31 levels, then the loop's own): loads, and its saved form loads
+    // and saves to the same text.
+    for (const std::string& text : {scene(loop, nest("\"loop\"", 31)), scene(pair, nest("\"pair\"", 30))}) {
+        const std::string saved = grape::save_scene(grape::load_scene(text));
+        EXPECT_EQ(grape::save_scene(grape::load_scene(saved)), saved);
+    }
+    // One level past it: refused where the whole path is named, as the saved form would be.
+    expect_error(scene(loop, nest("\"loop\"", 32)), "/paths/1/path", "nested more than 32 deep as written out");
+    expect_error(scene(pair, nest("\"pair\"", 31)), "/paths/1/path", "nested more than 32 deep as written out");
+    const std::string inline_loop =
+        R"({"kind": "catmull_rom_spline", "closed": true, "type": "chordal", "points": [[0, 0], [1, 0], [1, 1], [0, 2]]})";
+    expect_error(scene(loop, nest(inline_loop, 32)), "/paths/1/path", "nested more than 32 deep as written out");
+    EXPECT_NO_THROW((void)grape::load_scene(scene(loop, nest(inline_loop, 31))));
+}
+
 // The named scene files in scenes/ load, round-trip, and hold the catalogue's seed paths.
 TEST(SceneFiles, CatalogueScenesLoadAndMatch) {
     const auto dir = std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes";

@@ -75,6 +75,7 @@ struct PathReader {
     std::vector<std::string>* warnings = nullptr;
 
     Path read(const json& j, const std::string& pointer, int depth) const;
+    Path read_any(const json& j, const std::string& pointer, int depth) const;  // read() without the depth 0 check
     Path read_kind(const json& j, const std::string& pointer, const std::string& kind, int depth) const;
 };
 

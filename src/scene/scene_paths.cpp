@@ -11,11 +11,48 @@
 #include <limits>
 #include <string>
 
+#include <type_traits>
 #include <variant>
 
 namespace grape::scene_io {
 
+namespace {
+
+// Levels of complex paths in the object path_json writes for `path` (0 for the other kinds):
+// what reading that object back counts against max_depth. A named path is written in full, and
+// a closed Catmull–Rom spline or SVG data as a complex path of its segments, so the written
+// object can be deeper than the one read.
+int written_depth(const Path& path) {
+    return std::visit(
+        [](const auto& s) -> int {
+            using S = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<S, ComplexSpec>) {
+                int deepest = 0;
+                for (const Path& p : s.parts) deepest = std::max(deepest, written_depth(p));
+                return 1 + deepest;
+            } else if constexpr (std::is_same_v<S, ReparametrizedSpec>) {
+                return written_depth(s.source);
+            } else {
+                return 0;
+            }
+        },
+        describe(path));
+}
+
+}  // namespace
+
+// A whole path (depth 0) must also be within max_depth as written out, so that every scene
+// that loads saves to one that loads (save_scene, path_to_json).
 Path PathReader::read(const json& j, const std::string& pointer, int depth) const {
+    Path path = read_any(j, pointer, depth);
+    if (depth == 0 && !j.is_string() && written_depth(path) > max_depth)
+        fail(pointer, "paths nested more than " + std::to_string(max_depth) +
+                          " deep as written out (named paths are written in full, a closed Catmull–Rom spline and "
+                          "SVG data as complex paths of their segments)");
+    return path;
+}
+
+Path PathReader::read_any(const json& j, const std::string& pointer, int depth) const {
     if (depth > max_depth) fail(pointer, "paths nested more than " + std::to_string(max_depth) + " deep");
     if (j.is_string()) {
         const std::string name = j.get<std::string>();
@@ -32,7 +69,7 @@ Path PathReader::read(const json& j, const std::string& pointer, int depth) cons
         json renamed = j;
         renamed["center"] = *old;
         renamed.erase("centre");
-        return read(renamed, pointer, depth);
+        return read_any(renamed, pointer, depth);
     }
     try {
         const auto s = j.find("slice");
@@ -159,7 +196,7 @@ Path PathReader::read_kind(const json& j, const std::string& pointer, const std:
         if (parts_json.empty()) fail(pp, "a complex path needs at least one part");
         std::vector<Path> parts;
         parts.reserve(parts_json.size());
-        for (std::size_t i = 0; i < parts_json.size(); ++i) parts.push_back(read(parts_json[i], child(pp, i), depth + 1));
+        for (std::size_t i = 0; i < parts_json.size(); ++i) parts.push_back(read_any(parts_json[i], child(pp, i), depth + 1));
         const auto cues_it = j.find("cues");
         if (cues_it == j.end() || (cues_it->is_string() && cues_it->get<std::string>() == "by_length"))
             return done(ComplexPath::by_length(std::move(parts)));
