@@ -4,6 +4,7 @@
 // real one by tests/full_disk.sh (a small tmpfs); here the temporary is a link to /dev/full,
 // whose every write fails with ENOSPC.
 #include "atomic_file.hpp"
+#include "seeds.hpp"
 
 #ifdef GRAPE_TEST_RENDER
 #include <grape/render.hpp>
@@ -59,7 +60,7 @@ protected:
 TEST_F(AtomicFileTest, BytesArriveWholeAndOnlyAtCommit) {
     // Random sizes around the 64 KiB buffer: small writes, writes that fill it exactly and
     // blocks larger than it, compared byte for byte with what was written.
-    std::mt19937 rng(19);
+    std::mt19937 rng(static_cast<std::uint32_t>(grape::testing::test_seed(19)));
     std::string expected;
     const fs::path file = dir_ / "data.bin";
     {

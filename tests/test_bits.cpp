@@ -7,6 +7,7 @@
 #include "../src/bits/word_kernels.hpp"
 
 #include "error_text.hpp"
+#include "seeds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -112,7 +113,7 @@ TEST(BitVector, ConstructionFillsAndKeepsTheTailClear) {
 
 // Every operation, randomly interleaved, against the std::vector<bool> model.
 TEST(BitVector, RandomOperationsMatchVectorOfBool) {
-    std::mt19937_64 rng(20261122);
+    std::mt19937_64 rng(grape::testing::test_seed(20261122));
     for (int trial = 0; trial < 300; ++trial) {
         std::size_t n = trial < 15 ? edge_sizes[trial] : std::uniform_int_distribution<std::size_t>(0, 700)(rng);
         const double density = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
@@ -187,7 +188,7 @@ TEST(BitVector, RandomOperationsMatchVectorOfBool) {
 }
 
 TEST(BitVector, OperandMayBeTheVectorItself) {
-    std::mt19937_64 rng(7);
+    std::mt19937_64 rng(grape::testing::test_seed(7));
     const Model m = random_model(rng, 333, 0.4);
     BitVector v = from_model(m);
     const BitVector& same = v;  // through a reference, as aliasing happens in real code
@@ -244,7 +245,7 @@ TEST(BitVector, FindNextFromAnyIndex) {
 }
 
 TEST(BitVector, StringFormRoundTripsAndNamesBadCharacters) {
-    std::mt19937_64 rng(11);
+    std::mt19937_64 rng(grape::testing::test_seed(11));
     for (std::size_t n : edge_sizes) {
         const BitVector v = from_model(random_model(rng, n, 0.5));
         EXPECT_EQ(BitVector::from_string(v.to_string()), v);
@@ -301,7 +302,7 @@ TEST(BitVector, HashSeparatesSingleBitChanges) {
     // Every single-bit variant of a random 1,000-bit vector, plus the size variants, must
     // hash apart: with a 64-bit hash a collision among ~1,000 values has probability ~3e-14,
     // so a collision here means the mixing is broken (e.g. a word or a bit ignored).
-    std::mt19937_64 rng(99);
+    std::mt19937_64 rng(grape::testing::test_seed(99));
     const BitVector base = from_model(random_model(rng, 1000, 0.5));
     std::unordered_set<BitVector> set;
     std::unordered_set<std::size_t> hashes;
@@ -325,7 +326,7 @@ TEST(BitVector, EveryKernelVersionAgreesWithScalarLoops) {
     bool selected_is_runnable = false;
     for (std::size_t k = 0; k < versions; ++k) selected_is_runnable |= list[k] == &grape::detail::word_kernels();
     EXPECT_TRUE(selected_is_runnable);
-    std::mt19937_64 rng(5);
+    std::mt19937_64 rng(grape::testing::test_seed(5));
     for (std::size_t k = 0; k < versions; ++k) {
         const auto& kern = *list[k];
         SCOPED_TRACE(kern.name);
@@ -399,7 +400,7 @@ TEST(PairBits, IndexIsABijectionOntoThePairRange) {
 
 TEST(PairBits, TestAndSetInEitherOrder) {
     PairBits pairs(50);
-    std::mt19937_64 rng(3);
+    std::mt19937_64 rng(grape::testing::test_seed(3));
     std::vector<std::vector<bool>> model(50, std::vector<bool>(50));
     for (int t = 0; t < 3000; ++t) {
         const std::size_t i = rng() % 50, j = rng() % 50;
@@ -548,7 +549,7 @@ bool model_less(const Model& a, const Model& b) {
 const std::size_t boundary_sizes[] = {0, 1, 63, 64, 65, 127, 128, 129};
 
 TEST(BitVector, RangeShiftEditAndSearchOperationsMatchVectorOfBool) {
-    std::mt19937_64 rng(20261201);
+    std::mt19937_64 rng(grape::testing::test_seed(20261201));
     auto uniform = [&rng](std::size_t lo, std::size_t hi) { return std::uniform_int_distribution<std::size_t>(lo, hi)(rng); };
     for (int trial = 0; trial < 400; ++trial) {
         std::size_t n = trial < 8 ? boundary_sizes[trial] : uniform(0, 600);
@@ -742,7 +743,7 @@ TEST(BitVector, InsertAndEraseKeepTheBitsAroundThem) {
 TEST(BitVector, SetBitsOfATemporaryOwnTheBits) {
     // The range of a temporary keeps the vector alive: under AddressSanitizer, a range over
     // the freed words of (a & b) is a heap-use-after-free.
-    std::mt19937_64 rng(15);
+    std::mt19937_64 rng(grape::testing::test_seed(15));
     const Model ma = random_model(rng, 5000, 0.5), mb = random_model(rng, 5000, 0.5);
     const BitVector a = from_model(ma), b = from_model(mb);
     std::vector<std::size_t> expected;
@@ -815,7 +816,7 @@ TEST(BitVector, OrderKeysAMapAndIsTheDocumentedOne) {
             for (std::size_t i = 0; i < size; ++i) m[i] = (code >> i) & 1u;
             all.push_back(m);
         }
-    std::mt19937_64 rng(4);
+    std::mt19937_64 rng(grape::testing::test_seed(4));
     for (int t = 0; t < 200; ++t) ++map[from_model(all[rng() % all.size()])];
     std::vector<Model> sorted = all;
     std::sort(sorted.begin(), sorted.end(), model_less);
@@ -829,7 +830,7 @@ TEST(BitVector, OrderKeysAMapAndIsTheDocumentedOne) {
 }
 
 TEST(BitVector, ConvertsToAndFromStandardContainers) {
-    std::mt19937_64 rng(8);
+    std::mt19937_64 rng(grape::testing::test_seed(8));
     for (std::size_t n : boundary_sizes) {
         const Model m = random_model(rng, n, 0.5);
         const BitVector v = BitVector::from_bools(m);
@@ -870,7 +871,7 @@ TEST(BitVector, BinaryFormIsTheDocumentedLittleEndianLayout) {
     EXPECT_EQ(v.to_bytes(), expected);
     EXPECT_EQ(BitVector::from_bytes(expected), v);
     EXPECT_EQ(BitVector().to_bytes().size(), 16u);
-    std::mt19937_64 rng(21);
+    std::mt19937_64 rng(grape::testing::test_seed(21));
     std::stringstream stream(std::ios::in | std::ios::out | std::ios::binary);
     std::vector<BitVector> saved;
     for (std::size_t n : edge_sizes) {
@@ -930,7 +931,7 @@ TEST(BitVector, BinaryFormIsCheckedOnLoad) {
 TEST(BitVector, EveryKernelVersionShiftsAndFindsRanks) {
     std::size_t versions = 0;
     const grape::detail::WordKernels* const* list = grape::detail::runnable_word_kernels(versions);
-    std::mt19937_64 rng(6);
+    std::mt19937_64 rng(grape::testing::test_seed(6));
     for (std::size_t k = 0; k < versions; ++k) {
         const auto& kern = *list[k];
         SCOPED_TRACE(kern.name);
@@ -979,7 +980,7 @@ TEST(PairBits, PairIsTheInverseOfIndex) {
         ASSERT_EQ(big.pair(big.index(i, i + 1)), std::make_pair(i, i + 1));
         ASSERT_EQ(big.pair(big.index(i, n - 1)), std::make_pair(i, n - 1));
     }
-    std::mt19937_64 rng(17);
+    std::mt19937_64 rng(grape::testing::test_seed(17));
     for (int t = 0; t < 10'000; ++t) {
         const std::size_t i = rng() % n, j = rng() % n;
         if (i == j) continue;
@@ -993,7 +994,7 @@ template <class P>
 concept walks_a_temporary = requires { P(5).set_pairs(); };
 
 TEST(PairBits, SetPairsWalkInIndexOrder) {
-    std::mt19937_64 rng(19);
+    std::mt19937_64 rng(grape::testing::test_seed(19));
     for (std::size_t n : {0u, 1u, 2u, 3u, 12u, 64u, 65u, 150u}) {
         PairBits pairs(n);
         std::vector<std::pair<std::size_t, std::size_t>> expected;
@@ -1112,7 +1113,7 @@ TEST(KeyState, RepeatsMatchATickModelOverRandomFrames) {
     constexpr std::size_t key_count = 8;
     constexpr long delay = 5, interval = 2;
     KeyState keys(key_count, {.delay = delay / 16.0, .interval = interval / 16.0});
-    std::mt19937_64 rng(1515);
+    std::mt19937_64 rng(grape::testing::test_seed(1515));
     std::vector<bool> down(key_count);
     std::vector<long> since(key_count);
     std::vector<std::size_t> held;  // keys down, in press order
@@ -1211,7 +1212,7 @@ Model clustered_model(std::mt19937_64& rng, std::size_t size) {
 
 TEST(SparseBitVector, RandomOperationsMatchVectorOfBool) {
     using grape::SparseBitVector;
-    std::mt19937_64 rng(20261217);
+    std::mt19937_64 rng(grape::testing::test_seed(20261217));
     const std::size_t sizes[] = {0, 1, 65535, 65536, 65537, 140000};
     for (int trial = 0; trial < 12; ++trial) {
         const std::size_t n = sizes[trial % 6];
@@ -1327,7 +1328,7 @@ TEST(SparseBitVector, DenseAndCountsLaterAndKeepsTheBits) {
 
 TEST(SparsePairBits, MatchesPairBitsAndScalesToManyObjects) {
     using grape::SparsePairBits;
-    std::mt19937_64 rng(23);
+    std::mt19937_64 rng(grape::testing::test_seed(23));
     // Against PairBits itself on 300 objects, then random pairs of 100,000 objects (4,999,950,000
     // pairs: 625 MB as a PairBits) against a sorted model.
     PairBits dense(300);

@@ -5,6 +5,7 @@
 #include <grape/error.hpp>
 
 #include "error_text.hpp"
+#include "seeds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -325,7 +326,7 @@ TEST(CubicBezier, ExtendsAlongTheEndTangentsLikeCss) {
 }
 
 TEST(CubicBezier, AgreesWithAnIndependentBisectionOnRandomControlPoints) {
-    std::mt19937_64 rng(12345);
+    std::mt19937_64 rng(grape::testing::test_seed(12345));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_real_distribution<double> wide(-1.0, 2.0);
     int checked = 0;
@@ -357,7 +358,7 @@ TEST(CubicBezier, AgreesWithAnIndependentBisectionOnRandomControlPoints) {
 }
 
 TEST(CubicBezier, MonotoneWhenYControlsAreInTheUnitInterval) {
-    std::mt19937_64 rng(777);
+    std::mt19937_64 rng(grape::testing::test_seed(777));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int trial = 0; trial < 200; ++trial) {
         const Curve c = Curve::cubic_bezier(unit(rng), unit(rng), unit(rng), unit(rng));
@@ -411,7 +412,7 @@ TEST(Steps, JumpNoneNeedsTwoSteps) {
 // --- monotone custom curve ------------------------------------------------------------------
 
 TEST(Monotone, PassesThroughItsPointsAndNeverOvershootsMonotoneData) {
-    std::mt19937_64 rng(2024);
+    std::mt19937_64 rng(grape::testing::test_seed(2024));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int trial = 0; trial < 200; ++trial) {
         const int n = 2 + static_cast<int>(unit(rng) * 8);
@@ -467,7 +468,7 @@ TEST(CurveNames, RoundTripEveryCurve) {
     curves.push_back(Curve::elastic(EaseDirection::in_out, 1.25, 0.6));
     curves.push_back(Curve::steps(7, grape::StepPosition::jump_both));
     curves.push_back(Curve::monotone(std::vector<double>{0, 0.25, 1}, std::vector<double>{0, 0.8, 1}));
-    std::mt19937_64 rng(99);
+    std::mt19937_64 rng(grape::testing::test_seed(99));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int i = 0; i < 100; ++i) curves.push_back(Curve::cubic_bezier(unit(rng), unit(rng) * 3 - 1, unit(rng), unit(rng)));
     for (const Curve& c : curves) {
@@ -669,7 +670,7 @@ TEST(CubicBezier, WithinAFewUlpOfAHighPrecisionReferenceIncludingFlatEnds) {
         {0, 0, 1, 1},          {0, 1, 1, 0},      {1, 0, 1, 1},       {0, 0, 0, 1},        // flat ends
         {0.68, -0.6, 0.32, 1.6}, {0.5, 0, 0.5, 1}, {0.1, 0.9, 0.2, 1}, {0.9, 0, 0.9, 0.1},
     };
-    std::mt19937_64 rng(4242);
+    std::mt19937_64 rng(grape::testing::test_seed(4242));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_real_distribution<double> wide(-1.0, 2.0);
     for (int i = 0; i < 40; ++i) cases.push_back({unit(rng), unit(rng), unit(rng), unit(rng)});
@@ -736,7 +737,7 @@ TEST(Curve, BranchFreeSelectsGiveTheTernarysBits) {
         std::memcpy(&u, &v, sizeof u);
         return u;
     };
-    std::mt19937_64 rng(17);
+    std::mt19937_64 rng(grape::testing::test_seed(17));
     std::uniform_real_distribution<double> any(-4.0, 4.0);
     const double specials[] = {0.0, -0.0, 0.5, std::nextafter(0.5, 0.0), std::nextafter(0.5, 1.0),
                                HUGE_VAL, -HUGE_VAL, std::nan("7"), -std::nan("3"), 4.9e-324};
@@ -758,7 +759,7 @@ TEST(Curve, BranchFreeSelectsGiveTheTernarysBits) {
 // polynomial kinds (engine_lean.hpp, stays_on_path): their values for x in [0, 1] stay in
 // [0, 1]. Checked at the ends, around ½, at the smallest doubles and at random x.
 TEST(Curve, PolynomialKindsStayInTheUnitIntervalOnIt) {
-    std::mt19937_64 rng(5);
+    std::mt19937_64 rng(grape::testing::test_seed(5));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<double> xs = {0.0, -0.0, 1.0, 0.5, std::nextafter(0.5, 0.0), std::nextafter(0.5, 1.0),
                               std::nextafter(1.0, 0.0), 4.9e-324, 1e-300, 1e-160};

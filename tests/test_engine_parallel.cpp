@@ -8,6 +8,7 @@
 #include "count_allocations.hpp"
 #include "error_text.hpp"
 #include "seed_paths.hpp"
+#include "seeds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -80,8 +81,8 @@ void act(World& w, double code, bool touch_others) {
 // animations, and handlers (loop, complete, start, reverse complete, tick listener).
 void build(World& w, std::size_t n, unsigned seed, bool touch_others) {
     static const std::vector<grape::Path> paths = test_paths();
-    w.rng.seed(seed);
-    std::mt19937 r(seed * 7919u + 1u);
+    w.rng.seed(grape::testing::test_seed(seed));
+    std::mt19937 r(static_cast<std::uint32_t>(grape::testing::test_seed(seed * 7919u + 1u)));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     w.targets.resize(n);
     w.floats.resize(n);
@@ -154,7 +155,7 @@ void build(World& w, std::size_t n, unsigned seed, bool touch_others) {
 }
 
 std::vector<double> random_steps(unsigned seed, int count) {
-    std::mt19937 r(seed);
+    std::mt19937 r(static_cast<std::uint32_t>(grape::testing::test_seed(seed)));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<double> dts;
     for (int k = 0; k < count; ++k) {

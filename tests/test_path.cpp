@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "count_allocations.hpp"
+#include "seeds.hpp"
 
 namespace {
 
@@ -99,7 +100,7 @@ using grape::testing::error_text;
 // --- derivatives ---------------------------------------------------------------------------
 
 TEST(PathDerivatives, MatchEighthOrderFiniteDifferencesForEveryKind) {
-    std::mt19937_64 rng(2024);
+    std::mt19937_64 rng(grape::testing::test_seed(2024));
     for (const auto& [name, kind_path] : all_paths()) {
         const auto& path = kind_path;  // a plain reference: lambdas below capture it (clang 14 cannot capture a binding)
         if (path.kind() == grape::PathKind::reparametrized) continue;  // its own test below
@@ -208,7 +209,7 @@ TEST(PathLength, StopsInsideThePathKeepTheirClosedForm) {
 }
 
 TEST(PathLength, LengthAtAndUAtLengthAreInverse) {
-    std::mt19937_64 rng(99);
+    std::mt19937_64 rng(grape::testing::test_seed(99));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const auto& [name, path] : all_paths()) {
         const double L = path.length();
@@ -413,7 +414,7 @@ TEST(Splines, JoinsAreSmoothAsEachKindPromises) {
 // --- arc-length reparametrization ------------------------------------------------------------
 
 TEST(Reparametrized, ArcLengthErrorBelow1e9ForEveryKind) {
-    std::mt19937_64 rng(5);
+    std::mt19937_64 rng(grape::testing::test_seed(5));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const auto& [name, path] : all_paths()) {
         const Path r = path.reparametrized();
@@ -434,7 +435,8 @@ TEST(Reparametrized, ArcLengthErrorBelow1e9ForEveryKind) {
 }
 
 TEST(Reparametrized, SpeedIsConstantAndDerivativesAreConsistent) {
-    std::mt19937_64 rng(11);
+    std::mt19937_64 rng(grape::testing::test_seed(11));
+    int compared = 0, unresolved = 0;
     for (const auto& [name, path] : all_paths()) {
         const Path r = path.reparametrized();
         const double L = r.length();
@@ -461,12 +463,27 @@ TEST(Reparametrized, SpeedIsConstantAndDerivativesAreConsistent) {
             const double vb = grape::detail::source_parameter(r, u + 4 * h);
             for (double b : grape::detail::smooth_breaks(source)) smooth = smooth && !(b > va && b < vb);
             if (!smooth) continue;
+            // Nor are stencils across which the tangent turns by more than a quarter radian (the
+            // crest of a tight sine wave; a throw straight up reverses at its apex): there the
+            // difference's truncation error, which grows like the ninth power of the turn,
+            // outweighs the table's.
+            double turn = 0.0;
+            for (int k = -4; k < 4; ++k) {
+                const Vec2 a = r.d1(u + k * h), b = r.d1(u + (k + 1) * h);
+                turn += std::abs(std::atan2(a.x * b.y - a.y * b.x, grape::dot(a, b)));
+            }
+            if (turn > 0.25) {
+                ++unresolved;
+                continue;
+            }
+            ++compared;
             const Vec2 fd = central_difference([&](double v) { return r.point(v); }, u, h);
             const double scale = max_abs_coordinate(r);
             const double tol = fd8_abs_sum * (1e-9 * L + 4 * eps * scale) / h;
             EXPECT_LE(grape::distance(fd, d1), tol) << name << " u=" << u;
         }
     }
+    EXPECT_GT(compared, 20 * unresolved) << compared << " compared, " << unresolved << " unresolved";  // few skipped
 }
 
 // The bulk evaluators' table (anim's tick): table.point(u) against Path::point at random u,
@@ -476,7 +493,7 @@ TEST(Reparametrized, SpeedIsConstantAndDerivativesAreConsistent) {
 // enough to fail a check point too. The float coefficients are part of what is checked:
 // the table's own evaluation is compared, not the fit.
 TEST(ArcLengthTable, MatchesThePathWithin2e10OfItsLength) {
-    std::mt19937_64 rng(31);
+    std::mt19937_64 rng(grape::testing::test_seed(31));
     std::uniform_real_distribution<double> coordinate(0.0, 1000.0), unit(0.0, 1.0);
     int built = 0;
     double most_steps = 0.0;
@@ -512,7 +529,10 @@ TEST(ArcLengthTable, MatchesThePathWithin2e10OfItsLength) {
             EXPECT_EQ(table->steps(), 1.0) << n;  // a line moves evenly already
         }
     }
-    EXPECT_GE(built, 290);  // all but cubics that (nearly) stop somewhere
+    // All but cubics that (nearly) stop somewhere: about 2.6 % of these random cubics (2 to 13
+    // of the 270, over 41 draws of GRAPE_TEST_SEED), so 20 refused is the binomial mean (7)
+    // plus five standard deviations (2.6 each).
+    EXPECT_GE(built, 280);
     EXPECT_LE(most_steps, 4096.0);
 }
 
@@ -521,7 +541,7 @@ TEST(ArcLengthTable, MatchesThePathWithin2e10OfItsLength) {
 // (a cubic that stops at a cusp) must get the generic kernel. The same random cubics as
 // above, cusps among them.
 TEST(ArcLengthTable, ReparametrizedKernelsCarryTheirTable) {
-    std::mt19937 rng(17);
+    std::mt19937 rng(static_cast<std::uint32_t>(grape::testing::test_seed(17)));
     std::uniform_real_distribution<double> coordinate(0.0, 1000.0);
     int refused = 0;
     for (int n = 0; n < 300; ++n) {
@@ -584,7 +604,7 @@ TEST(ArcLengthTable, FourLanesGiveTheBitsOfTwo) {
 #if GRAPE_WIDE
     using grape::detail::ArcLengthTable;
     if (!grape::detail::wide_lanes()) GTEST_SKIP() << "no AVX2 here";
-    std::mt19937_64 rng(77);
+    std::mt19937_64 rng(grape::testing::test_seed(77));
     std::uniform_real_distribution<double> unit(-1.0, 1.0), exponent(-30.0, 30.0);
     alignas(64) double c[ArcLengthTable::stride];
     int compared = 0;
@@ -999,7 +1019,7 @@ TEST(Reparametrized, ArcLengthContractHoldsAtTenThousandSegments) {
     const Path source = grape::parse_svg_path(grape::scenes::segments_svg(10000, 17));
     const Path r = source.reparametrized();
     const double L = source.length();
-    std::mt19937_64 rng(23);
+    std::mt19937_64 rng(grape::testing::test_seed(23));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     double worst = 0.0;
     for (int i = 0; i <= 20000; ++i) {

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "count_allocations.hpp"
+#include "seeds.hpp"
 
 namespace {
 
@@ -147,7 +148,7 @@ std::vector<Vec2> query_points(const Path& p, std::mt19937_64& rng, int count) {
 }
 
 TEST(ClosestPoint, GlobalOnEveryKindAgainstDenseSampling) {
-    std::mt19937_64 rng(14);
+    std::mt19937_64 rng(grape::testing::test_seed(14));
     int checked = 0;
     for (const auto& [name, path] : query_paths()) {
         SCOPED_TRACE(name);
@@ -167,7 +168,7 @@ TEST(ClosestPoint, GlobalOnEveryKindAgainstDenseSampling) {
 }
 
 TEST(ClosestPoint, PointsOnThePathAreFoundAtDistanceZero) {
-    std::mt19937_64 rng(3);
+    std::mt19937_64 rng(grape::testing::test_seed(3));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const auto& [name, path] : query_paths()) {
         SCOPED_TRACE(name);
@@ -203,7 +204,7 @@ TEST(ClosestPoint, ArcCentersAndNearCentersAgainstClosedForm) {
     const Vec2 c{5, -3};
     const double r = 2;
     const grape::CirclePath circle(c, r, 0, -5 * pi);
-    std::mt19937_64 rng(5);
+    std::mt19937_64 rng(grape::testing::test_seed(5));
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (int i = 0; i < 500; ++i) {
         const Vec2 q = c + Vec2{unit(rng), unit(rng)} * std::pow(10.0, -8.0 * std::abs(unit(rng)));
@@ -217,7 +218,7 @@ TEST(ClosestPoint, AtCuspsAndInsideLoops) {
     const Vec2 tip = cusp.point(0.5);  // the cusp (speed 0 at t = ½)
     EXPECT_LE(grape::closest_point(cusp, tip).distance, 1e-12 * 100);
     const Path loops = grape::parse_svg_path(svg_loops);
-    std::mt19937_64 rng(9);
+    std::mt19937_64 rng(grape::testing::test_seed(9));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     // Inside the loop of the first cubic (its crossing is near (150, 180)) and inside the arc.
     for (int i = 0; i < 400; ++i) {
@@ -242,7 +243,7 @@ TEST(ClosestPoint, SubpathsThatDoNotMeetEndJustBeforeTheNextCue) {
 TEST(ClosestPoint, ExtremeScales) {
     // Coordinates near 1e200 (squares overflow: the search falls back to hypot) and near 1e-200
     // (squares underflow), against the same independent reference.
-    std::mt19937_64 rng(12);
+    std::mt19937_64 rng(grape::testing::test_seed(12));
     for (const double scale : {1e200, 1e-200}) {
         const grape::CubicBezierPath bez(Vec2{0, 0} * scale, Vec2{300, 200} * scale, Vec2{-100, 200} * scale,
                                          Vec2{200, 0} * scale);
@@ -258,7 +259,7 @@ TEST(ClosestPoint, ExtremeScales) {
 }
 
 TEST(ClosestPoint, WithinARange) {
-    std::mt19937_64 rng(21);
+    std::mt19937_64 rng(grape::testing::test_seed(21));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const auto& [name, path] : query_paths()) {
         SCOPED_TRACE(name);
@@ -283,7 +284,7 @@ TEST(ClosestPoint, WithinARange) {
 
 TEST(ClosestPoint, FromTheLastAnswerGivesTheSameAnswer) {
     // A point dragged along a wavy line: each query starts from the last answer.
-    std::mt19937_64 rng(8);
+    std::mt19937_64 rng(grape::testing::test_seed(8));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const auto& [name, path] : query_paths()) {
         SCOPED_TRACE(name);
@@ -445,7 +446,7 @@ bool reparametrized_inside(const Path& p) {
 }
 
 TEST(Slice, MatchesTheOriginalPointwiseAndRejoins) {
-    std::mt19937_64 rng(31);
+    std::mt19937_64 rng(grape::testing::test_seed(31));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     int sliced = 0, refused = 0;
     for (const auto& [name, path] : query_paths()) {
@@ -617,6 +618,8 @@ double deviation(const Path& fit, const std::vector<Vec2>& pts) {
 }
 
 TEST(Fit, NoisyCircleWithinToleranceWithFewSegments) {
+    // One fixed noise draw, whatever GRAPE_TEST_SEED says: the segment counts below are this
+    // draw's (over 300 draws a tolerance of 1 takes 4 to 11 segments, of 0.5 7 to 22).
     std::mt19937_64 rng(2);
     std::uniform_real_distribution<double> noise(-0.2, 0.2);
     std::vector<Vec2> pts;
@@ -631,8 +634,12 @@ TEST(Fit, NoisyCircleWithinToleranceWithFewSegments) {
         // Few: a cubic holds about a third of a circle within 0.2% of r, so a tolerance well
         // above the noise (±0.28 at most) needs a handful; at 0.5 the noise eats half of it.
         EXPECT_LE(fit.parts().size(), tol >= 1.0 ? 8u : 24u);
+        // On the input's end points: the first and last control points are those points
+        // exactly. (point(1) evaluates the power basis, which may land an ulp from the last
+        // control point: EXPECT_EQ on it held for one noise draw and not for others.)
         EXPECT_EQ(fit.point(0), pts.front());
-        EXPECT_EQ(fit.point(1), pts.back());
+        EXPECT_EQ(std::get<grape::CubicBezierSpec>(grape::describe(fit.parts().front())).control[0], pts.front());
+        EXPECT_EQ(std::get<grape::CubicBezierSpec>(grape::describe(fit.parts().back())).control[3], pts.back());
         // Joined smoothly: each part leaves in the direction the previous one arrived.
         for (std::size_t i = 1; i < fit.parts().size(); ++i) {
             const Vec2 in = grape::normalized(fit.parts()[i - 1].d1(1.0)), out = grape::normalized(fit.parts()[i].d1(0.0));
@@ -663,7 +670,7 @@ TEST(Fit, CornersAreKept) {
 }
 
 TEST(Fit, RandomTrajectoriesWithinEveryTolerance) {
-    std::mt19937_64 rng(77);
+    std::mt19937_64 rng(grape::testing::test_seed(77));
     std::uniform_real_distribution<double> coord(0.0, 600.0);
     for (int trial = 0; trial < 12; ++trial) {
         std::vector<Vec2> knots;

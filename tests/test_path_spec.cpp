@@ -4,6 +4,7 @@
 #include <grape/path.hpp>
 
 #include "seed_paths.hpp"
+#include "seeds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -39,7 +40,7 @@ std::vector<grape::NamedPath> every_path() {
 // u inside [0, 1] (ends and fixed-seed random values) and outside (the end-tangent extension).
 std::vector<double> many_u() {
     std::vector<double> u{0.0, 1.0, -0.5, 1.5, 0.25, 0.5, 0.75, std::nextafter(1.0, 0.0)};
-    std::mt19937_64 rng(17);
+    std::mt19937_64 rng(grape::testing::test_seed(17));
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int i = 0; i < 200; ++i) u.push_back(unit(rng));
     return u;

@@ -11,6 +11,7 @@
 #include <grape/dynamics.hpp>
 
 #include "seed_dynamics.hpp"
+#include "seeds.hpp"
 #endif
 
 #include <gtest/gtest.h>
@@ -270,7 +271,7 @@ TEST(SceneRoundTrip, PathsBuiltInCodeSaveToo) {
 
 // Random scenes (fixed seed): random path trees of every kind, curves and timings.
 TEST(SceneRoundTrip, RandomScenes) {
-    std::mt19937_64 rng(20261122);
+    std::mt19937_64 rng(grape::testing::test_seed(20261122));
     std::uniform_real_distribution<double> coord(-500, 500);
     std::uniform_real_distribution<double> unit(0, 1);
     const auto pt = [&] { return Vec2{coord(rng), coord(rng)}; };
@@ -633,7 +634,7 @@ TEST(SceneFiles, DocumentationExampleAndSchemaAgreeWithTheLoader) {
 // SceneAnimation's closed-form timing agrees with the anim engine playing the same
 // animation (random timings, curves, repeat, repeat delay, yoyo and reverse; fixed seed).
 void expect_agreement_with_engine(const std::vector<std::string>& curves) {
-    std::mt19937_64 rng(6);
+    std::mt19937_64 rng(grape::testing::test_seed(6));
     std::uniform_real_distribution<double> unit(0, 1);
     for (int round = 0; round < 40; ++round) {
         grape::SceneAnimation a;

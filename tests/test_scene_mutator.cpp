@@ -22,6 +22,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "seeds.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -263,7 +265,7 @@ TEST(SceneMutator, LoadsOrRefusesEveryMutant) {
     const auto budget = std::chrono::seconds(env_number("GRAPE_MUTATOR_SECONDS", 60));
     const char* mutant_dir = std::getenv("GRAPE_MUTANT_DIR");
     const char* trace = std::getenv("GRAPE_MUTATOR_TRACE");  // "1": each round on stderr, "dump": also its text
-    std::mt19937_64 rng(seed);
+    std::mt19937_64 rng(grape::testing::test_seed(seed));
     const auto start = std::chrono::steady_clock::now();
     std::uint64_t ran = 0, loaded = 0, refused = 0, written = 0;
     for (; ran < rounds && std::chrono::steady_clock::now() - start < budget; ++ran) {

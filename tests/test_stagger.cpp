@@ -5,6 +5,8 @@
 #include <grape/anim.hpp>
 #include <grape/error.hpp>
 
+#include "seeds.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -111,7 +113,7 @@ TEST(Stagger, CenterAndEdgesAreMirrorSymmetric) {
 // `amount` is the spread each × (n − 1) implies (each × max(C, n / C) on a grid), whatever
 // the origin: the same numbers, bit for bit.
 TEST(Stagger, AmountAndEachAgree) {
-    std::mt19937_64 rng(5);
+    std::mt19937_64 rng(grape::testing::test_seed(5));
     for (int k = 0; k < 200; ++k) {
         const std::size_t n = 1 + rng() % 30;
         const double each = std::uniform_real_distribution<double>(-1.0, 1.0)(rng);
@@ -203,7 +205,7 @@ TEST(Stagger, OneCallCreatesTheAnimations) {
 // Over random defs: every offset lies in [0, |V|] and, with distinct distances and a curve
 // from 0 to 1, the first start is 0 and the last |V| (to rounding: 1e-15 relative).
 TEST(Stagger, OffsetsSpanExactlyTheSpread) {
-    std::mt19937_64 rng(8);
+    std::mt19937_64 rng(grape::testing::test_seed(8));
     for (int k = 0; k < 500; ++k) {
         const std::size_t n = 2 + rng() % 40;
         const double amount = std::uniform_real_distribution<double>(-3.0, 3.0)(rng);

@@ -5,6 +5,7 @@
 #include <grape/timeline.hpp>
 
 #include "error_text.hpp"
+#include "seeds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -164,7 +165,7 @@ int make_node(Tree& tree, std::mt19937_64& rng, int depth, bool root) {
 }
 
 Tree random_tree(std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
+    std::mt19937_64 rng(grape::testing::test_seed(seed));
     Tree tree;
     make_node(tree, rng, 1, true);
     return tree;
@@ -318,7 +319,7 @@ double root_total(const Tree& tree) {
 // trees three deep, random dt (large ones crossing many) and run-time reverses: the engine's
 // log equals the reference's crossings between successive root times.
 TEST(TimelineEvents, CallbacksMatchTheReferenceUnderRandomTrees) {
-    std::mt19937_64 rng(5);
+    std::mt19937_64 rng(grape::testing::test_seed(5));
     std::uniform_real_distribution<double> unit(0, 1);
     int compared = 0;
     for (std::uint64_t seed = 1; seed <= 400; ++seed) {
@@ -426,7 +427,7 @@ TEST(TimelineEvents, ATickAcrossManyPlaysFiresItsFirstAndLastPlayBeyondMaxLoopEv
 // a 0.2 s play, curve slope ≤ 2: 80 per second), 1.1e-12 at most; 1e-12 holds in practice
 // because the ulp is of the root's time, not of its bound.
 TEST(TimelineDeterminism, AnyDtSequenceGivesTheStateSeekGives) {
-    std::mt19937_64 rng(17);
+    std::mt19937_64 rng(grape::testing::test_seed(17));
     std::uniform_real_distribution<double> unit(0, 1);
     for (std::uint64_t seed = 1000; seed < 1300; ++seed) {
         const Tree tree = random_tree(seed);
@@ -614,7 +615,7 @@ TEST(Timeline, BadPlacementsAreNamed) {
 // its time: seeking away and back restores it.
 void random_mutations(bool round_trip) {
     for (std::uint64_t seed = 3000; seed < 3060; ++seed) {
-        std::mt19937_64 rng(seed);
+        std::mt19937_64 rng(grape::testing::test_seed(seed));
         std::uniform_real_distribution<double> unit(0, 1);
         Engine engine;
         std::vector<Timeline> timelines;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "count_allocations.hpp"
+#include "seeds.hpp"
 
 using grape::Animation;
 using grape::AnimationDef;
@@ -133,7 +134,7 @@ void expect_agree(const Twins& w, const std::vector<Point>& fast_points, const s
 // engine moving its records (animations created, killed and completing beside the timelines).
 TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
     for (std::uint64_t seed = 700; seed < 760; ++seed) {
-        std::mt19937_64 rng(seed);
+        std::mt19937_64 rng(grape::testing::test_seed(seed));
         std::uniform_real_distribution<double> unit(0, 1);
         Twins w;
         std::vector<Point> fast_points(64), slow_points(64);
@@ -184,7 +185,7 @@ TEST(TimelineScale, FastTickGivesTheBitsOfTheGeneralUpdate) {
 // timeline is sought, reversed or paused, and the engine moves its records.
 TEST(TimelineScale, SequencesHandOverWithTheBitsOfTheGeneralUpdate) {
     for (std::uint64_t seed = 900; seed < 940; ++seed) {
-        std::mt19937_64 rng(seed);
+        std::mt19937_64 rng(grape::testing::test_seed(seed));
         std::uniform_real_distribution<double> unit(0, 1);
         Twins w;
         std::vector<Point> fast_points(96), slow_points(96);
@@ -267,7 +268,7 @@ TEST(TimelineScale, LeanEntriesInLanesGiveTheBitsOfTheGeneralUpdate) {
                                    grape::Curve::quart_in(),  grape::Curve::quint_out_in(), grape::Curve::quad_out(),
                                    grape::Curve::sine_in_out()};
     for (std::uint64_t seed = 1400; seed < 1412; ++seed) {
-        std::mt19937_64 rng(seed);
+        std::mt19937_64 rng(grape::testing::test_seed(seed));
         std::uniform_real_distribution<double> unit(0, 1);
         Twins w;
         constexpr std::size_t most = 400;
@@ -330,7 +331,7 @@ TEST(TimelineScale, LeanEntriesInLanesGiveTheBitsOfTheGeneralUpdate) {
 // and every few ticks a tick of another length moves the phase of the ticks.
 TEST(TimelineScale, TickAlignedHandOversGiveTheBitsOfTheGeneralUpdate) {
     for (std::uint64_t seed = 1200; seed < 1230; ++seed) {
-        std::mt19937_64 rng(seed);
+        std::mt19937_64 rng(grape::testing::test_seed(seed));
         Twins w;
         std::vector<Point> fast_points(64), slow_points(64);
         std::size_t next = 0;

@@ -5,6 +5,7 @@
 #include <grape/timeline_layout.hpp>
 
 #include "error_text.hpp"
+#include "seeds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -109,7 +110,7 @@ TEST(TimelineLayout, StartsFollowTheAnchors) {
 // Random sequences of "+=offset" children: each start is the previous end plus its offset
 // when offsets are ≥ 0 (the end so far is the previous end), and the duration is the sum.
 TEST(TimelineLayout, SequentialChildrenAddUp) {
-    std::mt19937_64 rng(7);
+    std::mt19937_64 rng(grape::testing::test_seed(7));
     std::uniform_real_distribution<double> unit(0, 1);
     for (int round = 0; round < 100; ++round) {
         std::vector<TimelineEntry> entries;
@@ -149,7 +150,7 @@ TEST(TimelineLayout, BadEntriesAreNamedByIndex) {
 // repeat_delay; play k = ⌊τ / c⌋; within it s = τ − k·c, held at duration during the repeat
 // delay; odd plays run backwards under yoyo, all plays under reversed.
 TEST(TimelineLayout, LocalTimeFollowsTheTimingModel) {
-    std::mt19937_64 rng(11);
+    std::mt19937_64 rng(grape::testing::test_seed(11));
     std::uniform_real_distribution<double> unit(0, 1);
     for (int round = 0; round < 200; ++round) {
         const grape::AnimationDef def{.delay = unit(rng) < 0.3 ? 0.0 : unit(rng),
