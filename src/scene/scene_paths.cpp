@@ -23,6 +23,8 @@ namespace {
 // a closed Catmull–Rom spline or SVG data as a complex path of its segments, so the written
 // object can be deeper than the one read.
 int written_depth(const Path& path) {
+    // Other kinds are leaves: no description needed (describe copies a spline's points).
+    if (path.kind() != PathKind::complex && path.kind() != PathKind::reparametrized) return 0;
     return std::visit(
         [](const auto& s) -> int {
             using S = std::decay_t<decltype(s)>;
