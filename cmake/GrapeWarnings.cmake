@@ -5,11 +5,20 @@
 # float-cast-overflow) to these
 # targets alone, never to the flags of a project that includes grape.
 function(grape_warnings target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  # The fast paths reproduce the general update bit for bit, so the compiler may not fuse a*b + c
+  # differently in each (FMA hardware, -march=native, Apple Silicon); and sqrt must be the
+  # correctly rounded instruction, not a libm call kept for errno (MinGW's is an ulp off).
+  # No public header needs either, so neither reaches a consumer's build. MSVC does not
+  # contract under /fp:precise unless /fp:contract is given.
+  if(MSVC)
+    target_compile_options(${target} PRIVATE /W4 /permissive- /fp:precise)
+  else()
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -ffp-contract=off -fno-math-errno)
+  endif()
   if(GRAPE_WERROR)
     set_property(TARGET ${target} PROPERTY COMPILE_WARNING_AS_ERROR ON)
   endif()
-  if(GRAPE_SANITIZE)
+  if(GRAPE_SANITIZE AND NOT MSVC)
     # float-cast-overflow: not part of -fsanitize=undefined, and out-of-range float-to-integer
     # conversions are exactly the faults extreme times and lengths provoke.
     set(flags -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all)
@@ -43,6 +52,8 @@ function(grape_module name)
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
     $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  # The sources' shared internal headers ("internal/compiler.hpp", "path/kernel.hpp"): build only.
+  target_include_directories(grape_${name} PRIVATE ${PROJECT_SOURCE_DIR}/src)
   target_compile_features(grape_${name} PUBLIC cxx_std_20)
   target_link_libraries(grape_${name} PUBLIC ${ARG_DEPS})
   if(ARG_PRIVATE_DEPS)

@@ -5,12 +5,8 @@
 
 #include <algorithm>
 
-// Inlines every call in the function's body (the hot loops: see plain_run).
-#if defined(__GNUC__) || defined(__clang__)
-#define GRAPE_FLATTEN __attribute__((flatten))
-#else
-#define GRAPE_FLATTEN
-#endif
+// GRAPE_FLATTEN (internal/compiler.hpp) inlines every call in the hot loops (see plain_run).
+#include "internal/compiler.hpp"
 
 namespace grape::detail {
 

@@ -36,13 +36,7 @@ struct LeanTables {
 // round; 256/384 no better than 160/256.)
 inline constexpr std::size_t hot_ahead = 256;
 // Asks for the cache line at p, to be written: a hint, no effect on results.
-inline void ask_line(const void* p) noexcept {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(p, 1);
-#else
-    (void)p;
-#endif
-}
+inline void ask_line(const void* p) noexcept { prefetch_write(p); }
 // Record j's hot or Cold record (j < n: the caller's bound).
 inline void ask_hot(const Hot* hot, std::size_t j) noexcept { ask_line(hot + j); }
 inline void ask_cold(const Cold* cold, std::size_t j) noexcept { ask_line(cold + j); }

@@ -4,16 +4,12 @@
 // one piece of work: the job hands out small pieces).
 #include "tick_pool.hpp"
 
+#include "internal/compiler.hpp"
+
 namespace grape::detail {
 
 namespace {
-inline void relax() noexcept {
-#if defined(__x86_64__) || defined(__i386__)
-    __builtin_ia32_pause();
-#elif defined(__aarch64__)
-    asm volatile("yield");
-#endif
-}
+inline void relax() noexcept { cpu_relax(); }
 }  // namespace
 
 TickPool::TickPool(int workers, std::chrono::nanoseconds awake) : awake_(awake) {

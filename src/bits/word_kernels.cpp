@@ -8,39 +8,24 @@
 #include <bit>
 #include <cstring>
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#include <immintrin.h>
-#endif
+#include "internal/compiler.hpp"
 
 namespace grape::detail {
 namespace {
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-#define GRAPE_BITS_X86_DISPATCH 1
-#define GRAPE_TARGET(features) __attribute__((target(features)))
-#else
-#define GRAPE_BITS_X86_DISPATCH 0
-#define GRAPE_TARGET(features)
-#endif
-
-#if defined(__GNUC__)
-#define GRAPE_INLINE inline __attribute__((always_inline))
-#else
-#define GRAPE_INLINE inline
-#endif
 
 enum class Op { and_, or_, xor_, and_not };
 
 // x = x op y. By reference, so no vector is ever passed by value (see below).
 template <Op op, class T>
-GRAPE_INLINE void apply(T& x, const T& y) noexcept {
+GRAPE_ALWAYS_INLINE void apply(T& x, const T& y) noexcept {
     if constexpr (op == Op::and_) x &= y;
     if constexpr (op == Op::or_) x |= y;
     if constexpr (op == Op::xor_) x ^= y;
     if constexpr (op == Op::and_not) x &= ~y;
 }
 
-#if defined(__GNUC__)
+#if GRAPE_VECTOR_EXTENSIONS
 // Vectors never cross a function boundary by value: passing a 32-byte vector to a function
 // compiled without AVX uses a different ABI, which at -O0 (no inlining) corrupts the operands.
 using Word2 = Word __attribute__((vector_size(16)));  // one SSE2 register
@@ -48,7 +33,7 @@ using Word4 = Word __attribute__((vector_size(32)));  // one AVX2 register
 
 // Two vectors per iteration so the loads of the next pair overlap the stores of this one.
 template <class V, Op op>
-GRAPE_INLINE void binary_loop(Word* a, const Word* b, std::size_t n) noexcept {
+GRAPE_ALWAYS_INLINE void binary_loop(Word* a, const Word* b, std::size_t n) noexcept {
     constexpr std::size_t lanes = sizeof(V) / sizeof(Word);
     std::size_t i = 0;
     for (; i + 2 * lanes <= n; i += 2 * lanes) {
@@ -66,7 +51,7 @@ GRAPE_INLINE void binary_loop(Word* a, const Word* b, std::size_t n) noexcept {
 }
 
 template <class V>
-GRAPE_INLINE void flip_loop(Word* a, std::size_t n) noexcept {
+GRAPE_ALWAYS_INLINE void flip_loop(Word* a, std::size_t n) noexcept {
     constexpr std::size_t lanes = sizeof(V) / sizeof(Word);
     std::size_t i = 0;
     for (; i + lanes <= n; i += lanes) {
@@ -83,7 +68,7 @@ GRAPE_INLINE void flip_loop(Word* a, std::size_t n) noexcept {
 // high end the words are written from the top down, so every load reads a word not yet
 // written; each step loads all of its vectors before storing any.
 template <class V>
-GRAPE_INLINE void shift_up_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs) noexcept {
+GRAPE_ALWAYS_INLINE void shift_up_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs) noexcept {
     constexpr std::size_t lanes = sizeof(V) / sizeof(Word);
     const unsigned back = 64 - bs;
     std::size_t top = n;  // words [top, n) are done
@@ -105,7 +90,7 @@ GRAPE_INLINE void shift_up_loop(Word* w, std::size_t n, std::size_t ws, unsigned
 }
 
 template <class V>
-GRAPE_INLINE void shift_down_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs) noexcept {
+GRAPE_ALWAYS_INLINE void shift_down_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs) noexcept {
     constexpr std::size_t lanes = sizeof(V) / sizeof(Word);
     const unsigned back = 64 - bs;
     const std::size_t last = n - ws - 1;  // the top word of the result with source bits
@@ -152,7 +137,7 @@ inline void shift_down_loop(Word* w, std::size_t n, std::size_t ws, unsigned bs)
 // The whole-word part of a shift is a memmove, the rest a vector loop; `up` moves bit i to
 // i + s (towards the end of the array), else to i − s.
 template <class V, bool up>
-GRAPE_INLINE void shift_words(Word* w, std::size_t n, std::size_t s) noexcept {
+GRAPE_ALWAYS_INLINE void shift_words(Word* w, std::size_t n, std::size_t s) noexcept {
     if (n == 0) return;  // (w may be null: no memset on it)
     const std::size_t ws = s / 64;
     const unsigned bs = static_cast<unsigned>(s % 64);
@@ -166,12 +151,12 @@ GRAPE_INLINE void shift_words(Word* w, std::size_t n, std::size_t s) noexcept {
     std::memset(up ? w : w + (n - ws), 0, ws * sizeof(Word));  // the words shifted in
 }
 template <class V>
-GRAPE_INLINE void shift_up_words(Word* w, std::size_t n, std::size_t s) noexcept { shift_words<V, true>(w, n, s); }
+GRAPE_ALWAYS_INLINE void shift_up_words(Word* w, std::size_t n, std::size_t s) noexcept { shift_words<V, true>(w, n, s); }
 template <class V>
-GRAPE_INLINE void shift_down_words(Word* w, std::size_t n, std::size_t s) noexcept { shift_words<V, false>(w, n, s); }
+GRAPE_ALWAYS_INLINE void shift_down_words(Word* w, std::size_t n, std::size_t s) noexcept { shift_words<V, false>(w, n, s); }
 
 // Four accumulators keep the popcnt units busy (one chain would be latency bound).
-GRAPE_INLINE std::size_t count_loop(const Word* w, std::size_t n) noexcept {
+GRAPE_ALWAYS_INLINE std::size_t count_loop(const Word* w, std::size_t n) noexcept {
     std::size_t c0 = 0, c1 = 0, c2 = 0, c3 = 0, i = 0;
     for (; i + 4 <= n; i += 4) {
         c0 += static_cast<std::size_t>(std::popcount(w[i]));
@@ -185,7 +170,7 @@ GRAPE_INLINE std::size_t count_loop(const Word* w, std::size_t n) noexcept {
 
 // Blocks of 32 words (256 bytes) are counted by the four-accumulator loop and skipped whole
 // while their set bits do not reach the rank, so the scan runs at count() speed.
-GRAPE_INLINE std::size_t find_rank_loop(const Word* w, std::size_t n, std::size_t rank, std::size_t& before) noexcept {
+GRAPE_ALWAYS_INLINE std::size_t find_rank_loop(const Word* w, std::size_t n, std::size_t rank, std::size_t& before) noexcept {
     constexpr std::size_t block = 32;
     std::size_t seen = 0, k = 0;
     for (; k + block <= n; k += block) {
@@ -203,7 +188,7 @@ GRAPE_INLINE std::size_t find_rank_loop(const Word* w, std::size_t n, std::size_
 }
 
 // a &= b and the count of the result in one pass, four popcount accumulators.
-GRAPE_INLINE std::size_t and_count_loop(Word* a, const Word* b, std::size_t n) noexcept {
+GRAPE_ALWAYS_INLINE std::size_t and_count_loop(Word* a, const Word* b, std::size_t n) noexcept {
     std::size_t c0 = 0, c1 = 0, c2 = 0, c3 = 0, i = 0;
     for (; i + 4 <= n; i += 4) {
         c0 += static_cast<std::size_t>(std::popcount(a[i] &= b[i]));
@@ -215,7 +200,7 @@ GRAPE_INLINE std::size_t and_count_loop(Word* a, const Word* b, std::size_t n) n
     return c0 + c1 + c2 + c3;
 }
 
-#if GRAPE_BITS_X86_DISPATCH
+#if GRAPE_X86_TARGETS
 // The AVX2 version counts with a nibble table in a byte shuffle (Muła, Kurz and Lemire,
 // "Faster population counts using AVX2 instructions", 2018): 32 bytes per step, where popcnt
 // takes four steps of 8. The byte counts (at most 8 each) add up over 31 steps before they are
@@ -294,7 +279,7 @@ std::size_t find_rank(const Word* w, std::size_t n, std::size_t r, std::size_t& 
 
 constexpr WordKernels generic_kernels = GRAPE_KERNEL_TABLE(generic, generic::and_count, "generic");
 
-#if GRAPE_BITS_X86_DISPATCH
+#if GRAPE_X86_TARGETS
 GRAPE_DEFINE_KERNELS(popcnt, "popcnt", Word2)
 namespace popcnt {
 GRAPE_TARGET("popcnt") std::size_t and_count(Word* a, const Word* b, std::size_t n) noexcept {
@@ -306,14 +291,8 @@ GRAPE_DEFINE_KERNELS(avx2, "avx2,popcnt", Word4)
 constexpr WordKernels popcnt_kernels = GRAPE_KERNEL_TABLE(popcnt, popcnt::and_count, "popcnt");
 constexpr WordKernels avx2_kernels = GRAPE_KERNEL_TABLE(avx2, and_count_avx2, "avx2+popcnt");
 
-bool has_popcnt() noexcept {
-    __builtin_cpu_init();  // safe to call early (e.g. from a static initializer)
-    return __builtin_cpu_supports("popcnt");
-}
-bool has_avx2() noexcept {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2");
-}
+bool has_popcnt() noexcept { return cpu_has_popcnt(); }
+bool has_avx2() noexcept { return cpu_has_avx2(); }
 
 const WordKernels& select() noexcept {
     if (has_popcnt() && has_avx2()) return avx2_kernels;
@@ -337,7 +316,7 @@ const WordKernels* const* runnable_word_kernels(std::size_t& count) noexcept {
     static const WordKernels* list[3] = {&generic_kernels, nullptr, nullptr};
     static const std::size_t n = [] {
         std::size_t k = 1;
-#if GRAPE_BITS_X86_DISPATCH
+#if GRAPE_X86_TARGETS
         if (has_popcnt()) list[k++] = &popcnt_kernels;
         if (has_popcnt() && has_avx2()) list[k++] = &avx2_kernels;
 #endif

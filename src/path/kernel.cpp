@@ -60,7 +60,7 @@ bool is_off(const char* value) noexcept { return value && std::strcmp(value, "0"
 bool wide_lanes() noexcept {
 #if GRAPE_WIDE
     // GRAPE_WIDE_LANES=0 keeps the one-record loops (to compare, and to test them on AVX2 machines).
-    static const bool wide = __builtin_cpu_supports("avx2") && !is_off(std::getenv("GRAPE_WIDE_LANES"));
+    static const bool wide = cpu_has_avx2() && !is_off(std::getenv("GRAPE_WIDE_LANES"));
     return wide;
 #else
     return false;

@@ -16,11 +16,11 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#include "internal/compiler.hpp"
 // Four-lane (AVX2) loops chosen at run time: x86-64 compilers that take per-function targets.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if GRAPE_X86_TARGETS && defined(__x86_64__)
 #define GRAPE_WIDE 1
-#define GRAPE_AVX2 __attribute__((target("avx2")))
-#include <immintrin.h>
+#define GRAPE_AVX2 GRAPE_TARGET("avx2")
 #else
 #define GRAPE_WIDE 0
 #endif
@@ -102,11 +102,7 @@ public:
     }
     /// Asks for a piece's three cache lines (a hint: no effect on results).
     static void prefetch_piece(const double* c) noexcept {
-#if defined(__GNUC__) || defined(__clang__)
-        for (std::size_t line = 0; line < stride; line += 8) __builtin_prefetch(c + line);
-#else
-        (void)c;
-#endif
+        for (std::size_t line = 0; line < stride; line += 8) prefetch_read(c + line);
     }
     /// One piece's point at its own x in [−1, 1]. Estrin's scheme on the coefficient pairs:
     /// q_i = a_2i + a_2i+1·x, r_j = q_2j + q_2j+1·x², p = r0 + (r1 + r2·x⁴)·x⁴; both
