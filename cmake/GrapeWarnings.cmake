@@ -1,3 +1,5 @@
+include(GenerateExportHeader)
+
 # grape_warnings(TARGET): the settings of every target grape builds from its own code.
 # Warnings are on for grape's code only (third-party headers come in as SYSTEM includes);
 # they are errors only with GRAPE_WERROR=ON (CI and scripts/ set it; a project that builds
@@ -36,9 +38,11 @@ endfunction()
 # The library grape_NAME (static, or shared with BUILD_SHARED_LIBS=ON) with the alias
 # grape::NAME, installed and exported. HEADER_ONLY_DEPS (Eigen, nlohmann-json) lend only their
 # include folders and definitions to the build: they never appear in the exported link
-# interface, so a consumer needs neither installed. Shared builds keep the ELF default visibility: every
-# non-inline symbol is exported, as from the static archives, so no export macros are needed
-# in the headers (a Windows DLL build would need them).
+# interface, so a consumer needs neither installed. A shared library exports only what its
+# public headers mark GRAPE_NAME_API (grape/export_NAME.hpp, generated): dllexport while it is
+# built, dllimport for its users, default visibility on ELF, where everything else is hidden as
+# on Windows, so a Linux build catches a missing mark. A static library defines
+# GRAPE_NAME_STATIC for itself and whatever links it, which empties the mark.
 function(grape_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS;HEADER_ONLY_DEPS" ${ARGN})
   add_library(grape_${name} ${ARG_SOURCES})
@@ -64,10 +68,26 @@ function(grape_module name)
     target_compile_definitions(grape_${name} PRIVATE $<TARGET_PROPERTY:${dep},INTERFACE_COMPILE_DEFINITIONS>)
   endforeach()
   grape_warnings(grape_${name})
+  string(TOUPPER ${name} upper)
+  set(export_header ${PROJECT_BINARY_DIR}/include/grape/export_${name}.hpp)
+  generate_export_header(grape_${name} BASE_NAME grape_${name} EXPORT_MACRO_NAME GRAPE_${upper}_API
+                         STATIC_DEFINE GRAPE_${upper}_STATIC EXPORT_FILE_NAME ${export_header})
+  set_target_properties(grape_${name} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  get_target_property(type grape_${name} TYPE)
+  if(NOT type STREQUAL "SHARED_LIBRARY")
+    target_compile_definitions(grape_${name} PUBLIC GRAPE_${upper}_STATIC)
+  elseif(CMAKE_EXECUTABLE_FORMAT STREQUAL "ELF" AND NOT GRAPE_SANITIZE)
+    # As a DLL must: every symbol resolved when the library links, so that a use of another
+    # module's unexported function fails here rather than in a program (the sanitizers' runtimes
+    # are left to the program).
+    target_link_options(grape_${name} PRIVATE LINKER:--no-undefined)
+  endif()
   if(GRAPE_INSTALL)
     install(TARGETS grape_${name} EXPORT grape-targets
             ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-            LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+            LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+            RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+    install(FILES ${export_header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grape)
   endif()
 endfunction()
 

@@ -45,6 +45,7 @@
 #include <grape/anim_timing.hpp>
 #include <grape/curve.hpp>
 #include <grape/error.hpp>
+#include <grape/export_anim.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
 #include <grape/target.hpp>
@@ -91,7 +92,7 @@ std::size_t offset_in(const T& object, const M& member) noexcept {
 
 /// A handle to an animation in an Engine. Default-constructed or stale handles are inert:
 /// queries return neutral values and `alive()` is false; commands do nothing.
-class Animation {
+class GRAPE_ANIM_API Animation {
 public:
     Animation() noexcept = default;
 
@@ -233,7 +234,7 @@ struct ParallelDef {
 /// Plain animations write their targets from several threads: no two animations may write
 /// the same bytes (overwrite = true keeps one per member), and, as for every tick, no other
 /// thread may touch the targets while it runs.
-class Engine {
+class GRAPE_ANIM_API Engine {
 public:
     Engine();
     ~Engine();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <grape/curve.hpp>
+#include <grape/export_anim.hpp>
 
 namespace grape {
 
@@ -68,25 +69,26 @@ struct PlayState {
 /// and every second one the other way when `yoyo`. Snap rule: a play within play_snap of its
 /// end counts as ended; from 2⁵³ plays on the phase is 0 (a double has no fraction left
 /// there), and +inf gives the start of a play after infinitely many. NaN counts as 0.
-PlayState play_at_position(double position, double plays, bool reversed, bool yoyo) noexcept;
+GRAPE_ANIM_API PlayState play_at_position(double position, double plays, bool reversed, bool yoyo) noexcept;
 
 /// The same with a repeat delay of `gap` plays (≥ 0) after every play but the last: a cycle is
 /// 1 + gap plays long, and the last play of `plays` ends at plays + (plays − 1)·gap. During a
 /// gap the state is the end of the play just finished (phase 1, `gap` > 0); within play_snap of
 /// a gap's end the next play has begun. gap 0 is the four-argument form bit for bit.
-PlayState play_at_position(double position, double plays, bool reversed, bool yoyo, double gap) noexcept;
+GRAPE_ANIM_API PlayState play_at_position(double position, double plays, bool reversed, bool yoyo,
+                                          double gap) noexcept;
 
 /// The state at `t` seconds (engine time) after an animation of `def` and `duration`
 /// seconds per play was created, as the Engine plays it: animation time runs at
 /// def.time_scale, the first play starts after def.delay seconds of animation time.
-PlayState play_at(const AnimationDef& def, double duration, double t) noexcept;
+GRAPE_ANIM_API PlayState play_at(const AnimationDef& def, double duration, double t) noexcept;
 
 /// The path parameter u at engine time t: def.curve of the play fraction, run backwards
 /// (curve(1 − τ)) on backward plays; the start while waiting, the end once finished.
-double progress_at(const AnimationDef& def, double duration, double t) noexcept;
+GRAPE_ANIM_API double progress_at(const AnimationDef& def, double duration, double t) noexcept;
 
 /// Engine seconds from creation until the last play ends: (delay + duration·plays +
 /// repeat_delay·(plays − 1)) / time_scale; +inf for endless animations or time_scale 0.
-double end_time(const AnimationDef& def, double duration) noexcept;
+GRAPE_ANIM_API double end_time(const AnimationDef& def, double duration) noexcept;
 
 }  // namespace grape

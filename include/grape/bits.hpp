@@ -14,6 +14,8 @@
 // all(), ~, ==, <, hash or the saved bytes.
 #pragma once
 
+#include <grape/export_bits.hpp>
+
 #include <bit>
 #include <bitset>
 #include <cassert>
@@ -38,7 +40,7 @@ namespace grape {
 /// A resizable sequence of bits packed into 64-bit words; bit i lives in word i/64 at bit i%64.
 /// Element access is noexcept and checked by assert in debug builds; at() is always checked.
 /// Operations combining two vectors throw grape::Error when their sizes differ.
-class BitVector {
+class GRAPE_BITS_API BitVector {
 public:
     using Word = std::uint64_t;
     /// Bits per storage word.
@@ -385,7 +387,7 @@ public:
     /// vector first; at equal sizes the vector read as an unsigned number, bit i worth 2^i
     /// (the highest bit where they differ decides: the one with that bit clear comes first).
     /// Note that this is not the order of the strings of to_string().
-    friend std::strong_ordering operator<=>(const BitVector& a, const BitVector& b) noexcept;
+    friend GRAPE_BITS_API std::strong_ordering operator<=>(const BitVector& a, const BitVector& b) noexcept;
     /// A hash of the size and the bits (std::hash<BitVector> uses it).
     std::size_t hash() const noexcept;
     /// The string form: one '0'/'1' per bit, bit 0 first (reads like an array; note that
@@ -423,7 +425,7 @@ inline BitVector::OwnedSetBits BitVector::set_bits() && noexcept { return OwnedS
 inline BitVector::OwnedSetBits BitVector::set_bits() const&& { return OwnedSetBits(BitVector(*this)); }
 
 /// Writes to_string().
-std::ostream& operator<<(std::ostream& out, const BitVector& bits);
+GRAPE_BITS_API std::ostream& operator<<(std::ostream& out, const BitVector& bits);
 
 
 }  // namespace grape

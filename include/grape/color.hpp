@@ -8,6 +8,7 @@
 //   engine.animate(sprite, &Sprite::tint, grape::to(blue), 1.0, {}, grape::ColorLerp{grape::ColorSpace::oklab});
 #pragma once
 
+#include <grape/export_anim.hpp>
 #include <grape/value.hpp>
 
 #include <string>
@@ -34,9 +35,9 @@ enum class ColorSpace {
 
 /// The sRGB transfer curve (IEC 61966-2-1) from encoded to linear light; odd (negative values
 /// mirror), so extrapolated colours stay defined.
-double srgb_to_linear(double encoded) noexcept;
+GRAPE_ANIM_API double srgb_to_linear(double encoded) noexcept;
 /// Its inverse: linear light to the encoded value.
-double linear_to_srgb(double linear) noexcept;
+GRAPE_ANIM_API double linear_to_srgb(double linear) noexcept;
 
 /// A colour in OKLab: L lightness (0 black, 1 white), a green–red, b blue–yellow.
 struct Oklab {
@@ -45,14 +46,14 @@ struct Oklab {
     double b = 0.0;
 };
 /// The colour's r, g, b in OKLab (alpha dropped).
-Oklab to_oklab(const Color& c) noexcept;
+GRAPE_ANIM_API Oklab to_oklab(const Color& c) noexcept;
 /// The sRGB-encoded colour of an OKLab value, with alpha `alpha` (out of gamut: components
 /// outside [0, 1]).
-Color from_oklab(const Oklab& lab, double alpha = 1.0) noexcept;
+GRAPE_ANIM_API Color from_oklab(const Oklab& lab, double alpha = 1.0) noexcept;
 
 /// Two colours converted once into `space`, mixed at any t: ColorMix(a, b, space)(t) is
 /// mix(a, b, t, space), bit for bit.
-class ColorMix {
+class GRAPE_ANIM_API ColorMix {
 public:
     ColorMix() noexcept = default;
     ColorMix(const Color& a, const Color& b, ColorSpace space) noexcept;
@@ -66,7 +67,8 @@ private:
 
 /// (1 − t)·a + t·b mixed in `space` with premultiplied alpha, as CSS Color 4 interpolates (a
 /// transparent end lends no colour); exactly a at t = 0 and b at t = 1.
-Color mix(const Color& a, const Color& b, double t, ColorSpace space = ColorSpace::linear_srgb) noexcept;
+GRAPE_ANIM_API Color mix(const Color& a, const Color& b, double t,
+                         ColorSpace space = ColorSpace::linear_srgb) noexcept;
 /// The interpolation typed animations use for colours (found by argument-dependent lookup):
 /// linear light.
 inline Color lerp(const Color& a, const Color& b, double t) noexcept { return mix(a, b, t); }
@@ -92,12 +94,12 @@ struct Interpolate<Color> {
 /// (0–1 or a percentage), separated by commas or by spaces with `/` before the alpha:
 /// "rgb(255, 0, 0)", "rgba(0,0,255,0.5)", "rgb(0 128 255 / 50%)". Values beyond the ranges
 /// clamp, as CSS clamps them. Throws grape::Error naming the text and the reason otherwise.
-Color parse_color(std::string_view text);
+GRAPE_ANIM_API Color parse_color(std::string_view text);
 /// `#rrggbb`, or `#rrggbbaa` when alpha is below 1 (components clamped to [0, 1], rounded
 /// to the nearest of 256 steps); parse_color reads it back to within half a step.
-std::string to_hex(const Color& c);
+GRAPE_ANIM_API std::string to_hex(const Color& c);
 /// `rgb(r, g, b)` with integers 0–255, or `rgba(r, g, b, a)` when alpha is below 1, a with
 /// up to three decimals.
-std::string to_css(const Color& c);
+GRAPE_ANIM_API std::string to_css(const Color& c);
 
 }  // namespace grape

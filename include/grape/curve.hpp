@@ -20,6 +20,8 @@
 // threads at once if the curve is shared between threads.
 #pragma once
 
+#include <grape/export_curve.hpp>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -240,16 +242,17 @@ inline constexpr double spring_settle_tolerance = 1e-3;
 
 namespace detail {
 struct CurveData {};  // what a curve shares on the heap; one derived type per kind (src/curve/)
-double cubic_bezier_eval(const CurveData& table, double x1, double y1, double x2, double y2, double t) noexcept;
-double steps_eval(double n, double position, double t) noexcept;
-double monotone_eval(const CurveData& data, double t) noexcept;
-double svg_eval(const CurveData& data, double t) noexcept;
-double spring_eval(const CurveData& data, double t) noexcept;
-double function_eval(const CurveData& data, double t) noexcept;
+GRAPE_CURVE_API double cubic_bezier_eval(const CurveData& table, double x1, double y1, double x2, double y2,
+                                         double t) noexcept;
+GRAPE_CURVE_API double steps_eval(double n, double position, double t) noexcept;
+GRAPE_CURVE_API double monotone_eval(const CurveData& data, double t) noexcept;
+GRAPE_CURVE_API double svg_eval(const CurveData& data, double t) noexcept;
+GRAPE_CURVE_API double spring_eval(const CurveData& data, double t) noexcept;
+GRAPE_CURVE_API double function_eval(const CurveData& data, double t) noexcept;
 }  // namespace detail
 
 /// An easing curve: progress = curve(t). Default: linear.
-class Curve {
+class GRAPE_CURVE_API Curve {
 public:
     /// Linear (progress = t).
     Curve() noexcept = default;
@@ -382,7 +385,7 @@ public:
 
     /// Same kind and numbers (monotone curves: the same points; svg: the same segments;
     /// function curves: copies of one from_function curve).
-    friend bool operator==(const Curve& a, const Curve& b) noexcept;
+    friend GRAPE_CURVE_API bool operator==(const Curve& a, const Curve& b) noexcept;
 
 private:
     CurveKind kind_ = CurveKind::linear;
@@ -396,22 +399,22 @@ private:
 /// (absolute M, L, Q, C), "spring(100,10,1,0)" (stiffness, damping, mass, velocity),
 /// "spring-duration(0.5,0.3,0)" (duration, bounce, velocity). Numbers print shortest
 /// round-trip. A function curve prints "function", which does not parse.
-std::string to_string(const Curve& curve);
+GRAPE_CURVE_API std::string to_string(const Curve& curve);
 
 /// Reads a curve name: every to_string form, plus the CSS keywords ease, ease-in, ease-out,
 /// ease-in-out, step-start, step-end, steps(n) and the positions start/end; spring(k,c) and
 /// spring(k,c,m) (mass 1, velocity 0 by default), spring-duration(d) and spring-duration(d,b);
 /// svg(any SVG path data). Spaces around numbers are allowed. Throws grape::Error naming the
 /// text and listing the valid names.
-Curve parse_curve(std::string_view name);
+GRAPE_CURVE_API Curve parse_curve(std::string_view name);
 
 /// The names of every parameter-free curve (linear and the 40 Penner curves), in CurveKind
 /// order: the one list scenes, the tool and the web bindings offer.
-std::span<const std::string_view> curve_names() noexcept;
+GRAPE_CURVE_API std::span<const std::string_view> curve_names() noexcept;
 
 /// The name of a CurveKind ("quad-in-out", "cubic-bezier", "steps", "monotone", "svg",
 /// "spring", "function").
-std::string_view to_string(CurveKind kind) noexcept;
+GRAPE_CURVE_API std::string_view to_string(CurveKind kind) noexcept;
 
 // --- inline evaluation: one switch, the formula kinds inlined -----------------------------
 

@@ -4,6 +4,7 @@
 
 #include <grape/dynamics_ode.hpp>
 #include <grape/error.hpp>
+#include <grape/export_dynamics.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
 
@@ -61,7 +62,7 @@ struct BeadDef {
 /// u is unbounded. Inside one part u̇ is continuous, so where a path's own parametrization
 /// has kinks or stops (LinearSplinePath corners, CosineSplinePath points, where x′ jumps or
 /// vanishes) use path.reparametrized(): at constant |x′| the speed carries through.
-class Bead {
+class GRAPE_DYNAMICS_API Bead {
 public:
     /// On any path; a complex one (whatever its static type) keeps the speed along the path
     /// at joins between its parts. Throws grape::Error for a bad BeadDef (non-finite values,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <grape/error.hpp>
+#include <grape/export_dynamics.hpp>
 #include <grape/jet.hpp>
 #include <grape/math.hpp>
 
@@ -26,7 +27,7 @@ struct ImplicitSample {
 
 /// A curve C(x, y) = 0 that a particle is held on. Value, gradient and Hessian come either
 /// from the user or from one templated function differentiated automatically (Jet2).
-class ImplicitFunction {
+class GRAPE_DYNAMICS_API ImplicitFunction {
 public:
     /// User-supplied value, gradient and Hessian. Throws grape::Error if `evaluate` is empty.
     explicit ImplicitFunction(std::function<ImplicitSample(Vec2)> evaluate);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <grape/error.hpp>
+#include <grape/export_dynamics.hpp>
 
 #include <cstddef>
 #include <span>
@@ -36,14 +37,14 @@ enum class Integrator {
 };
 
 /// The integrator's name in snake_case ("velocity_verlet").
-std::string_view to_string(Integrator integrator) noexcept;
+GRAPE_DYNAMICS_API std::string_view to_string(Integrator integrator) noexcept;
 /// The integrator named `name` (as to_string gives it, or the short forms "symplectic" and
 /// "verlet"); throws grape::Error naming the unknown value.
-Integrator parse_integrator(std::string_view name);
+GRAPE_DYNAMICS_API Integrator parse_integrator(std::string_view name);
 /// Every integrator, in declaration order (for menus and name lists).
-std::span<const Integrator> all_integrators() noexcept;
+GRAPE_DYNAMICS_API std::span<const Integrator> all_integrators() noexcept;
 /// The formal order of accuracy (rk45: 5 at a fixed step).
-int order(Integrator integrator) noexcept;
+GRAPE_DYNAMICS_API int order(Integrator integrator) noexcept;
 
 /// Settings of the adaptive Dormand–Prince integrator.
 struct Rk45Def {
@@ -80,7 +81,7 @@ enum class SolveStatus {
 };
 
 /// The status name ("ok", "singular", "not_converged", "substep_limit", "non_finite").
-std::string_view to_string(SolveStatus status) noexcept;
+GRAPE_DYNAMICS_API std::string_view to_string(SolveStatus status) noexcept;
 
 /// What one step did: Stepper::step, Bead::step and ParticleSystem::step all report it.
 struct StepStats {
@@ -105,7 +106,7 @@ constexpr SolveStatus worse(SolveStatus a, SolveStatus b) noexcept {
 
 /// Advances any SecondOrderSystem by one step of the chosen integrator. Holds its scratch
 /// buffers (allocated when the system size first grows), so steps do not allocate.
-class Stepper {
+class GRAPE_DYNAMICS_API Stepper {
 public:
     explicit Stepper(Integrator integrator = Integrator::rk4, Rk45Def rk45 = {});
     /// Advances (q, v) from t to t + dt in place. rk45 takes as many sub-steps as its

@@ -6,6 +6,7 @@
 #include <grape/dynamics_implicit.hpp>
 #include <grape/dynamics_ode.hpp>
 #include <grape/error.hpp>
+#include <grape/export_dynamics.hpp>
 #include <grape/math.hpp>
 
 #include <cmath>
@@ -59,11 +60,11 @@ enum class DriftControl {
 };
 
 /// The drift-control name ("none", "baumgarte", "projection").
-std::string_view to_string(DriftControl drift) noexcept;
+GRAPE_DYNAMICS_API std::string_view to_string(DriftControl drift) noexcept;
 /// The drift control named `name`; throws grape::Error naming the unknown value.
-DriftControl parse_drift_control(std::string_view name);
+GRAPE_DYNAMICS_API DriftControl parse_drift_control(std::string_view name);
 /// Every drift control, in declaration order (for menus and name lists).
-std::span<const DriftControl> all_drift_controls() noexcept;
+GRAPE_DYNAMICS_API std::span<const DriftControl> all_drift_controls() noexcept;
 
 /// Drift-control settings.
 struct DriftDef {
@@ -185,7 +186,7 @@ struct ParticleState;  // the system's arrays, records and solver (private: Eige
 /// arrays (positions, velocities, inverse masses, forces) in particle order, behind a
 /// pointer: the spans below stay valid until particles are added.
 /// Move-only: the solver keeps factorizations of its matrices.
-class ParticleSystem {
+class GRAPE_DYNAMICS_API ParticleSystem {
 public:
     /// Throws grape::Error if a setting is out of range (non-positive omega_dt, negative gains,
     /// tolerance or iteration counts).

@@ -5,12 +5,22 @@
 #include <stdexcept>
 #include <string>
 
+// Every library throws Error and its users catch it: on ELF its type_info must be one object
+// for all of them (hidden, each shared library would keep a copy of its own, which catch tells
+// apart where it compares type_info by address, as libc++ does). Windows compares the type's
+// name, so there the class needs neither dllexport nor dllimport.
+#if defined(_WIN32) || defined(__CYGWIN__)
+#define GRAPE_VISIBLE_TYPE
+#else
+#define GRAPE_VISIBLE_TYPE __attribute__((visibility("default")))
+#endif
+
 namespace grape {
 
 /// Thrown by constructors and parsers for invalid input. The message names the offending
 /// argument (or the character offset / JSON pointer for parsers) and the reason.
 /// Evaluation on valid objects never throws.
-class Error : public std::runtime_error {
+class GRAPE_VISIBLE_TYPE Error : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <grape/bits.hpp>
+#include <grape/export_bits.hpp>
 
 #include <concepts>
 #include <cstddef>
@@ -29,7 +30,7 @@ constexpr std::size_t key_index(K key) noexcept {
         }
         const auto value = static_cast<unsigned long long>(key);
         if constexpr (sizeof(unsigned long long) > sizeof(std::size_t)) {
-            if (value > std::numeric_limits<std::size_t>::max()) return BitVector::npos;
+            if (value > (std::numeric_limits<std::size_t>::max)()) return BitVector::npos;
         }
         return static_cast<std::size_t>(value);
     }
@@ -72,7 +73,7 @@ struct KeyRepeatDef {
 /// The press itself is never a repeat, and a press of a key already down (an OS repeat)
 /// changes nothing. Times are compared as the doubles given: with dyadic times (1/64, 0.5, …)
 /// the reports are exact.
-class KeyState {
+class GRAPE_BITS_API KeyState {
 public:
     /// Codes 0 … key_count − 1 are tracked; 512 fits every SDL scancode (SDL_NUM_SCANCODES).
     static constexpr std::size_t default_key_count = 512;

@@ -179,7 +179,7 @@ Root find_root(FD&& fd, double lo, double hi, double guess, double tolerance = 1
         return {std::abs(flo) < std::abs(fhi) ? lo : hi, 0, false};
     }
     if (flo > 0.0) std::swap(lo, hi);  // orient so that f(lo) < 0 < f(hi); lo may exceed hi
-    double x = (guess > std::min(lo, hi) && guess < std::max(lo, hi)) ? guess : 0.5 * (lo + hi);
+    double x = (guess > (std::min)(lo, hi) && guess < (std::max)(lo, hi)) ? guess : 0.5 * (lo + hi);
     double step_before = std::abs(hi - lo);
     double step = step_before;
     for (int i = 1; i <= max_iterations; ++i) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <grape/bits.hpp>
+#include <grape/export_bits.hpp>
 
 #include <cstddef>
 
@@ -13,7 +14,7 @@ namespace grape {
 /// One bit per unordered pair {i, j} of n objects: n(n−1)/2 bits, with the pair at
 /// index i(2n − i − 3)/2 + j − 1 for i < j (Ericson, Real-Time Collision Detection).
 /// Typical use: test each pair of colliding objects once per frame.
-class PairBits {
+class GRAPE_BITS_API PairBits {
 public:
     /// Room for the pairs of `object_count` objects, all clear. Throws grape::Error when
     /// n(n−1)/2 does not fit in std::size_t.

@@ -19,6 +19,7 @@
 // Path object is not synchronized: give each thread its own handle to write.
 #pragma once
 
+#include <grape/export_path.hpp>
 #include <grape/math.hpp>
 
 #include <array>
@@ -58,7 +59,7 @@ enum class PathKind {
 };
 
 /// The kind's name in snake_case ("cubic_bezier").
-std::string_view to_string(PathKind kind) noexcept;
+GRAPE_PATH_API std::string_view to_string(PathKind kind) noexcept;
 
 /// A 2-D path. Outside [0, 1] it extends along its end tangents:
 /// point(u) = point(0) + u·d1(0) for u < 0 and point(1) + (u − 1)·d1(1) for u > 1,
@@ -66,7 +67,7 @@ std::string_view to_string(PathKind kind) noexcept;
 /// stops at an end, like a cosine spline, stays there). A default-constructed Path stays at
 /// the origin. Where a path is not smooth (spline knots, complex-path cues) d1 and d2 are
 /// those of the piece that starts there. A NaN u gives a meaningless point, never a crash.
-class Path {
+class GRAPE_PATH_API Path {
 public:
     Path();  ///< the origin, standing still
 
@@ -121,7 +122,7 @@ protected:
 };
 
 /// A straight segment from `start` to `end`; u is proportional to distance.
-class LinearPath : public Path {
+class GRAPE_PATH_API LinearPath : public Path {
 public:
     LinearPath(Vec2 start, Vec2 end);  ///< throws if a point is not finite
     Vec2 start() const noexcept;  ///< point at u = 0
@@ -131,7 +132,7 @@ public:
 /// An arc of a circle: point = center + radius·(cos θ, sin θ), θ from `start_angle` to
 /// `end_angle` radians. Either direction, and more than one turn when the angles are more
 /// than 2π apart. With y down, increasing angles turn clockwise on screen.
-class CirclePath : public Path {
+class GRAPE_PATH_API CirclePath : public Path {
 public:
     CirclePath(Vec2 center, double radius, double start_angle, double end_angle);  ///< radius > 0; angles in radians
     Vec2 center() const noexcept;  ///< center, world units
@@ -143,7 +144,7 @@ public:
 /// An arc of an ellipse with semi-axes `rx` and `ry` turned by `rotation` radians about
 /// `center`: point = center + R(rotation)·(rx·cos θ, ry·sin θ), θ from `start_angle` to
 /// `end_angle` (either direction, several turns allowed). SVG's `A` command becomes one.
-class EllipticalArcPath : public Path {
+class GRAPE_PATH_API EllipticalArcPath : public Path {
 public:
     /// rx, ry > 0; angles in radians.
     EllipticalArcPath(Vec2 center, double rx, double ry, double rotation, double start_angle,
@@ -158,7 +159,7 @@ public:
 
 /// A circle whose radius goes linearly from `start_radius` to `end_radius` while the angle
 /// goes from `start_angle` to `end_angle` (default: one full turn from 0).
-class SpiralPath : public Path {
+class GRAPE_PATH_API SpiralPath : public Path {
 public:
     /// Radii ≥ 0; angles in radians.
     SpiralPath(Vec2 center, double start_radius, double end_radius, double start_angle = 0.0,
@@ -172,7 +173,7 @@ public:
 
 /// A sine wave along the segment start → end: `frequency` full waves over the segment,
 /// displaced by amplitude·sin(2π·frequency·u) along the segment's left-hand perpendicular.
-class SineWavePath : public Path {
+class GRAPE_PATH_API SineWavePath : public Path {
 public:
     SineWavePath(Vec2 start, Vec2 end, double frequency, double amplitude);  ///< start ≠ end
     Vec2 start() const noexcept;  ///< start of the base segment
@@ -184,7 +185,7 @@ public:
 /// Quadratic Bézier through p0 and p2 with control point p1. With `reparametrize`, the
 /// path is the arc-length reparametrization (constant speed, kind() reparametrized), as the
 /// seed's flag did; control() still gives the control points.
-class QuadraticBezierPath : public Path {
+class GRAPE_PATH_API QuadraticBezierPath : public Path {
 public:
     QuadraticBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, bool reparametrize = false);
     /// Control point i in 0..2.
@@ -192,7 +193,7 @@ public:
 };
 
 /// Cubic Bézier through p0 and p3 with control points p1 and p2; `reparametrize` as above.
-class CubicBezierPath : public Path {
+class GRAPE_PATH_API CubicBezierPath : public Path {
 public:
     CubicBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, bool reparametrize = false);
     /// Control point i in 0..3.
@@ -201,7 +202,7 @@ public:
 
 /// Splines through n ≥ 2 points; u is spread evenly over the n − 1 segments.
 /// Points come as Vec2s or, as in the seed, as flat x, y pairs (an odd count is an error).
-class LinearSplinePath : public Path {
+class GRAPE_PATH_API LinearSplinePath : public Path {
 public:
     explicit LinearSplinePath(std::span<const Vec2> points);  ///< n ≥ 2 finite points
     explicit LinearSplinePath(std::span<const double> xy);    ///< x0, y0, x1, y1, ...
@@ -210,7 +211,7 @@ public:
 };
 
 /// Cosine interpolation between successive points (zero velocity at every point).
-class CosineSplinePath : public Path {
+class GRAPE_PATH_API CosineSplinePath : public Path {
 public:
     explicit CosineSplinePath(std::span<const Vec2> points);  ///< n ≥ 2 finite points
     explicit CosineSplinePath(std::span<const double> xy);    ///< x0, y0, x1, y1, ...
@@ -220,7 +221,7 @@ public:
 
 /// Cubic Hermite spline through points with the given tangents (one per point, as d/du of a
 /// segment's local parameter in [0, 1]).
-class HermiteSplinePath : public Path {
+class GRAPE_PATH_API HermiteSplinePath : public Path {
 public:
     HermiteSplinePath(std::span<const Vec2> points, std::span<const Vec2> tangents);  ///< one tangent per point
     HermiteSplinePath(std::span<const double> xy, std::span<const double> tangent_xy);  ///< as flat pairs
@@ -238,7 +239,7 @@ enum class CatmullRom { uniform, centripetal, chordal };
 /// and its derivatives carry the segment's knot spacing. Centripetal never forms cusps or
 /// self-intersections within a segment. Coincident neighbours (spacing 0) fall back to
 /// spacing 1 there.
-class CatmullRomSplinePath : public Path {
+class GRAPE_PATH_API CatmullRomSplinePath : public Path {
 public:
     explicit CatmullRomSplinePath(std::span<const Vec2> points, CatmullRom type = CatmullRom::uniform);
     explicit CatmullRomSplinePath(std::span<const double> xy, CatmullRom type = CatmullRom::uniform);
@@ -249,7 +250,7 @@ public:
 };
 
 /// A projectile: position + velocity·t + ½·acceleration·t², t = u·seconds.
-class PhysicsPath : public Path {
+class GRAPE_PATH_API PhysicsPath : public Path {
 public:
     PhysicsPath(Vec2 position, Vec2 velocity, Vec2 acceleration, double seconds);  ///< seconds > 0
     Vec2 position() const noexcept;  ///< position at t = 0, world units
@@ -262,7 +263,7 @@ public:
 /// ends at 1. Cues start at 0, never decrease and stay in [0, 1]; a part whose span is empty
 /// is skipped (not travelled, not counted in length or bounds). Derivatives follow the chain
 /// rule: d1 = part.d1(v) / span. Parts need not meet; complex paths are paths, so they nest.
-class ComplexPath : public Path {
+class GRAPE_PATH_API ComplexPath : public Path {
 public:
     ComplexPath(std::vector<Path> parts, std::vector<double> cues);  ///< one cue per part
     /// Cues from the parts' lengths, so one easing curve applies evenly over the whole
@@ -369,10 +370,10 @@ using PathSpec = std::variant<LinearSpec, CircleSpec, EllipticalArcSpec, SpiralS
 
 /// The kind and parameters of any path, whatever its static type (copies spline points;
 /// a query, not for per-frame loops).
-PathSpec describe(const Path& path);
+GRAPE_PATH_API PathSpec describe(const Path& path);
 /// The path a spec describes: from_spec(describe(p)) evaluates bit for bit like p. Throws
 /// grape::Error as the kind's constructor does for invalid parameters.
-Path from_spec(const PathSpec& spec);
+GRAPE_PATH_API Path from_spec(const PathSpec& spec);
 
 /// The kind a spec describes.
 inline PathKind kind_of(const PathSpec& spec) noexcept { return static_cast<PathKind>(spec.index()); }
@@ -408,7 +409,7 @@ std::optional<S> path_cast(const Path& path) {
 /// SVG. Data that draws nothing of positive length (empty, only movetos, zero-length
 /// segments) is valid: the path stands at its first moveto (the origin for empty data), with
 /// length 0. Throws grape::Error naming the character offset of a syntax error (strict).
-ComplexPath parse_svg_path(std::string_view data);
+GRAPE_PATH_API ComplexPath parse_svg_path(std::string_view data);
 
 /// Where SVG path data breaks the grammar (or a segment cannot be a path), and why.
 struct SvgPathError {
@@ -425,10 +426,10 @@ struct SvgPathParse {
 /// SVG path data as browsers read it (SVG 2 §9.5.4): the path up to, not including, the
 /// command holding the first error (each implicit repetition of a command counts as one), as
 /// parse_svg_path would give for that prefix, and the error. Never throws grape::Error.
-SvgPathParse parse_svg_path_prefix(std::string_view data);
+GRAPE_PATH_API SvgPathParse parse_svg_path_prefix(std::string_view data);
 
 /// A scalar from `from` to `to`: value(u) = from + (to − from)·u, extended linearly outside [0, 1].
-class Path1D {
+class GRAPE_PATH_API Path1D {
 public:
     Path1D(double from, double to);  ///< both finite
     double value(double u) const noexcept { return from_ + (to_ - from_) * u; }
@@ -450,7 +451,7 @@ struct NamedPath {
 
 /// N numbers moving together through keyframes (N ≥ 1, ≥ 2 keyframes, u spread evenly over
 /// the segments, linear between keyframes): the path of a property animation.
-class PathND {
+class GRAPE_PATH_API PathND {
 public:
     /// From `from` to `to` (same size).
     PathND(std::span<const double> from, std::span<const double> to);

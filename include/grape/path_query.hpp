@@ -6,6 +6,7 @@
 //   const grape::PathFrame f = grape::frame(track, near.u);   // tangent, normal, curvature
 #pragma once
 
+#include <grape/export_path.hpp>
 #include <grape/path.hpp>
 
 #include <string>
@@ -28,15 +29,15 @@ struct ClosestPoint {
 /// start. Where the parts of a complex path do not meet, a part's end is reached just before
 /// the cue of the next (u one double below it). A q that is not finite gives u = 0 and an
 /// infinite distance. Allocation-free; work is bounded.
-ClosestPoint closest_point(const Path& path, Vec2 q) noexcept;
+GRAPE_PATH_API ClosestPoint closest_point(const Path& path, Vec2 q) noexcept;
 
 /// The nearest point with u in [u0, u1] (0 ≤ u0 ≤ u1 ≤ 1; throws grape::Error otherwise).
-ClosestPoint closest_point(const Path& path, Vec2 q, double u0, double u1);
+GRAPE_PATH_API ClosestPoint closest_point(const Path& path, Vec2 q, double u0, double u1);
 
 /// The globally nearest point, as closest_point(path, q), starting from `last_u` (the answer
 /// for a nearby q a moment ago: a dragged object): Newton from there gives the bound that
 /// discards the rest of the path cheaply. Same answer, usually faster.
-ClosestPoint closest_point_from(const Path& path, Vec2 q, double last_u) noexcept;
+GRAPE_PATH_API ClosestPoint closest_point_from(const Path& path, Vec2 q, double last_u) noexcept;
 
 /// The moving frame at u: unit tangent, unit normal (the tangent turned a quarter turn,
 /// perpendicular() of it: to the left in y-up axes, to the right on a y-down screen) and the
@@ -51,10 +52,10 @@ struct PathFrame {
 };
 
 /// The frame at u (outside [0, 1], that of the end-tangent extension: curvature 0).
-PathFrame frame(const Path& path, double u) noexcept;
+GRAPE_PATH_API PathFrame frame(const Path& path, double u) noexcept;
 
 /// Signed curvature at u, as in PathFrame.
-double curvature(const Path& path, double u) noexcept;
+GRAPE_PATH_API double curvature(const Path& path, double u) noexcept;
 
 /// The part of `path` between u0 and u1 (0 ≤ u0 < u1 ≤ 1; throws grape::Error otherwise) as
 /// a path of its own: slice.point(v) = path.point(u0 + v·(u1 − u0)) to rounding, exactly in
@@ -64,36 +65,36 @@ double curvature(const Path& path, double u) noexcept;
 /// Béziers, a complex path to the complex path of its sliced parts, a reparametrized path to
 /// the reparametrized slice of its source. Sine waves and cosine splines have no exact slice
 /// among the kinds (the phase, the easing inside a segment): they throw grape::Error.
-Path slice(const Path& path, double u0, double u1);
+GRAPE_PATH_API Path slice(const Path& path, double u0, double u1);
 
 /// The part between arc lengths s0 < s1 in [0, length()]: slice at u_at_length(s0), u_at_length(s1).
-Path slice_by_length(const Path& path, double s0, double s1);
+GRAPE_PATH_API Path slice_by_length(const Path& path, double s0, double s1);
 
 /// point(u) + distance·normal(u): where something beside the path is (a car in a lane, a
 /// positive distance to the frame's normal side), evaluated pointwise.
-Vec2 offset_point(const Path& path, double u, double distance) noexcept;
+GRAPE_PATH_API Vec2 offset_point(const Path& path, double u, double distance) noexcept;
 
 /// SVG path data that draws `path` (y down as in SVG), numbers with 17 significant digits:
 /// lines, quadratic and cubic Béziers, elliptical arcs (split below half turns), splines as
 /// their segments, a complex path part by part (M where a part does not start at the pen).
 /// Spirals and sine waves have no SVG form: grape::Error.
-std::string svg_path_data(const Path& path);
+GRAPE_PATH_API std::string svg_path_data(const Path& path);
 
 /// True when the path ends where it starts (within 1e-12 of its size): a loop, which an
 /// animation can repeat without a jump.
-bool closed(const Path& path) noexcept;
+GRAPE_PATH_API bool closed(const Path& path) noexcept;
 
 /// Closed loops through n ≥ 3 points (the last joins the first; do not repeat it): each has
 /// n segments sharing u evenly, the seam's tangents wrap around, and point(1) == point(0).
 /// A cosine loop (still at every point, kind cosine_spline).
-Path closed_cosine_spline(std::span<const Vec2> points);
+GRAPE_PATH_API Path closed_cosine_spline(std::span<const Vec2> points);
 /// A Hermite loop with one tangent per point (kind hermite_spline): C1 at the seam.
-Path closed_hermite_spline(std::span<const Vec2> points, std::span<const Vec2> tangents);
+GRAPE_PATH_API Path closed_hermite_spline(std::span<const Vec2> points, std::span<const Vec2> tangents);
 /// A Catmull–Rom loop: tangents from each point's neighbours, the seam's from the last and
 /// first points. Uniform is C1 everywhere (a hermite_spline); centripetal and chordal, whose
 /// knot spacings differ per segment, are complex paths of cubic Béziers (one per segment,
 /// smooth in direction at every point, the seam included, as the open splines are).
-Path closed_catmull_rom_spline(std::span<const Vec2> points, CatmullRom type = CatmullRom::uniform);
+GRAPE_PATH_API Path closed_catmull_rom_spline(std::span<const Vec2> points, CatmullRom type = CatmullRom::uniform);
 
 /// How fit_path turns points into a path.
 struct FitPathDef {
@@ -108,6 +109,6 @@ struct FitPathDef {
 /// reparametrization, a split at the worst point). Parts have cues by length. Consecutive
 /// repeated points are dropped; throws grape::Error for fewer than 2 distinct points, a point
 /// that is not finite or a bad tolerance or angle.
-ComplexPath fit_path(std::span<const Vec2> points, const FitPathDef& def = {});
+GRAPE_PATH_API ComplexPath fit_path(std::span<const Vec2> points, const FitPathDef& def = {});
 
 }  // namespace grape

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <grape/color.hpp>
+#include <grape/export_render.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
 #include <grape/sprite.hpp>
@@ -53,7 +54,7 @@ struct Rect {
 };
 
 /// A 2-D affine map p ↦ (xx·x + xy·y + x0, yx·x + yy·y + y0), the layout cairo uses.
-struct Affine {
+struct GRAPE_RENDER_API Affine {
     double xx = 1.0, yx = 0.0, xy = 0.0, yy = 1.0, x0 = 0.0, y0 = 0.0;
 
     /// The image of point p.
@@ -80,7 +81,7 @@ struct Affine {
 /// The map that fits `world` into `viewport` (output units) with `margin` on every side,
 /// keeping the aspect ratio and centring. A degenerate box (a point or a line) still maps
 /// to the viewport's center without dividing by zero.
-Affine fit(const Bounds& world, const Rect& viewport, double margin = 0.0) noexcept;
+GRAPE_RENDER_API Affine fit(const Bounds& world, const Rect& viewport, double margin = 0.0) noexcept;
 
 /// How line ends look.
 enum class LineCap { butt, round, square };
@@ -121,7 +122,7 @@ struct TextStyle {
 };
 
 /// An RGBA raster image in memory: a tile sheet to blit, or a Canvas read back.
-class Image {
+class GRAPE_RENDER_API Image {
 public:
     /// A `width` × `height` image filled with `fill`. Throws grape::Error unless both sizes
     /// are in [1, 32768].
@@ -157,7 +158,7 @@ struct CanvasState;  // cairo recording surface and context (src/render/canvas.c
 
 /// A drawing surface. Everything drawn is recorded, then written by file extension
 /// (.png, .svg, .pdf) or rasterized with to_image(). Move-only.
-class Canvas {
+class GRAPE_RENDER_API Canvas {
 public:
     /// A `width` × `height` canvas (output units) cleared to `background`.
     /// Throws grape::Error unless both sizes are finite and in [1, 32768].
@@ -251,7 +252,7 @@ struct PathStyle {
 };
 
 /// Draws a path with the decorations of `style`. Ticks and arrows keep their output size.
-void draw_path(Canvas& canvas, const Path& path, const PathStyle& style = {});
+GRAPE_RENDER_API void draw_path(Canvas& canvas, const Path& path, const PathStyle& style = {});
 
 /// How draw_particles shows particles. Sizes in output units; arrows in world units per unit.
 struct ParticleStyle {
@@ -264,29 +265,31 @@ struct ParticleStyle {
 
 /// Particles as discs (pinned ones in their own colour), with optional velocity arrows.
 /// `velocities` and `inverse_masses` may be empty; otherwise one per position.
-void draw_particles(Canvas& canvas, std::span<const Vec2> positions, std::span<const Vec2> velocities,
-                    std::span<const double> inverse_masses, const ParticleStyle& style = {});
+GRAPE_RENDER_API void draw_particles(Canvas& canvas, std::span<const Vec2> positions,
+                                     std::span<const Vec2> velocities, std::span<const double> inverse_masses,
+                                     const ParticleStyle& style = {});
 
 /// The zero set of an implicit curve C(x, y) = 0 (a constraint curve) inside `region`
 /// (world units), traced by marching squares on a `cells` × `cells` grid with linear
 /// interpolation: within (cell size)²·|C''|/|∇C| of the curve. `cells` is clamped to [2, 2000].
-void draw_implicit_curve(Canvas& canvas, const std::function<double(Vec2)>& c, const Bounds& region,
-                         const StrokeStyle& style, int cells = 256);
+GRAPE_RENDER_API void draw_implicit_curve(Canvas& canvas, const std::function<double(Vec2)>& c, const Bounds& region,
+                                          const StrokeStyle& style, int cells = 256);
 
 /// A TileSheetSprite's current frame from `sheet_image` blitted at world point `at`,
 /// `scale` world units per sheet pixel; with `debug`, its outline and frame number too.
-void draw_sprite(Canvas& canvas, const Image& sheet_image, const TileSheetSprite& sprite, Vec2 at,
-                 double scale = 1.0, bool debug = false);
+GRAPE_RENDER_API void draw_sprite(Canvas& canvas, const Image& sheet_image, const TileSheetSprite& sprite, Vec2 at,
+                                  double scale = 1.0, bool debug = false);
 
 /// Frame `frame` of a SpriteSheet (Aseprite, TexturePacker) from its sheet picture, drawn
 /// upright with its pivot at world point `at`, `scale` world units per pixel: trimmed pixels
 /// sit at their offset in the untrimmed image, rotated frames are turned back.
-void draw_sprite_frame(Canvas& canvas, const Image& sheet_image, const SpriteFrame& frame, Vec2 at, double scale = 1.0);
+GRAPE_RENDER_API void draw_sprite_frame(Canvas& canvas, const Image& sheet_image, const SpriteFrame& frame,
+                                        Vec2 at, double scale = 1.0);
 
 /// The whole sheet at `at` (world units, one unit per pixel × scale) with every frame
 /// outlined and numbered and the sprite's current frame highlighted.
-void draw_tile_sheet(Canvas& canvas, const Image& sheet_image, const TileSheetSprite& sprite, Vec2 at,
-                     double scale = 1.0);
+GRAPE_RENDER_API void draw_tile_sheet(Canvas& canvas, const Image& sheet_image, const TileSheetSprite& sprite,
+                                      Vec2 at, double scale = 1.0);
 
 /// A marker that moves in an animated SVG: where it is at each frame.
 struct SvgMover {
@@ -301,9 +304,10 @@ struct SvgMover {
 /// `path_colors`), and each mover a circle stepping through its positions, all frames in
 /// `seconds`. `transform` maps world units to output units. Non-finite positions are drawn
 /// at the origin rather than written as NaN.
-std::string animated_svg(double width, double height, const Affine& transform, std::span<const Path> paths,
-                         std::span<const Color> path_colors, std::span<const SvgMover> movers, double seconds,
-                         std::string_view title = {});
+GRAPE_RENDER_API std::string animated_svg(double width, double height, const Affine& transform,
+                                          std::span<const Path> paths, std::span<const Color> path_colors,
+                                          std::span<const SvgMover> movers, double seconds,
+                                          std::string_view title = {});
 
 /// A line chart of y over x (one series), for diagnostics such as energy over time.
 struct PlotSeries {
@@ -315,6 +319,7 @@ struct PlotSeries {
 
 /// Draws axes, the series, their legend and min/max labels into `area` (output units,
 /// ignoring the transform). Non-finite points are skipped; a flat series gets a small range.
-void draw_plot(Canvas& canvas, const Rect& area, std::span<const PlotSeries> series, std::string_view title = {});
+GRAPE_RENDER_API void draw_plot(Canvas& canvas, const Rect& area, std::span<const PlotSeries> series,
+                                std::string_view title = {});
 
 }  // namespace grape

@@ -18,6 +18,7 @@
 #include <grape/anim.hpp>
 #include <grape/color.hpp>
 #include <grape/curve.hpp>
+#include <grape/export_scene.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
 #include <grape/timeline_layout.hpp>
@@ -40,7 +41,7 @@ struct NamedCurve {
 };
 
 /// An animation: a path, a curve and its timing, as the anim module plays it.
-struct SceneAnimation {
+struct GRAPE_SCENE_API SceneAnimation {
     std::string name;        ///< label ("" allowed)
     Path path;               ///< where
     std::string path_name;   ///< the NamedPath it uses; "" when the path is given inline
@@ -98,7 +99,7 @@ struct SceneProperty {
 
 /// A tween of a property: from → to, from its value when the first play begins to `to`, or
 /// by an amount from that value (ValueMode), with a curve and the timing of an animation.
-struct SceneTween {
+struct GRAPE_SCENE_API SceneTween {
     std::string name;          ///< label ("" allowed); timelines place it by name
     std::string property;      ///< the SceneProperty it drives
     ValueMode mode = ValueMode::from_current;  ///< from_to ("from" given), from_current ("to" alone), relative ("by")
@@ -134,7 +135,7 @@ struct SceneTimelineChild {
 /// A timeline: animations, nested timelines, labels and gaps placed in time, played like an
 /// animation. An animation placed in a timeline is driven by it and does not play on its
 /// own: before its start in the timeline it rests at its start, after its end at its end.
-struct SceneTimeline {
+struct GRAPE_SCENE_API SceneTimeline {
     std::string name;            ///< unique among the timelines, not empty
     double delay = 0.0;          ///< seconds (of its parent) before the first play, ≥ 0
     int repeat = 0;              ///< plays after the first: 0 plays once, −1 forever (top level only)
@@ -199,7 +200,7 @@ struct SceneSimulation {
 
 /// A sprite: frames of a sprite sheet (Aseprite or TexturePacker JSON and its picture) played
 /// at a rate from scene time 0, standing at a point or moving along an animation.
-struct SceneSprite {
+struct GRAPE_SCENE_API SceneSprite {
     std::string name;               ///< label ("" allowed)
     std::string sheet_file;         ///< the sheet's JSON as written, relative to the scene file's folder
     std::string clip;               ///< the clip (tag) played; "" when frames are given
@@ -227,7 +228,7 @@ struct SceneView {
 };
 
 /// Everything a scene file holds.
-struct Scene {
+struct GRAPE_SCENE_API Scene {
     std::string name;                         ///< title ("" allowed)
     SceneView view;                           ///< picture settings
     std::vector<NamedPath> paths;             ///< named paths (drawn, and used by animations)
@@ -265,7 +266,7 @@ struct SceneTimelineLayout {
 /// and where. Built once from a scene (which it then no longer needs); evaluation is
 /// noexcept and allocation-free, the same timing model the anim engine plays (progress_at,
 /// play_at_position as the engine's timelines call it).
-class SceneTiming {
+class GRAPE_SCENE_API SceneTiming {
 public:
     SceneTiming() = default;
     /// Lays out every timeline. Throws grape::Error "scene: POINTER: WHY" for an unknown or
@@ -332,34 +333,34 @@ private:
 
 /// Parses scene JSON text. Throws grape::Error naming the JSON pointer and the reason
 /// (or the byte offset of a syntax error).
-Scene load_scene(std::string_view json);
+GRAPE_SCENE_API Scene load_scene(std::string_view json);
 /// Reads and parses a scene file and the sprite sheets it names (relative to its folder);
 /// errors also name the file.
-Scene load_scene_file(const std::filesystem::path& file);
+GRAPE_SCENE_API Scene load_scene_file(const std::filesystem::path& file);
 /// Reads the sheets of the scene's sprites (sheet_file relative to `folder`) and finds their
 /// clips; throws grape::Error naming the sprite's JSON pointer ("scene: /sprites/0/clip: ...").
-void load_scene_sprite_sheets(Scene& scene, const std::filesystem::path& folder);
+GRAPE_SCENE_API void load_scene_sprite_sheets(Scene& scene, const std::filesystem::path& folder);
 /// The scene as JSON text (indented, 17 significant digits). Paths built in code save too;
 /// a curve from a function (Curve::from_function) has no text form: grape::Error naming its
 /// pointer ("scene: /tweens/0/curve: ...").
-std::string save_scene(const Scene& scene);
+GRAPE_SCENE_API std::string save_scene(const Scene& scene);
 /// Writes the scene to a file (through a temporary: a failure leaves no partial file).
-void save_scene_file(const Scene& scene, const std::filesystem::path& file);
+GRAPE_SCENE_API void save_scene_file(const Scene& scene, const std::filesystem::path& file);
 
 /// A path as scene JSON (one object, as it appears in "paths" or inline).
-std::string path_to_json(const Path& path);
+GRAPE_SCENE_API std::string path_to_json(const Path& path);
 /// A path from scene JSON text (one object). Throws grape::Error naming the JSON pointer.
-Path parse_path_json(std::string_view json);
+GRAPE_SCENE_API Path parse_path_json(std::string_view json);
 
 #if GRAPE_HAS_DYNAMICS
 class ParticleSystem;
 /// The simulation as a ParticleSystem ready to step (particles in order, then forces, then
 /// constraints; a distance of length 0 keeps the starting distance). Only when grape::scene
 /// was built with grape::dynamics (GRAPE_HAS_DYNAMICS in grape/config.hpp).
-ParticleSystem make_particle_system(const SceneSimulation& simulation);
+GRAPE_SCENE_API ParticleSystem make_particle_system(const SceneSimulation& simulation);
 #endif
 
 /// C(p) of a conic constraint: A·x² + B·x·y + C·y² + D·x + E·y + F.
-double conic_value(const SceneConstraint& constraint, Vec2 p) noexcept;
+GRAPE_SCENE_API double conic_value(const SceneConstraint& constraint, Vec2 p) noexcept;
 
 }  // namespace grape

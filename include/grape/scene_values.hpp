@@ -16,6 +16,7 @@
 //   grape::Color tint = std::get<grape::Color>(values.value(0, 1.5));
 #pragma once
 
+#include <grape/export_scene.hpp>
 #include <grape/scene.hpp>
 
 #include <cstddef>
@@ -26,12 +27,13 @@ namespace grape {
 /// The value between a and b at curve progress u as the property mixes them: lerp for
 /// numbers and Vec2, AngleLerp (or its degrees form) for angles, grape::mix in the property's
 /// space for colours. a and b hold the property's type.
-SceneValue interpolate(const SceneProperty& property, const SceneValue& a, const SceneValue& b, double u) noexcept;
+GRAPE_SCENE_API SceneValue interpolate(const SceneProperty& property, const SceneValue& a, const SceneValue& b,
+                                       double u) noexcept;
 
 /// A scene's properties as its tweens drive them. Built once (the from-current and relative
 /// starts resolved in order); value() is noexcept, allocation-free and O(tweens of the
 /// property) at worst (O(log n) when the last begun tween is found at once).
-class SceneProperties {
+class GRAPE_SCENE_API SceneProperties {
 public:
     SceneProperties() = default;
     /// Checks every tween against its property and resolves their starts. `timing` is

@@ -59,6 +59,7 @@
 #pragma once
 
 #include <grape/anim.hpp>
+#include <grape/export_anim.hpp>
 
 #include <concepts>
 #include <coroutine>
@@ -134,7 +135,7 @@ struct ScriptLeaf {
 
 /// A time as an unevaluated sum hi + lo (a double-double), so a clock summed over millions
 /// of ticks keeps the ulp of its value.
-struct ScriptTime {
+struct GRAPE_ANIM_API ScriptTime {
     double hi = 0.0;
     double lo = 0.0;
     void add(double x) noexcept;
@@ -143,7 +144,7 @@ struct ScriptTime {
 
 enum class ScriptState : std::uint8_t { idle, running, done, failed, cancelled };
 
-class ScriptPromise {
+class GRAPE_ANIM_API ScriptPromise {
 public:
     ScriptPromise() noexcept = default;
     ScriptPromise(const ScriptPromise&) = delete;
@@ -152,7 +153,7 @@ public:
 
     Script get_return_object() noexcept;
     std::suspend_always initial_suspend() noexcept { return {}; }
-    struct FinalAwaiter {
+    struct GRAPE_ANIM_API FinalAwaiter {
         bool await_ready() noexcept { return false; }
         std::coroutine_handle<> await_suspend(std::coroutine_handle<ScriptPromise> h) noexcept;
         void await_resume() noexcept {}
@@ -221,15 +222,15 @@ struct ScriptLink {
     ScriptPromise* owner = nullptr;
 };
 
-void cancel_script(ScriptPromise* p, OnCancel mode) noexcept;
-bool script_link_alive(const std::shared_ptr<ScriptLink>& link) noexcept;
-[[noreturn]] void throw_bad_wait(double seconds);
+GRAPE_ANIM_API void cancel_script(ScriptPromise* p, OnCancel mode) noexcept;
+GRAPE_ANIM_API bool script_link_alive(const std::shared_ptr<ScriptLink>& link) noexcept;
+[[noreturn]] GRAPE_ANIM_API void throw_bad_wait(double seconds);
 
 }  // namespace detail
 
 /// A cut-scene as a coroutine: a function returning Script with co_await in it. Created
 /// suspended; `start(engine)` runs it. Move-only; destroying it cancels the script.
-class Script {
+class GRAPE_ANIM_API Script {
 public:
     using promise_type = detail::ScriptPromise;
 
@@ -264,7 +265,6 @@ public:
 
 private:
     friend class detail::ScriptPromise;
-    friend void detail::cancel_script(detail::ScriptPromise*, OnCancel) noexcept;
     explicit Script(std::coroutine_handle<detail::ScriptPromise> h) noexcept : handle_(h) { h.promise().owner_ = this; }
     detail::ScriptState state() const noexcept { return handle_ ? handle_.promise().state_ : state_; }
     void release() noexcept;
@@ -322,7 +322,7 @@ struct ScriptPromise::UntilAwaiter {
 };
 
 /// A nested script (runs inside this one) or a started one (polled like a handle).
-struct ScriptPromise::ScriptAwaiter {
+struct GRAPE_ANIM_API ScriptPromise::ScriptAwaiter {
     ScriptPromise* p;
     ScriptPromise* child = nullptr;        // nested: not yet started when awaited
     std::shared_ptr<ScriptLink> started;   // started elsewhere: alive while its link is

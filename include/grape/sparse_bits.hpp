@@ -14,6 +14,7 @@
 
 #include <grape/bits.hpp>
 #include <grape/detail/line_allocator.hpp>
+#include <grape/export_bits.hpp>
 
 #include <bit>
 #include <cassert>
@@ -28,7 +29,7 @@ namespace grape {
 /// A fixed-size bit vector for sparse or clustered bits; bit i lives in block i / 65,536.
 /// Element access is checked by assert in debug builds; combining two vectors throws
 /// grape::Error when their sizes differ.
-class SparseBitVector {
+class GRAPE_BITS_API SparseBitVector {
 public:
     using Word = std::uint64_t;
     /// Bits per block.
@@ -96,7 +97,7 @@ public:
     }
 
     /// Same size and same bits (whatever form their blocks have).
-    friend bool operator==(const SparseBitVector& a, const SparseBitVector& b) noexcept;
+    friend GRAPE_BITS_API bool operator==(const SparseBitVector& a, const SparseBitVector& b) noexcept;
 
 private:
 public:
@@ -128,7 +129,7 @@ private:
 /// same index (pair {i, j}, i < j, at i(2n − i − 3)/2 + j − 1), the same errors. 100,000
 /// objects have 4,999,950,000 pairs: 625 MB as a PairBits, a 4 MB block table plus 2 bytes per
 /// set pair here.
-class SparsePairBits {
+class GRAPE_BITS_API SparsePairBits {
 public:
     /// Room for the pairs of `object_count` objects, all clear. Throws grape::Error when
     /// n(n−1)/2 does not fit in std::size_t.

@@ -18,6 +18,7 @@
 // additions of the stored 0.333…31 round up to 1).
 #pragma once
 
+#include <grape/export_sprite.hpp>
 #include <grape/math.hpp>
 
 #include <cstddef>
@@ -61,7 +62,7 @@ struct SpritePlayerDef {
 
 /// Advances a Playable (or a bare frame counter) by a real-valued rate per step.
 /// Stepping is noexcept and allocation-free; callbacks are stored apart from the hot state.
-class SpritePlayer {
+class GRAPE_SPRITE_API SpritePlayer {
 public:
     /// Called with each frame the playback enters, in order of travel, frames skipped over
     /// by a fast rate included (at most one full cycle per advance call).
@@ -234,7 +235,7 @@ struct TileSheetDef {
 
 /// A sheet image cut into frame rectangles, row by row (left to right, top to bottom), or
 /// from a list of rectangles (a packed atlas). Immutable once built.
-class TileSheet {
+class GRAPE_SPRITE_API TileSheet {
 public:
     /// Cuts a regular grid; throws grape::Error naming the field and the reason when a size
     /// is not positive, the frames do not fit the sheet, or a derived frame size is not whole.
@@ -266,7 +267,7 @@ private:
 
 /// A Playable over a TileSheet: its current frame is a rectangle of the sheet. The sheet
 /// must outlive the sprite (many sprites share one sheet).
-class TileSheetSprite : public Playable {
+class GRAPE_SPRITE_API TileSheetSprite : public Playable {
 public:
     /// Shows frame 0 of `sheet`.
     explicit TileSheetSprite(const TileSheet& sheet) noexcept : sheet_(&sheet) {}

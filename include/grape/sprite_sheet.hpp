@@ -10,6 +10,7 @@
 //   draw(sheet.frame(player.frame()));                       // trimmed offset, pivot, rotation
 #pragma once
 
+#include <grape/export_sprite.hpp>
 #include <grape/sprite.hpp>
 
 #include <cstddef>
@@ -88,7 +89,7 @@ struct SpriteSheetDef {
 };
 
 /// A sheet of frames with durations, clips and slices. Immutable once built.
-class SpriteSheet {
+class GRAPE_SPRITE_API SpriteSheet {
 public:
     /// Checks and keeps `def`: throws grape::Error naming the field (frames[3].duration_ms, …)
     /// when the sheet is empty, a frame leaves the sheet or its untrimmed image, a duration is
@@ -161,7 +162,7 @@ struct ClipPlayerDef {
 /// completion; one advance walks at most max(2 periods, 65,536 frames) and counts the whole
 /// periods beyond that in one loop event. advance is noexcept apart from its argument check and
 /// allocation-free.
-class ClipPlayer {
+class GRAPE_SPRITE_API ClipPlayer {
 public:
     /// Receives the player's events; may call play, set_rate, pause or on_event, must not
     /// destroy the player, must not throw.

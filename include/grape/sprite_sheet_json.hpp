@@ -9,6 +9,7 @@
 // ("sprite sheet: /meta/frameTags/2/to: 12 is past the last frame (frame count 8)").
 #pragma once
 
+#include <grape/export_scene.hpp>
 #include <grape/sprite.hpp>
 
 #include <filesystem>
@@ -24,15 +25,16 @@ enum class SheetJsonLayout { hash, array };
 /// Parses sprite-sheet JSON as Aseprite or TexturePacker write it (either layout, frames in
 /// the file's order). Throws grape::Error naming the JSON pointer and the reason, or the byte
 /// offset of a syntax error.
-SpriteSheet load_sprite_sheet(std::string_view json);
+GRAPE_SCENE_API SpriteSheet load_sprite_sheet(std::string_view json);
 /// Reads and parses a sprite-sheet JSON file; errors also name the file.
-SpriteSheet load_sprite_sheet_file(const std::filesystem::path& file);
+GRAPE_SCENE_API SpriteSheet load_sprite_sheet_file(const std::filesystem::path& file);
 /// The sheet picture of a sheet read from `json_file`: its image() taken relative to the
 /// file's folder, as both tools write it.
-std::filesystem::path sprite_sheet_image_path(const SpriteSheet& sheet, const std::filesystem::path& json_file);
+GRAPE_SCENE_API std::filesystem::path sprite_sheet_image_path(const SpriteSheet& sheet,
+                                                              const std::filesystem::path& json_file);
 /// The sheet as Aseprite JSON in either layout: frames with durations, tags, slices with
 /// pivots (a frame's own pivot is kept only through slices). The hash layout keys frames by
 /// name, so names must then be unique and not empty (grape::Error otherwise).
-std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout);
+GRAPE_SCENE_API std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout);
 
 }  // namespace grape

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <grape/curve.hpp>
+#include <grape/export_anim.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -73,10 +74,10 @@ struct StaggerDef {
 /// Writes the start offset (seconds) of each of out.size() items. Throws grape::Error naming
 /// the field for a bad def (both each and amount, non-finite values, an index past the items,
 /// a grid smaller than the items). Allocates nothing.
-void stagger_offsets(const StaggerDef& def, std::span<double> out);
+GRAPE_ANIM_API void stagger_offsets(const StaggerDef& def, std::span<double> out);
 
 /// The start offsets of `count` items.
-std::vector<double> stagger_offsets(std::size_t count, const StaggerDef& def);
+GRAPE_ANIM_API std::vector<double> stagger_offsets(std::size_t count, const StaggerDef& def);
 
 /// One call, N animations: calls `make(i, delay)` for i = 0 … count − 1 with the item's
 /// offset and returns what it returns (Animation handles, or any other handle), in order.

@@ -59,6 +59,7 @@
 #pragma once
 
 #include <grape/anim.hpp>
+#include <grape/export_anim.hpp>
 #include <grape/timeline_layout.hpp>
 
 #include <cstdint>
@@ -80,7 +81,7 @@ struct TimelineDef {
 
 /// A handle to a timeline in an Engine. Default-constructed or killed handles are inert:
 /// queries return neutral values, commands do nothing. A handle must not outlive its engine.
-class Timeline {
+class GRAPE_ANIM_API Timeline {
 public:
     /// A position argument: a TimelinePosition, seconds from the timeline's start, or position
     /// text (">", "<+0.5", "+=1", "intro-0.25"; see parse_timeline_position).

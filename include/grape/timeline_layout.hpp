@@ -11,6 +11,7 @@
 #pragma once
 
 #include <grape/anim.hpp>
+#include <grape/export_anim.hpp>
 
 #include <span>
 #include <string>
@@ -37,11 +38,11 @@ struct TimelinePosition {
 /// the text before the first '+' or '-' that is followed by a number ("my-label-1" is
 /// "my-label" − 1); it must not start with a digit, '.', '<', '>' or '='. Throws grape::Error
 /// naming the text and the reason.
-TimelinePosition parse_timeline_position(std::string_view text);
+GRAPE_ANIM_API TimelinePosition parse_timeline_position(std::string_view text);
 /// An absolute position (seconds from the timeline's start).
-TimelinePosition timeline_position_at(double seconds) noexcept;
+GRAPE_ANIM_API TimelinePosition timeline_position_at(double seconds) noexcept;
 /// The text parse_timeline_position reads back as `position` (17 significant digits).
-std::string to_string(const TimelinePosition& position);
+GRAPE_ANIM_API std::string to_string(const TimelinePosition& position);
 
 /// One entry of a timeline as laid out: a child with a duration (an animation's or a nested
 /// timeline's total length in the parent's seconds, finite and ≥ 0), a gap (occupies
@@ -66,13 +67,13 @@ struct TimelineLayout {
 /// refers to a label defined by an earlier entry. Throws grape::Error "entries[i]: ..." for an
 /// unknown or duplicate label, a negative resulting start, a non-finite or negative duration
 /// or a non-finite offset.
-TimelineLayout layout_timeline(std::span<const TimelineEntry> entries);
+GRAPE_ANIM_API TimelineLayout layout_timeline(std::span<const TimelineEntry> entries);
 
 /// Seconds into one play of a timeline of `duration` seconds per play, at `t` seconds of the
 /// parent's time since the timeline was placed, under `def`'s delay, repeat, repeat_delay,
 /// yoyo, reversed and time_scale (curve ignored): the same play_at model animations use.
 /// Before the first play: 0 (or `duration` when reversed); during a repeat delay and after
 /// the last play: the end of the play just finished (0 for a backward play). 0 for duration 0.
-double timeline_local_time(const AnimationDef& def, double duration, double t) noexcept;
+GRAPE_ANIM_API double timeline_local_time(const AnimationDef& def, double duration, double t) noexcept;
 
 }  // namespace grape

@@ -3,6 +3,8 @@
 // as separate target clones and picked once from the CPU's feature bits.
 #pragma once
 
+#include <grape/export_bits.hpp>
+
 #include <cstddef>
 #include <cstdint>
 
@@ -40,12 +42,13 @@ constexpr Word low_bits(std::size_t b) noexcept { return (Word{1} << b) - 1; }
 constexpr Word tail_mask(std::size_t size) noexcept { return size % 64 == 0 ? ~Word{0} : low_bits(size % 64); }
 
 /// The kernels for this machine, selected on first use.
-const WordKernels& word_kernels() noexcept;
+GRAPE_BITS_API const WordKernels& word_kernels() noexcept;
 
-/// The portable kernels (for tests that compare every version against each other).
-const WordKernels& generic_word_kernels() noexcept;
+/// The portable kernels (for tests that compare every version against each other; exported,
+/// like runnable_word_kernels, so that they do so against a shared grape_bits too).
+GRAPE_BITS_API const WordKernels& generic_word_kernels() noexcept;
 
 /// Every version this machine can run, the generic one first; `count` receives how many.
-const WordKernels* const* runnable_word_kernels(std::size_t& count) noexcept;
+GRAPE_BITS_API const WordKernels* const* runnable_word_kernels(std::size_t& count) noexcept;
 
 }  // namespace grape::detail

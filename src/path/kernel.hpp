@@ -1,12 +1,14 @@
 // grape — what modules that evaluate paths in bulk (anim's tick) may know of a path beyond
 // path.hpp: a kind to switch on, copied coefficients of lines and cubics, and the arc-length
 // table of a reparametrized line or cubic. Owned by the path module, built by make_kernel,
-// reached through the build-only target grape::path_internal (not installed).
+// reached through the build-only target grape::path_internal (not installed). What is compiled
+// is exported (GRAPE_PATH_API): anim and render call it from other shared libraries.
 #pragma once
 
 #include "svg_segment.hpp"
 
 #include <grape/detail/line_allocator.hpp>
+#include <grape/export_path.hpp>
 #include <grape/path.hpp>
 
 #include <cmath>
@@ -60,7 +62,7 @@ public:
     /// piece, land within 1e-10·length of the path's own point (so within 2e-10·length
     /// anywhere: tested); nullopt when the path is not reparametrized, has no length or
     /// needs more than 4096 pieces (a source that stops somewhere: dv/du unbounded).
-    static std::optional<ArcLengthTable> build(const Path& reparametrized);
+    GRAPE_PATH_API static std::optional<ArcLengthTable> build(const Path& reparametrized);
 
     /// The point at u: the path's own end points at or below 0 (and for NaN) and at or above 1.
     Vec2 point(double u) const noexcept {
@@ -202,7 +204,7 @@ private:
 
 /// Whether this processor runs the four-lane (AVX2) loops: evaluate_piece_wide and the
 /// tick's (checked once; the environment variable GRAPE_WIDE_LANES=0 turns them off).
-bool wide_lanes() noexcept;
+GRAPE_PATH_API bool wide_lanes() noexcept;
 
 /// How a kernel evaluates inside [0, 1].
 enum class KernelKind : std::uint8_t {
@@ -223,18 +225,18 @@ struct PathKernel {
 };
 
 /// The kernel of a path (builds the arc-length table of a reparametrized line or cubic).
-PathKernel make_kernel(const Path& path);
+GRAPE_PATH_API PathKernel make_kernel(const Path& path);
 /// The shape's identity: equal for copies of one Path (a key for tables of shared paths).
-const void* shape_id(const Path& path) noexcept;
+GRAPE_PATH_API const void* shape_id(const Path& path) noexcept;
 /// The parameters 0 = b0 < b1 < ... < bk = 1 between which the path is smooth (spline
 /// joins, cues, cusps, quarter turns).
-std::span<const double> smooth_breaks(const Path& path) noexcept;
+GRAPE_PATH_API std::span<const double> smooth_breaks(const Path& path) noexcept;
 /// The source parameter a reparametrized path evaluates at u in [0, 1] (its own solve);
 /// u itself for other kinds.
-double source_parameter(const Path& path, double u) noexcept;
+GRAPE_PATH_API double source_parameter(const Path& path, double u) noexcept;
 
 /// The commands of a path made from SVG data (moves, segments, closes, zero-length dots), so
 /// that it can be drawn as SVG draws it; nullptr for any other path.
-const std::vector<SvgSegment>* svg_commands(const Path& path) noexcept;
+GRAPE_PATH_API const std::vector<SvgSegment>* svg_commands(const Path& path) noexcept;
 
 }  // namespace grape::detail
