@@ -87,7 +87,7 @@ endfunction()
 
 # Static archives must be named in link order (a library before those it uses).
 grape_pkgconfig(grape "${PROJECT_DESCRIPTION} (the core: math, path, curve, anim, bits, sprite)"
-                "-lgrape_anim -lgrape_curve -lgrape_path -lgrape_bits -lgrape_sprite" "" "")
+                "-lgrape_anim -lgrape_curve -lgrape_path -lgrape_bits -lgrape_sprite -lgrape_math" "" "")
 if(GRAPE_WITH_DYNAMICS)
   grape_pkgconfig(grape-dynamics "grape's constrained particle dynamics" "-lgrape_dynamics" "grape" "")
 endif()

@@ -2,28 +2,23 @@
 
 #include <grape/error.hpp>
 
-#include <charconv>
+#include "math/number_text.hpp"
+
 #include <cmath>
-#include <cstdio>
+#include <string_view>
 
 namespace grape::tool {
 
 double parse_finite(std::string_view what, const std::string& text) {
     double value = 0.0;
-    const char* first = text.data();
-    const char* last = text.data() + text.size();
-    if (first != last && *first == '+') ++first;
-    const auto [end, ec] = std::from_chars(first, last, value);
-    if (ec != std::errc() || end != last || first == last || !std::isfinite(value))
+    const std::string_view digits = !text.empty() && text.front() == '+' ? std::string_view(text).substr(1) : text;
+    if (!detail::parse_finite(digits, value))
         throw Error(std::string(what) + " must be a finite number (got '" + text + "')");
     return value;
 }
 
 std::string json_number(double value) {
-    if (!std::isfinite(value)) return "null";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", value);
-    return buffer;
+    return std::isfinite(value) ? detail::general_text(value, 17) : "null";
 }
 
 std::string json_object(std::initializer_list<std::pair<std::string_view, double>> fields) {

@@ -1,7 +1,8 @@
 // grape — error type shared by every module.
 #pragma once
 
-#include <charconv>
+#include <grape/export_math.hpp>
+
 #include <stdexcept>
 #include <string>
 
@@ -26,12 +27,10 @@ public:
 };
 
 namespace detail {
-/// A number as error messages quote it: the shortest text that reads back as the same double.
-inline std::string number_text(double value) {
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
+/// A number as error messages and names quote it: the shortest text that reads back as the
+/// same double ("0.1", "1e+100"), in every locale. Compiled (grape::math), as <charconv> cannot
+/// write a double with every standard library grape supports.
+GRAPE_MATH_API std::string number_text(double value);
 }  // namespace detail
 
 }  // namespace grape

@@ -2,12 +2,11 @@
 #include <grape/error.hpp>
 #include <grape/timeline_layout.hpp>
 
+#include "math/number_text.hpp"
+
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <string>
-#include <system_error>
 
 namespace grape {
 
@@ -15,11 +14,10 @@ namespace {
 
 using Anchor = TimelinePosition::Anchor;
 
-// A whole finite number (from_chars' general format: "1.5", "2", "1e-3", no sign in front).
+// A whole finite number (parse_finite's format: "1.5", "2", "1e-3", no sign in front).
 bool read_number(std::string_view text, double& value) {
     if (text.empty() || text.front() == '+' || text.front() == '-') return false;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+    return detail::parse_finite(text, value);
 }
 
 // "+0.5", "-0.2", "+=0.5", "-=0.2" → the signed offset.
@@ -38,11 +36,7 @@ bool read_offset(std::string_view text, double& offset) {
     throw Error("timeline position '" + std::string(text) + "': " + why);
 }
 
-std::string seconds_text(double s) {
-    char buffer[40];
-    std::snprintf(buffer, sizeof buffer, "%.17g", s);
-    return buffer;
-}
+std::string seconds_text(double s) { return detail::general_text(s, 17); }
 
 }  // namespace
 

@@ -3,10 +3,11 @@
 #include <grape/color.hpp>
 #include <grape/error.hpp>
 
+#include "math/number_text.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -162,9 +163,8 @@ double parse_component(std::string_view text, std::string_view item, bool is_alp
     const bool percent = !item.empty() && item.back() == '%';
     if (percent) item.remove_suffix(1);
     double value = 0.0;
-    const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
     const std::string what = is_alpha ? "alpha" : "component " + std::to_string(index + 1);
-    if (item.empty() || ec != std::errc() || end != item.data() + item.size() || !std::isfinite(value))
+    if (!detail::parse_finite(item, value))
         bad(text, what + " is not a number (\"" + std::string(item) + "\")");
     if (percent) value /= 100.0;
     else if (!is_alpha) value /= 255.0;
@@ -251,8 +251,8 @@ std::string to_css(const Color& c) {
         std::snprintf(buffer, sizeof buffer, "rgb(%d, %d, %d)", byte_of(c.r), byte_of(c.g), byte_of(c.b));
         return buffer;
     }
-    std::snprintf(buffer, sizeof buffer, "rgba(%d, %d, %d, %.3f)", byte_of(c.r), byte_of(c.g), byte_of(c.b), alpha);
-    std::string out = buffer;  // "0.500)" reads as "0.5)"
+    std::snprintf(buffer, sizeof buffer, "rgba(%d, %d, %d, ", byte_of(c.r), byte_of(c.g), byte_of(c.b));
+    std::string out = buffer + detail::fixed_text(alpha, 3) + ")";  // "0.500)" reads as "0.5)"
     const std::size_t close = out.size() - 1;
     std::size_t last = close;
     while (out[last - 1] == '0') --last;

@@ -1,18 +1,17 @@
 // Curves: validation, steps, the monotone cubic, and names (cubic_bezier.cpp, svg_curve.cpp,
 // spring.cpp and function_curve.cpp hold the other kinds).
 #include "curve_data.hpp"
+#include "math/number_text.hpp"
 
 #include <grape/curve.hpp>
 #include <grape/error.hpp>
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <initializer_list>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
 namespace grape {
@@ -335,8 +334,7 @@ double parse_number(std::string_view whole, std::string_view text) {
     text = trim(text);
     if (!text.empty() && text.front() == '+') text.remove_prefix(1);
     double value = 0.0;
-    const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || result.ec != std::errc() || result.ptr != text.data() + text.size() || !std::isfinite(value))
+    if (!detail::parse_finite(text, value))
         throw Error("parse_curve: '" + std::string(text) + "' is not a finite number in '" + std::string(whole) + "'");
     return value;
 }

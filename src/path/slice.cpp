@@ -4,11 +4,11 @@
 #include <grape/path_query.hpp>
 
 #include "kinds.hpp"
+#include "math/number_text.hpp"
 #include "path_node.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -164,11 +164,7 @@ struct SvgWriter {
     std::string out;
     Vec2 pen{std::nan(""), std::nan("")};
 
-    void number(double v) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.17g", v == 0.0 ? 0.0 : v);  // no "-0"
-        out += buf;
-    }
+    void number(double v) { out += detail::general_text(v == 0.0 ? 0.0 : v, 17); }  // no "-0"
     void command(char c, std::initializer_list<Vec2> points) {
         if (!out.empty()) out += ' ';
         out += c;

@@ -8,13 +8,15 @@
 #include <grape/error.hpp>
 #include <grape/path.hpp>
 
-#include <charconv>
+#include "math/number_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
+#include <system_error>
 
 namespace grape::detail {
 namespace {
@@ -145,7 +147,7 @@ public:
         std::string_view lexeme = data_.substr(start, i - start);
         const std::string_view digits_only = lexeme.front() == '+' ? lexeme.substr(1) : lexeme;
         double value = 0.0;
-        const auto [end, ec] = std::from_chars(digits_only.data(), digits_only.data() + digits_only.size(), value);
+        const auto [end, ec] = parse_double(digits_only.data(), digits_only.data() + digits_only.size(), value);
         if (ec == std::errc::result_out_of_range) {
             // Underflow rounds to a signed zero, as a browser would; overflow is an error.
             if (!lexeme_is_tiny(lexeme)) fail_range("a number is too large", start);

@@ -1,21 +1,18 @@
 // Animated SVG (SMIL): written as text, since cairo's SVG surface only makes still pictures.
 #include <grape/render.hpp>
 
+#include "math/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <locale>
 #include <sstream>
 
 namespace grape {
 
 namespace {
 
-std::string number(double v) {
-    if (!std::isfinite(v)) v = 0.0;
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.2f", v);
-    return buffer;
-}
+std::string number(double v) { return detail::fixed_text(std::isfinite(v) ? v : 0.0, 2); }
 
 std::string rgb(Color c) {
     const auto channel = [](double v) { return static_cast<int>(std::lround(std::clamp(std::isfinite(v) ? v : 0.0, 0.0, 1.0) * 255.0)); };
@@ -42,6 +39,7 @@ std::string animated_svg(double width, double height, const Affine& transform, s
                          std::span<const Color> path_colors, std::span<const SvgMover> movers, double seconds,
                          std::string_view title) {
     std::ostringstream svg;
+    svg.imbue(std::locale::classic());  // numbers come as text; nothing the stream formats may group digits
     svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
         << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\"" << number(height)
         << "\" viewBox=\"0 0 " << number(width) << ' ' << number(height) << "\">\n";
@@ -59,11 +57,7 @@ std::string animated_svg(double width, double height, const Affine& transform, s
         }
         svg << "\"/>\n";
     }
-    const std::string dur = [&] {
-        char buffer[32];
-        std::snprintf(buffer, sizeof buffer, "%.6g", std::isfinite(seconds) && seconds > 0.0 ? seconds : 1.0);
-        return std::string(buffer) + "s";
-    }();
+    const std::string dur = detail::general_text(std::isfinite(seconds) && seconds > 0.0 ? seconds : 1.0, 6) + "s";
     for (const SvgMover& m : movers) {
         if (m.positions.empty()) continue;
         std::string xs, ys;

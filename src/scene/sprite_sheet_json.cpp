@@ -7,6 +7,7 @@
 
 #include "file_text.hpp"
 #include "json_pointer.hpp"
+#include "math/number_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -161,7 +162,7 @@ int repeat(const json& j, const std::string& pointer) {
         if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) {
             fail(pointer, "expected a count of passes, a whole number >= 0 (got \"" + s + "\")");
         }
-        v = std::stod(s);
+        detail::parse_finite(s, v);  // nine digits at most: always a finite number
     } else {
         v = number(j, pointer);
         if (v != std::floor(v) || v < 0 || v > 1e9) {

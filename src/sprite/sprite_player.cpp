@@ -1,19 +1,17 @@
 #include <grape/error.hpp>
 #include <grape/sprite.hpp>
 
+#include "math/number_text.hpp"
+
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 
 namespace grape {
 namespace {
 
-std::string number(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
-}
+// As a stream writes it (six significant digits), but in every locale.
+std::string number(double x) { return detail::general_text(x, 6); }
 
 // Frame counts up to 2^30 keep 2n − 2 in the 32-bit position (sums are formed in 64 bits).
 constexpr std::size_t max_frame_count = std::size_t{1} << 30;
