@@ -40,6 +40,19 @@ using grape::testing::expect_error;
 
 using Model = std::vector<bool>;
 
+// std::ranges::distance and std::ranges::next by hand: libc++ 14 has neither.
+template <class R>
+std::ptrdiff_t distance_of(R&& range) {
+    std::ptrdiff_t n = 0;
+    for (auto it = range.begin(); it != range.end(); ++it) ++n;
+    return n;
+}
+template <class I>
+I next_by(I it, int n) {
+    while (n-- > 0) ++it;
+    return it;
+}
+
 // The unused bits of the last word must be zero: that is what keeps them out of count,
 // all, ~, == and hash.
 bool tail_is_clear(const BitVector& v) {
@@ -220,15 +233,15 @@ TEST(BitVector, SetBitsIsAForwardRange) {
     static_assert(std::ranges::forward_range<BitVector::SetBits>);
     const BitVector v = BitVector::from_string("0110000000000000000000000000000000000000000000000000000000000000000000001");
     const auto bits = v.set_bits();
-    EXPECT_EQ(std::ranges::distance(bits), 3);
+    EXPECT_EQ(distance_of(bits), 3);
     auto it = bits.begin();
     const auto first = it++;  // post-increment returns the old position
     EXPECT_EQ(*first, 1u);
     EXPECT_EQ(*it, 2u);
     EXPECT_TRUE(first != it);
     EXPECT_TRUE(bits.begin() == first);
-    EXPECT_EQ(*std::ranges::next(bits.begin(), 2), 72u);
-    EXPECT_TRUE(std::ranges::next(bits.begin(), 3) == bits.end());
+    EXPECT_EQ(*next_by(bits.begin(), 2), 72u);
+    EXPECT_TRUE(next_by(bits.begin(), 3) == bits.end());
     EXPECT_TRUE(BitVector(500).set_bits().begin() == std::default_sentinel);  // all zero words
     EXPECT_TRUE(BitVector().set_bits().begin() == std::default_sentinel);     // no words at all
 }
@@ -763,7 +776,7 @@ TEST(BitVector, SetBitsOfATemporaryOwnTheBits) {
     static_assert(std::same_as<decltype((a & b).set_bits()), BitVector::OwnedSetBits>);
     static_assert(std::same_as<decltype(make_const().set_bits()), BitVector::OwnedSetBits>);
     static_assert(std::ranges::forward_range<BitVector::OwnedSetBits>);
-    EXPECT_EQ(std::ranges::distance(BitVector::from_string("0101").set_bits()), 2);
+    EXPECT_EQ(distance_of(BitVector::from_string("0101").set_bits()), 2);
 }
 
 TEST(BitVector, MoveLeavesTheSourceEmpty) {
