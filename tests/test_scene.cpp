@@ -908,7 +908,8 @@ Scene sprite_scene(const std::string& sprites, const std::string& extra = "") {
     return grape::load_scene_file(file);
 }
 
-std::string sheet_json() { return (sprite_data / "grape_sheet.json").string(); }
+// With '/' between folders: a Windows path's backslashes would be escapes inside the JSON.
+std::string sheet_json() { return (sprite_data / "grape_sheet.json").generic_string(); }
 
 TEST(SceneSprites, LoadPlayAndSaveBack) {
     const Scene scene = sprite_scene(R"([
@@ -953,6 +954,31 @@ TEST(SceneSprites, LoadPlayAndSaveBack) {
     grape::load_scene_sprite_sheets(relative, sprite_data);
     EXPECT_EQ(relative.sprites[0].clip_index, 2u);
     EXPECT_EQ(relative.sprites[0].sheet_path, sprite_data / "grape_sheet.json");
+}
+
+// File names are UTF-8 on every system (the scene's own, its sheets', the messages naming
+// them), and a sheet's folders may be separated by '/' or, as written on Windows, a backslash.
+TEST(SceneSprites, NonAsciiNamesAndEitherSeparator) {
+    const auto dir = own_folder();
+    std::filesystem::create_directories(dir / u8"réglages");
+    std::filesystem::copy_file(sprite_data / "grape_sheet.json", dir / u8"réglages" / u8"feuille_ü.json",
+                               std::filesystem::copy_options::overwrite_existing);
+    for (const std::string sheet : {"réglages/feuille_ü.json", "réglages\\\\feuille_ü.json"}) {
+        const Scene scene = grape::load_scene(R"({"sprites": [{"sheet": ")" + sheet + R"(", "clip": "hop", "at": [0, 0]}]})");
+        const auto file = dir / u8"dé_ü.json";
+        grape::save_scene_file(scene, file);
+        const Scene back = grape::load_scene_file(file);
+        ASSERT_EQ(back.sprites.size(), 1u);
+        EXPECT_EQ(back.sprites[0].sheet_file, scene.sprites[0].sheet_file);
+        EXPECT_EQ(back.sprites[0].clip_index, 2u);
+        EXPECT_EQ(back.sprites[0].sheet_path, dir / u8"réglages" / u8"feuille_ü.json");
+    }
+    try {
+        (void)grape::load_scene_file(dir / u8"absent_é.json");
+        ADD_FAILURE();
+    } catch (const grape::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("absent_é.json: no such file"), std::string::npos) << e.what();
+    }
 }
 
 TEST(SceneSprites, ErrorsNameThePointer) {

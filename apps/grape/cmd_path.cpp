@@ -9,6 +9,8 @@
 
 #include <seed_paths.hpp>
 
+#include "utf8_path.hpp"
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -61,9 +63,10 @@ std::string read_data(const char* command, const DataSource& source) {
     }
     if (source.file.empty()) return source.argument;
     std::error_code ec;
-    if (std::filesystem::is_directory(source.file, ec))
+    const std::filesystem::path file = detail::path_from_utf8(source.file);
+    if (std::filesystem::is_directory(file, ec))
         throw Error(who + ": --data-file " + source.file + ": is a folder, not a file of SVG path data");
-    std::ifstream in(source.file, std::ios::binary);
+    std::ifstream in(file, std::ios::binary);
     if (!in) throw Error(who + ": --data-file " + source.file + ": cannot be opened (" + std::strerror(errno) + ")");
     std::string text = read_all(in);
     if (in.bad()) throw Error(who + ": --data-file " + source.file + ": cannot be read");

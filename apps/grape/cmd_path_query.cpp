@@ -8,6 +8,8 @@
 #include <grape/path.hpp>
 #include <grape/path_query.hpp>
 
+#include "utf8_path.hpp"
+
 #include <array>
 #include <fstream>
 #include <initializer_list>
@@ -128,7 +130,7 @@ void register_path_query_commands(CLI::App& path) {
         if (fit_file->empty() || *fit_file == "-") {
             points = read_points(std::cin, "stdin");
         } else {
-            std::ifstream in(*fit_file);
+            std::ifstream in(detail::path_from_utf8(*fit_file));  // text: CRLF lines read as LF on Windows
             if (!in) throw Error("path fit: cannot read " + *fit_file);
             points = read_points(in, *fit_file);
         }

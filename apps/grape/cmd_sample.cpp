@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "utf8_path.hpp"
+
 #include <iostream>
 #include <memory>
 #include <string>
@@ -42,7 +44,7 @@ void run_sample(const SampleOptions& o) {
     for (const std::string& text : o.at) times.push_back(parse_finite("sample: --at", text));
     if (times.empty()) throw Error("sample: --at needs at least one time");
     if (times.size() > max_times) throw Error("sample: --at takes at most 1000000 times (got " + std::to_string(times.size()) + ")");
-    const Scene scene = load_scene_file(o.scene);
+    const Scene scene = load_scene_file(detail::path_from_utf8(o.scene));
     // The named animations, each name once (a JSON object holds a key once).
     std::vector<std::size_t> named;
     for (std::size_t i = 0; i < scene.animations.size(); ++i) {

@@ -11,6 +11,7 @@
 #include <seed_dynamics.hpp>
 
 #include "atomic_file.hpp"
+#include "utf8_path.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -75,7 +76,7 @@ void run_simulate(const SimulateOptions& o) {
 
     std::optional<detail::AtomicFile> csv;
     if (!o.csv.empty()) {
-        csv.emplace(o.csv);
+        csv.emplace(detail::path_from_utf8(o.csv));
         csv->write("t,x,y,vx,vy,residual,energy\n");
     }
     auto write_row = [&csv](const scenes::ParabolaState& s) {

@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "utf8_path.hpp"
+
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -125,7 +127,7 @@ void register_sprite_commands([[maybe_unused]] CLI::App& app) {
     auto info_file = std::make_shared<std::string>();
     auto* info_cmd = sprite->add_subcommand("info", "Print a sheet's frames, clips (with the frames they show) and durations as JSON");
     info_cmd->add_option("SHEET", *info_file, "Sheet data: Aseprite or TexturePacker JSON, hash or array layout")->required();
-    info_cmd->callback([info_file] { std::cout << info(load_sprite_sheet_file(*info_file)).dump(1) << '\n'; });
+    info_cmd->callback([info_file] { std::cout << info(load_sprite_sheet_file(detail::path_from_utf8(*info_file))).dump(1) << '\n'; });
 
     struct PlayArgs {
         std::string file, clip, rate = "1", fps = "60", frames = "60";
@@ -146,7 +148,7 @@ void register_sprite_commands([[maybe_unused]] CLI::App& app) {
         if (n != std::floor(n) || n < 0 || n > 1e7) {
             throw Error("sprite play: --frames must be a whole number in [0, 10000000] (got " + args->frames + ")");
         }
-        SpriteSheet sheet = load_sprite_sheet_file(args->file);
+        SpriteSheet sheet = load_sprite_sheet_file(detail::path_from_utf8(args->file));
         if (args->clip.empty()) {
             if (!sheet.clips().empty()) {
                 throw Error("sprite play: --clip is required for a sheet with tags (clip names: see `grape sprite info`)");

@@ -4,6 +4,7 @@
 #include <grape/error.hpp>
 
 #include "atomic_file.hpp"
+#include "utf8_path.hpp"
 
 #include <iostream>
 
@@ -15,12 +16,15 @@ void register_demo_command(CLI::App& app) {
     demo->add_option("--out", *dir, "Folder for the files the demo writes")->capture_default_str();
     demo->callback([dir] {
         if (dir->empty()) throw Error("demo: --out must name a folder (got an empty name)");
+        const std::filesystem::path folder = detail::path_from_utf8(*dir);
         std::error_code ec;
-        if (std::filesystem::exists(*dir, ec) && !std::filesystem::is_directory(*dir, ec))
+        if (std::filesystem::exists(folder, ec) && !std::filesystem::is_directory(folder, ec))
             throw Error("demo: --out " + *dir + ": it exists and is not a folder");
-        std::filesystem::create_directories(*dir, ec);
-        if (ec) throw Error("demo: --out " + *dir + ": cannot create the folder (" + detail::write_failure_reason(ec.value(), *dir) + ")");
-        const DemoContext context{std::cout, *dir};
+        std::filesystem::create_directories(folder, ec);
+        if (ec)
+            throw Error("demo: --out " + *dir + ": cannot create the folder (" +
+                        detail::write_failure_reason(ec.default_error_condition().value(), folder) + ")");
+        const DemoContext context{std::cout, folder};
         demo_paths(context);
         demo_curves(context);
 #ifdef GRAPE_TOOL_DYNAMICS

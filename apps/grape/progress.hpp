@@ -2,7 +2,17 @@
 // the tests see nothing) and only once the run has taken more than a second.
 #pragma once
 
+#ifdef _WIN32
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#include <windows.h>
+#else
 #include <unistd.h>
+#endif
 
 #include <chrono>
 #include <cstdio>
@@ -16,7 +26,7 @@ public:
     /// WHAT names the run and its unit ("simulate: step"); TOTAL is the number of units (steps, frames) it will do;
     /// the clock is read every STRIDE updates (a power of two: 1 for slow units such as frames).
     Progress(std::string what, double total, unsigned stride = 1024)
-        : what_(std::move(what)), total_(total), mask_(stride - 1), shown_(isatty(STDERR_FILENO) == 1) {}
+        : what_(std::move(what)), total_(total), mask_(stride - 1), shown_(stderr_is_terminal()) {}
     ~Progress() { done(); }
     Progress(const Progress&) = delete;
     Progress& operator=(const Progress&) = delete;
@@ -38,6 +48,16 @@ public:
     }
 
 private:
+    static bool stderr_is_terminal() noexcept {
+#ifdef _WIN32
+        // A console, not merely a character device: _isatty is true for NUL too.
+        DWORD mode = 0;
+        return ::GetConsoleMode(::GetStdHandle(STD_ERROR_HANDLE), &mode) != 0;
+#else
+        return isatty(STDERR_FILENO) == 1;
+#endif
+    }
+
     std::string what_;
     double total_;
     unsigned mask_;

@@ -2,13 +2,29 @@
 
 #include <grape/error.hpp>
 
+#include "utf8_path.hpp"
+
+#ifdef _WIN32
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#include <windows.h>
+#include <fcntl.h>
+#include <io.h>
+#include <sys/stat.h>
+#else
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#endif
 
 #include <atomic>
 #include <cctype>
 #include <cerrno>
+#include <climits>
 #include <csignal>
 #include <mutex>
 #include <system_error>
@@ -23,13 +39,96 @@ namespace grape::detail {
 // reads `path` only while `active`; entries are rewritten only while inactive, on the one
 // thread that writes files (see remove_files_on_interrupt).
 struct CleanupEntry {
-    std::string path;
+    std::filesystem::path::string_type path;  // native: removed without converting in the handler
     std::atomic<bool> active{false};
     CleanupEntry* next = nullptr;       // registry order, fixed once published
     CleanupEntry* next_free = nullptr;  // free list, guarded by free_mutex
 };
 
 namespace {
+
+// The system calls behind the interface: POSIX, or the Windows CRT and Win32 (whose file
+// names are UTF-16 and whose rename does not replace an existing file).
+#ifdef _WIN32
+int remove_native(const wchar_t* file) noexcept { return ::_wunlink(file); }
+
+int open_for_writing(const std::filesystem::path& file) noexcept {
+    return ::_wopen(file.c_str(), _O_WRONLY | _O_CREAT | _O_TRUNC | _O_BINARY | _O_NOINHERIT, _S_IREAD | _S_IWRITE);
+}
+
+int write_some(int fd, const char* data, std::size_t size) noexcept {
+    return ::_write(fd, data, static_cast<unsigned>(size < INT_MAX ? size : INT_MAX));
+}
+
+int close_file(int fd) noexcept { return ::_close(fd); }
+
+// The errno closest to a Win32 error, so that messages read as on POSIX.
+int errno_from_win32(DWORD error) noexcept {
+    switch (error) {
+        case ERROR_FILE_NOT_FOUND:
+        case ERROR_PATH_NOT_FOUND:
+        case ERROR_INVALID_DRIVE:
+            return ENOENT;
+        case ERROR_ACCESS_DENIED:
+        case ERROR_SHARING_VIOLATION:
+        case ERROR_LOCK_VIOLATION:
+        case ERROR_WRITE_PROTECT:
+            return EACCES;
+        case ERROR_DISK_FULL:
+        case ERROR_HANDLE_DISK_FULL:
+            return ENOSPC;
+        case ERROR_NOT_ENOUGH_MEMORY:
+        case ERROR_OUTOFMEMORY:
+            return ENOMEM;
+        case ERROR_FILENAME_EXCED_RANGE:
+            return ENAMETOOLONG;
+        default:
+            return EIO;
+    }
+}
+
+// 0, or the errno of the failure.
+int sync_file(int fd) noexcept {
+    const auto handle = reinterpret_cast<HANDLE>(::_get_osfhandle(fd));
+    if (handle == INVALID_HANDLE_VALUE) return EBADF;
+    return ::FlushFileBuffers(handle) ? 0 : errno_from_win32(::GetLastError());
+}
+
+// 0, or the errno of the failure. WRITE_THROUGH: the rename is on the disk when it returns.
+int replace_file(const std::filesystem::path& from, const std::filesystem::path& to) noexcept {
+    if (::MoveFileExW(from.c_str(), to.c_str(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH)) return 0;
+    return errno_from_win32(::GetLastError());
+}
+
+void sync_folder(const std::filesystem::path&) noexcept {}  // MOVEFILE_WRITE_THROUGH did it
+#else
+int remove_native(const char* file) noexcept { return ::unlink(file); }
+
+int open_for_writing(const std::filesystem::path& file) noexcept {
+    return ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+}
+
+ssize_t write_some(int fd, const char* data, std::size_t size) noexcept { return ::write(fd, data, size); }
+
+int close_file(int fd) noexcept { return ::close(fd); }
+
+// 0, or the errno of the failure; filesystems without fsync (EINVAL) are accepted.
+int sync_file(int fd) noexcept { return ::fsync(fd) != 0 && errno != EINVAL ? errno : 0; }
+
+// 0, or the errno of the failure.
+int replace_file(const std::filesystem::path& from, const std::filesystem::path& to) noexcept {
+    return ::rename(from.c_str(), to.c_str()) != 0 ? errno : 0;
+}
+
+// Makes a rename durable (best effort: not every filesystem syncs folders).
+void sync_folder(const std::filesystem::path& folder) noexcept {
+    const int dir = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir >= 0) {
+        ::fsync(dir);
+        ::close(dir);
+    }
+}
+#endif
 
 std::atomic<CleanupEntry*> registry{nullptr};
 std::atomic<bool> enabled{false};
@@ -45,10 +144,10 @@ CleanupEntry* register_path(const std::filesystem::path& path) {
     CleanupEntry* e = free_list;
     if (e) {
         free_list = e->next_free;
-        e->path = path.string();
+        e->path = path.native();
     } else {
         e = new CleanupEntry;
-        e->path = path.string();
+        e->path = path.native();
         e->next = registry.load(std::memory_order_relaxed);
         registry.store(e, std::memory_order_release);
     }
@@ -66,9 +165,10 @@ void unregister(CleanupEntry* e) noexcept {
 
 extern "C" void remove_registered_files(int signal_number) {
     // Only async-signal-safe calls: unlink, then the default action by re-raising (the
-    // handler was installed with SA_RESETHAND, so the pending signal ends the process).
+    // handler was installed with SA_RESETHAND, or by signal() on Windows, which resets it
+    // too, so the pending signal ends the process).
     for (CleanupEntry* e = registry.load(std::memory_order_acquire); e; e = e->next)
-        if (e->active.load(std::memory_order_acquire)) ::unlink(e->path.c_str());
+        if (e->active.load(std::memory_order_acquire)) remove_native(e->path.c_str());
     ::raise(signal_number);
 }
 
@@ -78,12 +178,18 @@ constexpr std::size_t buffer_size = 64 * 1024;
 
 void remove_files_on_interrupt() {
     enabled.store(true, std::memory_order_release);
+#ifdef _WIN32
+    // Ctrl-C arrives as SIGINT (on a thread of its own); SIGTERM only from raise().
+    std::signal(SIGINT, remove_registered_files);
+    std::signal(SIGTERM, remove_registered_files);
+#else
     struct sigaction action {};
     action.sa_handler = remove_registered_files;
     action.sa_flags = SA_RESETHAND;
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+#endif
 }
 
 // ----------------------------------------------------------------------------- messages
@@ -92,7 +198,7 @@ std::string write_failure_reason(int err, const std::filesystem::path& file) {
     std::error_code ec;
     const auto parent = file.parent_path();
     if ((err == ENOENT || err == ENOTDIR) && !parent.empty() && !std::filesystem::is_directory(parent, ec))
-        return "folder " + parent.string() + " does not exist";
+        return "folder " + utf8_string(parent) + " does not exist";
     if (err == EISDIR || std::filesystem::is_directory(file, ec)) return "it is a folder";
     std::string reason = std::error_code(err, std::generic_category()).message();
     // "No space left on device" → "no space left on device"; keep "I/O error" as it is.
@@ -108,14 +214,14 @@ AtomicFile::AtomicFile(std::filesystem::path file) : file_(std::move(file)) {
     temporary_ = file_;
     temporary_ += ".partial";
     std::error_code ec;
-    if (std::filesystem::is_directory(file_, ec)) throw Error("cannot write " + file_.string() + ": it is a folder");
+    if (std::filesystem::is_directory(file_, ec)) throw Error("cannot write " + utf8_string(file_) + ": it is a folder");
     entry_ = register_path(temporary_);  // before the file exists, so no interruption misses it
-    fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    fd_ = open_for_writing(temporary_);
     if (fd_ < 0) {
         const int err = errno;
         unregister(entry_);
         entry_ = nullptr;
-        throw Error("cannot write " + file_.string() + ": " + write_failure_reason(err, file_));
+        throw Error("cannot write " + utf8_string(file_) + ": " + write_failure_reason(err, file_));
     }
     buffer_.reserve(buffer_size);
 }
@@ -124,9 +230,9 @@ AtomicFile::~AtomicFile() { discard(); }
 
 void AtomicFile::discard() noexcept {
     if (fd_ >= 0) {
-        ::close(fd_);
+        close_file(fd_);
         fd_ = -1;
-        ::unlink(temporary_.c_str());
+        remove_native(temporary_.c_str());
     }
     unregister(entry_);
     entry_ = nullptr;
@@ -134,7 +240,7 @@ void AtomicFile::discard() noexcept {
 
 bool AtomicFile::write_all(const char* p, std::size_t left) noexcept {
     while (left > 0) {
-        const ssize_t n = ::write(fd_, p, left);
+        const auto n = write_some(fd_, p, left);
         if (n < 0) {
             if (errno == EINTR) continue;
             errno_ = errno;
@@ -167,39 +273,33 @@ void AtomicFile::write(std::string_view bytes) {
 void AtomicFile::fail(std::string_view reason) {
     const int err = errno_ ? errno_ : EIO;
     discard();
-    throw Error("cannot write " + file_.string() + ": " +
+    throw Error("cannot write " + utf8_string(file_) + ": " +
                 (reason.empty() ? write_failure_reason(err, file_) : std::string(reason)));
 }
 
 void AtomicFile::commit() {
-    if (fd_ < 0) throw Error("cannot write " + file_.string() + ": already committed or discarded");
+    if (fd_ < 0) throw Error("cannot write " + utf8_string(file_) + ": already committed or discarded");
     if (errno_ != 0 || !flush_buffer()) fail();
     // The data reaches the disk before the rename makes it visible: after a crash the file
-    // is the old one or the whole new one. Filesystems without fsync (EINVAL) are accepted.
-    if (::fsync(fd_) != 0 && errno != EINVAL) {
-        errno_ = errno;
+    // is the old one or the whole new one.
+    if (const int err = sync_file(fd_)) {
+        errno_ = err;
         fail();
     }
     const int fd = std::exchange(fd_, -1);
-    if (::close(fd) != 0 && errno != EINTR) {  // NFS reports deferred write errors here
+    if (close_file(fd) != 0 && errno != EINTR) {  // NFS reports deferred write errors here
         errno_ = errno;
-        ::unlink(temporary_.c_str());
+        remove_native(temporary_.c_str());
         fail();
     }
-    if (::rename(temporary_.c_str(), file_.c_str()) != 0) {
-        errno_ = errno;
-        ::unlink(temporary_.c_str());
+    if (const int err = replace_file(temporary_, file_)) {
+        errno_ = err;
+        remove_native(temporary_.c_str());
         fail();
     }
     unregister(entry_);
     entry_ = nullptr;
-    // Make the rename itself durable (best effort: not every filesystem syncs folders).
-    const auto parent = file_.parent_path();
-    const int dir = ::open(parent.empty() ? "." : parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (dir >= 0) {
-        ::fsync(dir);
-        ::close(dir);
-    }
+    sync_folder(file_.parent_path());
 }
 
 void write_file_atomically(const std::filesystem::path& file, std::string_view bytes) {

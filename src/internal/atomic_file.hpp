@@ -1,7 +1,7 @@
 // Files written in full or not at all, for the render and scene modules and the grape tool
 // (internal: not installed). Bytes go to a sibling temporary FILE.partial; commit() flushes
-// them, fsyncs, and renames the temporary over FILE, so a reader sees the old file or the
-// whole new one. Every failure (a full disk, a missing folder, a folder in the way) throws
+// them, fsyncs, and renames the temporary over FILE (on Windows: FlushFileBuffers, then
+// MoveFileExW replacing FILE), so a reader sees the old file or the whole new one. Every failure (a full disk, a missing folder, a folder in the way) throws
 // grape::Error "cannot write FILE: REASON" and leaves neither FILE nor the temporary behind.
 #pragma once
 

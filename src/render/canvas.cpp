@@ -118,6 +118,13 @@ cairo_status_t write_to_file(void* closure, const unsigned char* data, unsigned 
     return out->append({reinterpret_cast<const char*>(data), length}) ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
+// cairo's stream callback for reading: the next LENGTH bytes of a std::ifstream.
+cairo_status_t read_from_file(void* closure, unsigned char* data, unsigned int length) {
+    auto* in = static_cast<std::ifstream*>(closure);
+    in->read(reinterpret_cast<char*>(data), static_cast<std::streamsize>(length));
+    return in->gcount() == static_cast<std::streamsize>(length) ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_READ_ERROR;
+}
+
 // After cairo is done with the file: a failed write is reported by its errno's reason,
 // any other cairo failure (e.g. out of memory) by cairo's own words.
 void finish_file(detail::AtomicFile& out, cairo_status_t status) {
@@ -168,7 +175,10 @@ Image::Image(int width, int height, Color fill) : width_(width), height_(height)
 }
 
 Image Image::load_png(const std::filesystem::path& file) {
-    cairo_surface_t* s = cairo_image_surface_create_from_png(file.c_str());
+    // Read through a stream: cairo's file functions take a narrow name, which on Windows
+    // cannot hold every path.
+    std::ifstream in(file, std::ios::binary);
+    cairo_surface_t* s = cairo_image_surface_create_from_png_stream(read_from_file, &in);
     const cairo_status_t status = cairo_surface_status(s);
     if (status != CAIRO_STATUS_SUCCESS) {
         cairo_surface_destroy(s);

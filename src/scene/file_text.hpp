@@ -4,6 +4,8 @@
 
 #include <grape/error.hpp>
 
+#include "utf8_path.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,16 +19,16 @@ namespace grape::detail {
 inline std::string read_file_text(const std::filesystem::path& file, const std::string& what) {
     std::error_code folder_ec;
     if (std::filesystem::is_directory(file, folder_ec))
-        throw Error("cannot read " + file.string() + ": it is a folder, not " + what);
+        throw Error("cannot read " + utf8_string(file) + ": it is a folder, not " + what);
     std::ifstream in(file, std::ios::binary);
     if (!in) {
         std::error_code ec;
         const bool exists = std::filesystem::exists(file, ec);
-        throw Error("cannot read " + file.string() + ": " + (exists ? "permission denied or not a file" : "no such file"));
+        throw Error("cannot read " + utf8_string(file) + ": " + (exists ? "permission denied or not a file" : "no such file"));
     }
     std::stringstream buffer;
     buffer << in.rdbuf();
-    if (in.bad()) throw Error("cannot read " + file.string() + ": read error");
+    if (in.bad()) throw Error("cannot read " + utf8_string(file) + ": read error");
     return buffer.str();
 }
 

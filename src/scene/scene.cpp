@@ -239,7 +239,7 @@ Scene load_scene_file(const std::filesystem::path& file) {
         load_scene_sprite_sheets(scene, file.parent_path());
         return scene;
     } catch (const Error& e) {
-        throw Error(file.string() + ": " + e.what());
+        throw Error(detail::utf8_string(file) + ": " + e.what());
     }
 }
 

@@ -6,6 +6,10 @@
 #include <grape/error.hpp>
 #include <grape/sprite_sheet_json.hpp>
 
+#include "utf8_path.hpp"
+
+#include <algorithm>
+
 #include <cmath>
 #include <string>
 
@@ -95,8 +99,11 @@ void load_scene_sprite_sheets(Scene& scene, const std::filesystem::path& folder)
     for (std::size_t i = 0; i < scene.sprites.size(); ++i) {
         SceneSprite& s = scene.sprites[i];
         const std::string p = child("/sprites", i);
-        const std::filesystem::path file = std::filesystem::path(s.sheet_file).is_absolute() ? std::filesystem::path(s.sheet_file)
-                                                                                            : folder / s.sheet_file;
+        // UTF-8, with "/" or (as Windows writes them) backslashes between folders, on every system.
+        std::string name = s.sheet_file;
+        std::replace(name.begin(), name.end(), '\\', '/');
+        const std::filesystem::path sheet_file = detail::path_from_utf8(name);
+        const std::filesystem::path file = sheet_file.is_absolute() ? sheet_file : folder / sheet_file;
         SpriteSheet sheet = [&] {
             try {
                 return load_sprite_sheet_file(file);

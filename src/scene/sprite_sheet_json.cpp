@@ -294,12 +294,12 @@ SpriteSheet load_sprite_sheet_file(const std::filesystem::path& file) {
     try {
         return load_sprite_sheet(text);
     } catch (const Error& e) {
-        throw Error(file.string() + ": " + e.what());
+        throw Error(detail::utf8_string(file) + ": " + e.what());
     }
 }
 
 std::filesystem::path sprite_sheet_image_path(const SpriteSheet& sheet, const std::filesystem::path& json_file) {
-    return json_file.parent_path() / sheet.image();
+    return json_file.parent_path() / detail::path_from_utf8(sheet.image());
 }
 
 std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) {
