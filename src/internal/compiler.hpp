@@ -10,6 +10,8 @@
 //   GRAPE_VECTOR_EXTENSIONS 1 where `T __attribute__((vector_size(N)))` works (GCC, clang)
 //   prefetch_read(p), prefetch_write(p)  hints, no effect on results
 //   cpu_relax()            a spin-wait's pause
+//   GRAPE_DEFAULT_VISIBILITY a symbol a runtime looks up by name (sanitizer hooks), seen
+//                          from outside although grape builds with hidden visibility
 // Not used anywhere: __int128, GNU statement expressions, #pragma GCC, builtins outside this
 // header. Public headers use none of these.
 #pragma once
@@ -26,6 +28,12 @@
 #define GRAPE_FLATTEN
 #define GRAPE_ALWAYS_INLINE inline
 #define GRAPE_VECTOR_EXTENSIONS 0
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define GRAPE_DEFAULT_VISIBILITY __attribute__((visibility("default")))
+#else
+#define GRAPE_DEFAULT_VISIBILITY
 #endif
 
 #if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))

@@ -20,13 +20,15 @@
 #include <string>
 #include <system_error>
 
+#include "internal/compiler.hpp"
+
 #if defined(__SANITIZE_ADDRESS__)
 // Text goes through fontconfig and cairo's font caches, which live until the process ends
 // and are freed by no one (cairo_debug_reset_static_data asserts if any face is still
 // referenced). The leak checker would report them for every program that draws a label.
 // Their stacks end inside these libraries (built without frame pointers), so nothing of
-// grape's own is hidden by naming them.
-extern "C" const char* __lsan_default_suppressions() {
+// grape's own is hidden by naming them. Visible: the runtime finds it by name.
+extern "C" GRAPE_DEFAULT_VISIBILITY const char* __lsan_default_suppressions() {
     return "leak:libfontconfig.so\nleak:libcairo.so\nleak:libpixman-1.so\n";
 }
 #endif
