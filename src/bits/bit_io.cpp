@@ -21,7 +21,8 @@ using Word = BitVector::Word;
 constexpr std::size_t header_bytes = 16;
 constexpr unsigned char magic[4] = {'G', 'R', 'B', 'V'};
 constexpr std::uint32_t format_version = 1;
-constexpr std::uint64_t max_bits = std::numeric_limits<std::size_t>::max() - BitVector::word_bits;
+// resize()'s bound (bit_edit.cpp): a stored size above it could not be read back.
+constexpr std::uint64_t max_read_bits = std::numeric_limits<std::size_t>::max() - BitVector::word_bits;
 
 void put_le(std::byte* p, std::uint64_t v, std::size_t bytes) noexcept {
     for (std::size_t b = 0; b < bytes; ++b) p[b] = static_cast<std::byte>((v >> (8 * b)) & 0xFF);
@@ -69,7 +70,7 @@ std::size_t parse_header(const std::byte* h, const char* operation) {
         throw Error(where + "format version " + std::to_string(version) + " is not supported (expected 1)");
     }
     const std::uint64_t n = get_le(h + 8, 8);
-    if (n > max_bits) throw Error(where + "size " + std::to_string(n) + " bits is too large");
+    if (n > max_read_bits) throw Error(where + "size " + std::to_string(n) + " bits is too large");
     return static_cast<std::size_t>(n);
 }
 

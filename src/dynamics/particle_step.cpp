@@ -13,11 +13,9 @@ namespace {
 using detail::ConstraintRecord;
 using detail::number_text;
 
-bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
-
 bool all_finite(std::span<const Vec2> points) noexcept {
     for (const Vec2& p : points)
-        if (!finite(p)) return false;
+        if (!is_finite(p)) return false;
     return true;
 }
 

@@ -21,8 +21,6 @@ using detail::Spring;
 using detail::UserForce;
 using detail::number_text;
 
-bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
-
 void validate(const SubstepDef& substeps) {
     if (!(substeps.omega_h > 0.0) || !std::isfinite(substeps.omega_h))
         throw Error("SubstepDef: omega_h must be positive and finite (got " + number_text(substeps.omega_h) + ")");
@@ -106,9 +104,9 @@ ParticleSystem::ParticleSystem(ParticleSystem&&) noexcept = default;
 ParticleSystem& ParticleSystem::operator=(ParticleSystem&&) noexcept = default;
 
 ParticleId ParticleSystem::create_particle(const ParticleDef& def) {
-    if (!finite(def.position))
+    if (!is_finite(def.position))
         throw Error("create_particle: position must be finite (got " + number_text(def.position.x) + ", " + number_text(def.position.y) + ")");
-    if (!finite(def.velocity))
+    if (!is_finite(def.velocity))
         throw Error("create_particle: velocity must be finite (got " + number_text(def.velocity.x) + ", " + number_text(def.velocity.y) + ")");
     if (!(def.mass > 0.0))
         throw Error("create_particle: mass must be positive, or infinity to pin (got " + number_text(def.mass) + ")");
@@ -143,25 +141,25 @@ double ParticleSystem::mass(ParticleId id) const {
 
 void ParticleSystem::set_position(ParticleId id, Vec2 position) {
     const auto i = checked(id, "set_position");
-    if (!finite(position)) throw Error("set_position: position must be finite");
+    if (!is_finite(position)) throw Error("set_position: position must be finite");
     state_->positions[i] = position;
     state_->solver.factor_current = false;
 }
 
 void ParticleSystem::set_velocity(ParticleId id, Vec2 velocity) {
     const auto i = checked(id, "set_velocity");
-    if (!finite(velocity)) throw Error("set_velocity: velocity must be finite");
+    if (!is_finite(velocity)) throw Error("set_velocity: velocity must be finite");
     if (state_->inverse_masses[i] > 0.0) state_->velocities[i] = velocity;
 }
 
 void ParticleSystem::exert_force(ParticleId id, Vec2 force) {
     const auto i = checked(id, "exert_force");
-    if (!finite(force)) throw Error("exert_force: force must be finite (got " + number_text(force.x) + ", " + number_text(force.y) + ")");
+    if (!is_finite(force)) throw Error("exert_force: force must be finite (got " + number_text(force.x) + ", " + number_text(force.y) + ")");
     state_->exerted[i] += force;
 }
 
 void ParticleSystem::add_gravity(Vec2 g) {
-    if (!finite(g)) throw Error("add_gravity: g must be finite (got " + number_text(g.x) + ", " + number_text(g.y) + ")");
+    if (!is_finite(g)) throw Error("add_gravity: g must be finite (got " + number_text(g.x) + ", " + number_text(g.y) + ")");
     state_->generators.push_back({GeneratorKind::gravity, static_cast<std::uint32_t>(state_->gravities.size())});
     state_->gravities.push_back({g});
 }
@@ -217,7 +215,7 @@ ConstraintId ParticleSystem::create_distance(ParticleId a, ParticleId b) {
 
 ConstraintId ParticleSystem::create_anchor(ParticleId a, Vec2 anchor, double length) {
     const auto ia = checked(a, "create_anchor");
-    if (!finite(anchor)) throw Error("create_anchor: anchor must be finite (got " + number_text(anchor.x) + ", " + number_text(anchor.y) + ")");
+    if (!is_finite(anchor)) throw Error("create_anchor: anchor must be finite (got " + number_text(anchor.x) + ", " + number_text(anchor.y) + ")");
     if (!(length > 0.0) || !std::isfinite(length))
         throw Error("create_anchor: length must be positive and finite (got " + number_text(length) + ")");
     if (state_->positions[ia] == anchor)
@@ -228,7 +226,7 @@ ConstraintId ParticleSystem::create_anchor(ParticleId a, Vec2 anchor, double len
 
 ConstraintId ParticleSystem::create_fixed_point(ParticleId a, Vec2 point) {
     const auto ia = checked(a, "create_fixed_point");
-    if (!finite(point)) throw Error("create_fixed_point: point must be finite (got " + number_text(point.x) + ", " + number_text(point.y) + ")");
+    if (!is_finite(point)) throw Error("create_fixed_point: point must be finite (got " + number_text(point.x) + ", " + number_text(point.y) + ")");
     return push_constraint(*state_, {ConstraintKind::fixed_point, ia, 0, point, 0.0, 0});
 }
 

@@ -17,7 +17,6 @@
 namespace grape::detail {
 
 namespace {
-bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
 // The chord iteration is kept while each pass shrinks the worst distance at least this much;
 // slower than that (rods turning by more than ~0.25 rad per step), a fresh factor pays off.
 constexpr double chord_rate = 0.25;
@@ -122,7 +121,7 @@ bool SolverWorkspace::rattle_step(double t, std::span<Vec2> x, std::span<Vec2> v
     bool ok = true;  // finite x and v here, with a finite μ (solve_factored's guarantee), stay finite
     for (std::size_t p = 0; p < n; ++p) {
         v[p] += (0.5 * h * w[p]) * f[p];
-        ok = ok && finite(x[p]) && finite(v[p]);
+        ok = ok && is_finite(x[p]) && is_finite(v[p]);
     }
     if (rows > 0) {
         evaluate_rows(x, v);

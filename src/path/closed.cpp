@@ -11,12 +11,12 @@ namespace grape {
 
 namespace {
 
-[[noreturn]] void fail(const char* who, const std::string& what) { throw Error(std::string(who) + ": " + what); }
+[[noreturn]] void loop_fail(const char* who, const std::string& what) { throw Error(std::string(who) + ": " + what); }
 
 std::vector<Vec2> loop_points(const char* who, std::span<const Vec2> points) {
-    if (points.size() < 3) fail(who, "points needs at least 3 points for a loop (got " + std::to_string(points.size()) + ")");
+    if (points.size() < 3) loop_fail(who, "points needs at least 3 points for a loop (got " + std::to_string(points.size()) + ")");
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (!is_finite(points[i])) fail(who, "points[" + std::to_string(i) + "] must be finite");
+        if (!is_finite(points[i])) loop_fail(who, "points[" + std::to_string(i) + "] must be finite");
     }
     std::vector<Vec2> loop(points.begin(), points.end());
     loop.push_back(points.front());
@@ -39,7 +39,7 @@ Path closed_hermite_spline(std::span<const Vec2> points, std::span<const Vec2> t
     const char* who = "closed_hermite_spline";
     const std::vector<Vec2> loop = loop_points(who, points);
     if (tangents.size() != points.size()) {
-        fail(who, "tangents needs one tangent per point (got " + std::to_string(tangents.size()) + " tangents for " +
+        loop_fail(who, "tangents needs one tangent per point (got " + std::to_string(tangents.size()) + " tangents for " +
                       std::to_string(points.size()) + " points)");
     }
     std::vector<Vec2> t(tangents.begin(), tangents.end());
@@ -50,7 +50,7 @@ Path closed_hermite_spline(std::span<const Vec2> points, std::span<const Vec2> t
 Path closed_catmull_rom_spline(std::span<const Vec2> points, CatmullRom type) {
     const char* who = "closed_catmull_rom_spline";
     if (type != CatmullRom::uniform && type != CatmullRom::centripetal && type != CatmullRom::chordal) {
-        fail(who, "type must be uniform, centripetal or chordal (got " + std::to_string(static_cast<int>(type)) + ")");
+        loop_fail(who, "type must be uniform, centripetal or chordal (got " + std::to_string(static_cast<int>(type)) + ")");
     }
     const std::vector<Vec2> loop = loop_points(who, points);
     const std::size_t n = points.size();

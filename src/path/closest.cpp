@@ -5,6 +5,7 @@
 #include <grape/error.hpp>
 #include <grape/path_query.hpp>
 
+#include "geometry.hpp"
 #include "kinds.hpp"
 #include "path_node.hpp"
 
@@ -43,11 +44,6 @@ double distance_to_segment(Vec2 q, Vec2 a, Vec2 b) noexcept {
     return gap(q, a + ab * t);
 }
 
-// A parameter just inside [a, b) from the right: where b is a break, d1(b) is the next piece's.
-double inside_right(double a, double b) noexcept {
-    const double v = b - (b - a) * 1e-12;
-    return v < b ? v : std::nextafter(b, a);
-}
 
 // From a node's parameter to the search's: u = offset + scale·v, scale > 0 (order kept).
 struct Map {

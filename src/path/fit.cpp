@@ -114,23 +114,23 @@ struct Fitter {
     }
 };
 
-[[noreturn]] void fail(const std::string& what) { throw Error("fit_path: " + what); }
+[[noreturn]] void fit_fail(const std::string& what) { throw Error("fit_path: " + what); }
 
 }  // namespace
 
 ComplexPath fit_path(std::span<const Vec2> points, const FitPathDef& def) {
     if (!(def.tolerance > 0.0) || !std::isfinite(def.tolerance)) {
-        fail("tolerance must be positive and finite (got " + detail::number_text(def.tolerance) + ")");
+        fit_fail("tolerance must be positive and finite (got " + detail::number_text(def.tolerance) + ")");
     }
     if (!(def.corner_angle > 0.0 && def.corner_angle <= pi)) {
-        fail("corner_angle must lie in (0, π] radians (got " + detail::number_text(def.corner_angle) + ")");
+        fit_fail("corner_angle must lie in (0, π] radians (got " + detail::number_text(def.corner_angle) + ")");
     }
     std::vector<Vec2> pts;
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (!is_finite(points[i])) fail("points[" + std::to_string(i) + "] must be finite");
+        if (!is_finite(points[i])) fit_fail("points[" + std::to_string(i) + "] must be finite");
         if (pts.empty() || points[i] != pts.back()) pts.push_back(points[i]);
     }
-    if (pts.size() < 2) fail("needs at least 2 distinct points (got " + std::to_string(pts.size()) + ")");
+    if (pts.size() < 2) fit_fail("needs at least 2 distinct points (got " + std::to_string(pts.size()) + ")");
 
     // Runs between corners: where successive chords turn by more than the corner angle.
     std::vector<std::size_t> ends{0};

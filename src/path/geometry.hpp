@@ -7,6 +7,13 @@
 
 namespace grape::detail {
 
+/// A parameter just inside [a, b) from the right: d1 at a break b belongs to the piece that
+/// starts there, so step back by a relative hair that floor() still sees.
+inline double inside_right(double a, double b) noexcept {
+    const double v = b - (b - a) * 1e-12;
+    return v < b ? v : std::nextafter(b, a);
+}
+
 /// Real roots of a·t² + b·t + c = 0 into roots[0..1] (a may be 0); returns how many.
 /// Uses the cancellation-free form q = −(b + sign(b)·√disc)/2.
 inline int quadratic_roots(double a, double b, double c, double roots[2]) noexcept {

@@ -12,16 +12,6 @@
 
 namespace grape::detail {
 
-namespace {
-
-// d1 at the right end of the piece [a, b], from inside the piece: d1(b) belongs to the
-// piece that starts at b, so step back by a relative hair that floor() still sees.
-double inside_right(double a, double b) noexcept {
-    const double v = b - (b - a) * 1e-12;
-    return v < b ? v : std::nextafter(b, a);
-}
-
-}  // namespace
 
 void PathNode::interior_breaks(std::vector<double>&) const {}
 
@@ -113,8 +103,9 @@ Bounds PathNode::compute_bounds() const {
 
 namespace {
 
-// Distance from p to the segment a–b.
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) noexcept {
+// Distance from p to the chord a–b (flattening tolerances are far inside the range where |ab|²
+// overflows, so the plain form serves here; closest.cpp has the overflow-safe one).
+double chord_distance(Vec2 p, Vec2 a, Vec2 b) noexcept {
     const Vec2 ab = b - a;
     const double l2 = length_squared(ab);
     const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
@@ -137,7 +128,7 @@ struct Flattener {
         double bend = 0.0;
         for (int k = 0; k <= 8; ++k) {
             const double u = k == 8 ? inside_right(a, b) : a + h * k / 8.0;
-            if (k > 0 && k < 8) deviation = std::max(deviation, distance_to_segment(node.point(u), pa, pb));
+            if (k > 0 && k < 8) deviation = std::max(deviation, chord_distance(node.point(u), pa, pb));
             const Vec2 dd = node.d2(u);
             bend = std::max(bend, chord_length > 0.0 ? std::abs(cross(dd, chord)) / chord_length
                                                      : grape::length(dd));

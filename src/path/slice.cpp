@@ -25,7 +25,7 @@ using detail::QuadraticNode;
 using detail::ReparametrizedNode;
 using detail::SpiralNode;
 
-[[noreturn]] void fail(const char* who, const std::string& what) { throw Error(std::string(who) + ": " + what); }
+[[noreturn]] void slice_fail(const char* who, const std::string& what) { throw Error(std::string(who) + ": " + what); }
 
 // The blossom of a cubic Bézier: de Casteljau with a different t per level. Its values at
 // (a,a,a), (a,a,b), (a,b,b), (b,b,b) are the control points of the piece over [a, b].
@@ -150,12 +150,12 @@ Path cut(const Path& path, double u0, double u1) {
             return cut(r.source(), r.source_u(u0), r.source_u(u1)).reparametrized();
         }
         case PathKind::sine_wave:
-            fail("slice", "a sine wave has no exact slice among the path kinds (its phase); slice a complex path "
+            slice_fail("slice", "a sine wave has no exact slice among the path kinds (its phase); slice a complex path "
                           "or spline that approximates it instead");
         case PathKind::cosine_spline:
-            fail("slice", "a cosine spline has no exact slice among the path kinds (the easing inside a segment)");
+            slice_fail("slice", "a cosine spline has no exact slice among the path kinds (the easing inside a segment)");
     }
-    fail("slice", "unknown path kind");
+    slice_fail("slice", "unknown path kind");
 }
 
 // --- SVG path data ----------------------------------------------------------------------------
@@ -242,8 +242,8 @@ struct SvgWriter {
                 for_each_part(static_cast<const ComplexNode&>(node), [this](const Path& part, double, double) { path(part); });
                 return;
             case PathKind::reparametrized: path(static_cast<const ReparametrizedNode&>(node).source()); return;
-            case PathKind::spiral: fail("svg_path_data", "a spiral has no SVG form (SVG draws lines, Béziers and arcs)");
-            case PathKind::sine_wave: fail("svg_path_data", "a sine wave has no SVG form (SVG draws lines, Béziers and arcs)");
+            case PathKind::spiral: slice_fail("svg_path_data", "a spiral has no SVG form (SVG draws lines, Béziers and arcs)");
+            case PathKind::sine_wave: slice_fail("svg_path_data", "a sine wave has no SVG form (SVG draws lines, Béziers and arcs)");
         }
     }
 };
@@ -252,7 +252,7 @@ struct SvgWriter {
 
 Path slice(const Path& path, double u0, double u1) {
     if (!(u0 >= 0.0 && u0 < u1 && u1 <= 1.0)) {
-        fail("slice", "the range must satisfy 0 ≤ u0 < u1 ≤ 1 (got u0 = " + detail::number_text(u0) +
+        slice_fail("slice", "the range must satisfy 0 ≤ u0 < u1 ≤ 1 (got u0 = " + detail::number_text(u0) +
                           ", u1 = " + detail::number_text(u1) + ")");
     }
     return cut(path, u0, u1);
@@ -261,12 +261,12 @@ Path slice(const Path& path, double u0, double u1) {
 Path slice_by_length(const Path& path, double s0, double s1) {
     const double total = path.length();
     if (!(s0 >= 0.0 && s0 < s1 && s1 <= total)) {
-        fail("slice_by_length", "the lengths must satisfy 0 ≤ s0 < s1 ≤ length() = " + detail::number_text(total) +
+        slice_fail("slice_by_length", "the lengths must satisfy 0 ≤ s0 < s1 ≤ length() = " + detail::number_text(total) +
                                     " (got s0 = " + detail::number_text(s0) + ", s1 = " + detail::number_text(s1) + ")");
     }
     const double u0 = path.u_at_length(s0);
     const double u1 = s1 >= total ? 1.0 : path.u_at_length(s1);
-    if (!(u1 > u0)) fail("slice_by_length", "the lengths fall where the path stands still (u " + detail::number_text(u0) + ")");
+    if (!(u1 > u0)) slice_fail("slice_by_length", "the lengths fall where the path stands still (u " + detail::number_text(u0) + ")");
     return cut(path, u0, u1);
 }
 

@@ -172,8 +172,6 @@ private:
     std::size_t at_ = 0;
 };
 
-bool finite(Vec2 p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y); }
-
 // The command state of the grammar: current point, subpath start and the control point the
 // S and T commands reflect.
 class Builder {
@@ -253,7 +251,7 @@ private:
 
     Vec2 absolute(Vec2 p, bool relative) const {
         const Vec2 q = relative ? current_ + p : p;
-        if (!finite(q)) fail_range("a coordinate is too large", group_at_);
+        if (!is_finite(q)) fail_range("a coordinate is too large", group_at_);
         return q;
     }
 
@@ -290,7 +288,7 @@ private:
             // The first control point mirrors the previous cubic's second one about the
             // current point; without a previous C or S it is the current point itself.
             const Vec2 c1 = previous_ == Previous::cubic ? 2.0 * current_ - control_ : current_;
-            if (!finite(c1)) fail_range("a reflected control point is too large", group_at_);
+            if (!is_finite(c1)) fail_range("a reflected control point is too large", group_at_);
             const Vec2 c2 = pair(relative);
             cubic(c1, c2, next_pair(relative));
             return;
@@ -302,7 +300,7 @@ private:
         }
         case 'T': {
             const Vec2 c = previous_ == Previous::quadratic ? 2.0 * current_ - control_ : current_;
-            if (!finite(c)) fail_range("a reflected control point is too large", group_at_);
+            if (!is_finite(c)) fail_range("a reflected control point is too large", group_at_);
             quadratic(c, pair(relative));
             return;
         }
