@@ -12,6 +12,8 @@
 //   cpu_relax()            a spin-wait's pause
 //   GRAPE_DEFAULT_VISIBILITY a symbol a runtime looks up by name (sanitizer hooks), seen
 //                          from outside although grape builds with hidden visibility
+//   GRAPE_ADDRESS_SANITIZER 1 in an AddressSanitizer build (GCC defines __SANITIZE_ADDRESS__,
+//                          clang answers __has_feature), else 0
 // Not used anywhere: __int128, GNU statement expressions, #pragma GCC, builtins outside this
 // header. Public headers use none of these.
 #pragma once
@@ -34,6 +36,17 @@
 #define GRAPE_DEFAULT_VISIBILITY __attribute__((visibility("default")))
 #else
 #define GRAPE_DEFAULT_VISIBILITY
+#endif
+
+#if defined(__SANITIZE_ADDRESS__)
+#define GRAPE_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define GRAPE_ADDRESS_SANITIZER 1
+#endif
+#endif
+#ifndef GRAPE_ADDRESS_SANITIZER
+#define GRAPE_ADDRESS_SANITIZER 0
 #endif
 
 #if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))

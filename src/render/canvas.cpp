@@ -22,7 +22,7 @@
 
 #include "internal/compiler.hpp"
 
-#if defined(__SANITIZE_ADDRESS__)
+#if GRAPE_ADDRESS_SANITIZER
 // Text goes through fontconfig and cairo's font caches, which live until the process ends
 // and are freed by no one (cairo_debug_reset_static_data asserts if any face is still
 // referenced). The leak checker would report them for every program that draws a label.
