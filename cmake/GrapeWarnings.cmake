@@ -52,6 +52,9 @@ function(grape_module name)
   # Installed shared libraries find each other next to themselves (render needs sprite, ...):
   # a program's own RUNPATH does not apply to its libraries' dependencies.
   set_target_properties(grape_${name} PROPERTIES INSTALL_RPATH "$ORIGIN")
+  if(GRAPE_UNITY_BUILD)
+    set_target_properties(grape_${name} PROPERTIES UNITY_BUILD ON)
+  endif()
   target_include_directories(grape_${name} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
     $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>
