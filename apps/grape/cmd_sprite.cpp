@@ -103,7 +103,7 @@ json info(const SpriteSheet& sheet) {
         slices.push_back({{"name", s.name}, {"keys", std::move(keys)}});
     }
     return {{"image", sheet.image()}, {"width", sheet.width()}, {"height", sheet.height()},
-            {"frame_count", sheet.frame_count()}, {"frames", std::move(frames)}, {"clips", std::move(clips)},
+            {"scale", number_json(sheet.scale())}, {"frame_count", sheet.frame_count()}, {"frames", std::move(frames)}, {"clips", std::move(clips)},
             {"slices", std::move(slices)}};
 }
 

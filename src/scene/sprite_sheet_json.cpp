@@ -105,29 +105,48 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
                            size_text(f.rect.width, f.rect.height) + (f.rotated ? " (rotated)" : "") + " leaves the " +
                            size_text(sheet_w, sheet_h) + " sheet (meta.size)");
     }
+    // The pixels' own size and place on the sheet: the frame's, or inside it past Aseprite's
+    // inner padding (its exporter makes each cell the trimmed size plus the padding p on every
+    // side, writes the cell as `frame` and the trimmed pixels' size in spriteSourceSize).
+    int pixels_w = upright.width;
+    int pixels_h = upright.height;
     if (const json* s = optional(j, "spriteSourceSize")) {
         const std::string at = child(pointer, "spriteSourceSize");
         const FrameRect r = rect(*s, at, 1);
-        if (r.width != upright.width || r.height != upright.height) {
-            fail(at, "size " + size_text(r.width, r.height) + " differs from the frame's " +
-                         size_text(upright.width, upright.height));
+        const int extra_w = upright.width - r.width;
+        const int extra_h = upright.height - r.height;
+        if (extra_w != 0 || extra_h != 0) {
+            if (extra_w != extra_h || extra_w < 0 || extra_w % 2 != 0) {
+                fail(at, "size " + size_text(r.width, r.height) + " differs from the frame's " +
+                             size_text(upright.width, upright.height) +
+                             " other than by an inner padding (the frame larger by the same even number on both axes)");
+            }
+            const int padding = extra_w / 2;
+            pixels_w = r.width;
+            pixels_h = r.height;
+            f.rect = f.rotated ? FrameRect{f.rect.x + padding, f.rect.y + padding, pixels_h, pixels_w}
+                               : FrameRect{f.rect.x + padding, f.rect.y + padding, pixels_w, pixels_h};
         }
         f.offset_x = r.x;
         f.offset_y = r.y;
     }
-    f.source_width = upright.width;
-    f.source_height = upright.height;
+    f.source_width = pixels_w;
+    f.source_height = pixels_h;
     if (const json* s = optional(j, "sourceSize")) {
         const std::string at = child(pointer, "sourceSize");
         object(*s, at);
         f.source_width = pixels(*s, at, "w", 1);
         f.source_height = pixels(*s, at, "h", 1);
     }
-    if (f.offset_x < 0 || f.offset_y < 0 || std::int64_t{f.offset_x} + upright.width > f.source_width ||
-        std::int64_t{f.offset_y} + upright.height > f.source_height) {
+    // Trimmed pixels lie inside the untrimmed image. Pixels that are the whole image may sit
+    // anywhere: TexturePacker's "crop, keep position" makes the crop the sprite (sourceSize)
+    // and keeps where it was in the art as spriteSourceSize's x, y, of any sign.
+    const bool whole_image = pixels_w == f.source_width && pixels_h == f.source_height;
+    if (!whole_image && (f.offset_x < 0 || f.offset_y < 0 || std::int64_t{f.offset_x} + pixels_w > f.source_width ||
+                         std::int64_t{f.offset_y} + pixels_h > f.source_height)) {
         fail(child(pointer, "spriteSourceSize"),
-             "puts the trimmed " + size_text(upright.width, upright.height) + " pixels at (" + std::to_string(f.offset_x) +
-                 ", " + std::to_string(f.offset_y) + "), outside the " + size_text(f.source_width, f.source_height) +
+             "puts the trimmed " + size_text(pixels_w, pixels_h) + " pixels at (" + std::to_string(f.offset_x) + ", " +
+                 std::to_string(f.offset_y) + "), outside the " + size_text(f.source_width, f.source_height) +
                  " sourceSize");
     }
     if (const json* d = optional(j, "duration")) {
@@ -135,14 +154,31 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
         f.duration_ms = number(*d, at);
         if (!(f.duration_ms > 0.0)) fail(at, "must be positive, milliseconds (got " + number_text(f.duration_ms) + ")");
     }
-    if (const json* p = optional(j, "pivot")) {  // TexturePacker: a fraction of the untrimmed size
-        const std::string at = child(pointer, "pivot");
+    // TexturePacker's pivot (`anchor` in its PixiJS format): a fraction of the sprite's size,
+    // from its top-left. A kept-position crop's sprite is the crop, where it sat in the art.
+    const char* pivot_key = optional(j, "pivot") ? "pivot" : "anchor";
+    if (const json* p = optional(j, pivot_key)) {
+        const std::string at = child(pointer, pivot_key);
         object(*p, at);
         const double px = number(required(*p, at, "x"), child(at, "x"));
         const double py = number(required(*p, at, "y"), child(at, "y"));
-        f.pivot = {px * f.source_width, py * f.source_height};
+        const Vec2 origin = whole_image ? Vec2{double(f.offset_x), double(f.offset_y)} : Vec2{};
+        f.pivot = origin + Vec2{px * f.source_width, py * f.source_height};
     }
     return f;
+}
+
+// Both tools write the scale as a string of a decimal number ("1", "0.5"); a number is taken too.
+double sheet_scale(const json& j, const std::string& pointer) {
+    double v = 0.0;
+    if (j.is_string()) {
+        const std::string s = j.get<std::string>();
+        if (!detail::parse_finite(s, v)) fail(pointer, "expected a number as text, like \"0.5\" (got \"" + s + "\")");
+    } else {
+        v = number(j, pointer);
+    }
+    if (!(v > 0.0)) fail(pointer, "must be positive (got " + number_text(v) + ")");
+    return v;
 }
 
 ClipDirection direction(const json& j, const std::string& pointer) {
@@ -221,6 +257,7 @@ SpriteSheet read_sheet(const json& root) {
     def.width = pixels(size, "/meta/size", "w", 1);
     def.height = pixels(size, "/meta/size", "h", 1);
     if (const json* image = optional(meta, "image")) def.image = string(*image, "/meta/image");
+    if (const json* scale = optional(meta, "scale")) def.scale = sheet_scale(*scale, "/meta/scale");
 
     const json& frames = required(root, "", "frames");
     if (frames.is_object()) {
@@ -347,7 +384,7 @@ std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) 
                  {"image", sheet.image()},
                  {"format", "RGBA8888"},
                  {"size", {{"w", sheet.width()}, {"h", sheet.height()}}},
-                 {"scale", "1"},
+                 {"scale", number_text(sheet.scale())},
                  {"frameTags", std::move(tags)},
                  {"layers", json::array()},
                  {"slices", std::move(slices)}};
