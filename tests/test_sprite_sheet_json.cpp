@@ -326,6 +326,47 @@ TEST(SpriteSheetJson, AsepriteUserDataLayersAndSliceCenters) {
     EXPECT_EQ(sheet.frame(1).pivot.x, 0.0);
 }
 
+// Several sprites on one sheet (aseprite -b hero.aseprite slime.aseprite coin.aseprite --sheet
+// --list-tags --tagname-format {title}/{tag}): frames get Aseprite's default names for several
+// files, "{title} {frame}.{extension}" ("{title}.{extension}" for one frame), and each
+// sprite's tags count that sprite's frames from 0. With the title in the tag names the sheet
+// says which sprite a tag is in: slime's frames 0–1 are sheet frames 4–5, coin's 0 is 6.
+std::string packed_sheet(const std::string& tags) {
+    std::string frames;
+    int x = 0;
+    for (const char* name : {"hero 0", "hero 1", "hero 2", "hero 3", "slime 0", "slime 1", "coin"}) {
+        if (!frames.empty()) frames += ", ";
+        frames += "\"" + std::string(name) + ".aseprite\": {\"frame\": {\"x\": " + std::to_string(x) +
+                  ", \"y\": 0, \"w\": 8, \"h\": 8}, \"duration\": 100}";
+        x += 8;
+    }
+    return "{\"frames\": {" + frames + "}, \"meta\": {\"size\": {\"w\": 56, \"h\": 8}, \"frameTags\": " + tags + "}}";
+}
+
+TEST(SpriteSheetJson, AsepriteTagsCountEachPackedSpritesFrames) {
+    const SpriteSheet sheet = grape::load_sprite_sheet(packed_sheet(R"([
+        {"name": "hero/idle", "from": 0, "to": 1, "direction": "forward"},
+        {"name": "hero/run", "from": 2, "to": 3, "direction": "forward"},
+        {"name": "slime/hop", "from": 0, "to": 1, "direction": "pingpong"},
+        {"name": "coin/spin", "from": 0, "to": 0, "direction": "forward"},
+        {"name": "all", "from": 0, "to": 6, "direction": "forward"}])"));
+    const std::size_t expected[][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 6}, {0, 6}};
+    ASSERT_EQ(sheet.clips().size(), 5u);
+    for (std::size_t k = 0; k < 5; ++k) {
+        SCOPED_TRACE(sheet.clips()[k].name);
+        EXPECT_EQ(sheet.clips()[k].from, expected[k][0]);
+        EXPECT_EQ(sheet.clips()[k].to, expected[k][1]);
+    }
+    // A tag past its own sprite's frames is an error naming the sprite.
+    expect_error([] { grape::load_sprite_sheet(packed_sheet(R"([{"name": "slime/hop", "from": 0, "to": 2}])")); },
+                 {"sprite sheet: /meta/frameTags/0/to: 2 is past the last frame (frame count 2) of sprite \"slime\" (sheet frames 4 to 5)"});
+    // Frames not named so (one sprite, or names of the user's own format): tags are sheet frames.
+    const SpriteSheet single = grape::load_sprite_sheet(R"({"frames": {"hero 0.aseprite": {"frame": {"x": 0, "y": 0, "w": 8, "h": 8}},
+        "hero 1.aseprite": {"frame": {"x": 8, "y": 0, "w": 8, "h": 8}}},
+        "meta": {"size": {"w": 16, "h": 8}, "frameTags": [{"name": "hero/b", "from": 1, "to": 1}]}})");
+    EXPECT_EQ(single.clips()[0].from, 1u);
+}
+
 // A small valid Aseprite sheet, and the same with one value broken: the error names its pointer.
 std::string sheet_with(const std::string& frame1, const std::string& tags, const std::string& size = R"({"w": 32, "h": 16})") {
     return R"({"frames": {"a": {"frame": {"x": 0, "y": 0, "w": 16, "h": 16}, "duration": 100}, "b/c": )" + frame1 +

@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 namespace grape {
 namespace {
@@ -208,13 +209,89 @@ int repeat(const json& j, const std::string& pointer) {
     return static_cast<int>(v);
 }
 
-SpriteClip read_tag(const json& j, const std::string& pointer, std::size_t count) {
+// One of several sprites Aseprite packed onto a sheet: its frames are the run of `count` from
+// sheet frame `first`, and its tags count from its own first frame.
+struct PackedSprite {
+    std::string title;
+    std::size_t first = 0;
+    std::size_t count = 0;
+};
+
+bool is_alphanumeric(char c) noexcept {
+    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+// The sprites of a sheet that says it packs several: every frame has the name Aseprite gives
+// frames of several files by default, "TITLE N.EXT" (N counted from 0 in each sprite) or
+// "TITLE.EXT" for a sprite of one frame, each title's frames one run, and two titles or more.
+// Anything else: none.
+std::vector<PackedSprite> packed_sprites(const std::vector<SpriteFrame>& frames) {
+    std::vector<PackedSprite> sprites;
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        const std::string& name = frames[k].name;
+        const std::size_t dot = name.rfind('.');
+        if (dot == std::string::npos || dot == 0 || dot + 1 == name.size()) return {};
+        for (std::size_t i = dot + 1; i < name.size(); ++i) {
+            if (!is_alphanumeric(name[i])) return {};
+        }
+        std::string title = name.substr(0, dot);
+        std::size_t number = 0;
+        bool numbered = false;
+        const std::size_t space = title.rfind(' ');
+        const std::size_t digits = space == std::string::npos ? 0 : title.size() - space - 1;
+        if (digits > 0 && digits <= 9 && space > 0 &&
+            title.find_first_not_of("0123456789", space + 1) == std::string::npos) {
+            number = std::stoul(title.substr(space + 1));
+            numbered = true;
+            title.resize(space);
+        }
+        if (!sprites.empty() && sprites.back().title == title) {
+            if (!numbered || number != sprites.back().count) return {};
+            ++sprites.back().count;
+            continue;
+        }
+        if (numbered && number != 0) return {};
+        for (const PackedSprite& s : sprites) {
+            if (s.title == title) return {};
+        }
+        sprites.push_back({std::move(title), k, 1});
+    }
+    if (sprites.size() < 2) return {};
+    return sprites;
+}
+
+// The sprite a tag names when Aseprite wrote it with a tag name format that starts with the
+// title ("{title}/{tag}" gives "hero/walk"): the longest title followed by a separator.
+const PackedSprite* sprite_of_tag(const std::string& tag, const std::vector<PackedSprite>& sprites) {
+    const PackedSprite* found = nullptr;
+    for (const PackedSprite& s : sprites) {
+        if (tag.size() > s.title.size() + 1 && tag.compare(0, s.title.size(), s.title) == 0 &&
+            !is_alphanumeric(tag[s.title.size()]) && (!found || s.title.size() > found->title.size())) {
+            found = &s;
+        }
+    }
+    return found;
+}
+
+SpriteClip read_tag(const json& j, const std::string& pointer, std::size_t count, const std::vector<PackedSprite>& sprites) {
     object(j, pointer);
     SpriteClip c;
     c.name = string(required(j, pointer, "name"), child(pointer, "name"));
-    c.from = frame_index(j, pointer, "from", count);
-    c.to = frame_index(j, pointer, "to", count);
-    if (c.to < c.from) fail(child(pointer, "to"), std::to_string(c.to) + " is before from (" + std::to_string(c.from) + ")");
+    // Aseprite numbers each packed sprite's tags from that sprite's first frame.
+    const PackedSprite* sprite = sprite_of_tag(c.name, sprites);
+    const std::size_t first = sprite ? sprite->first : 0;
+    const std::size_t frames = sprite ? sprite->count : count;
+    try {
+        c.from = first + frame_index(j, pointer, "from", frames);
+        c.to = first + frame_index(j, pointer, "to", frames);
+    } catch (const Error& e) {
+        if (!sprite) throw;
+        throw Error(std::string(e.what()) + " of sprite \"" + sprite->title + "\" (sheet frames " +
+                    std::to_string(first) + " to " + std::to_string(first + frames - 1) + ")");
+    }
+    if (c.to < c.from) {
+        fail(child(pointer, "to"), std::to_string(c.to - first) + " is before from (" + std::to_string(c.from - first) + ")");
+    }
     if (const json* d = optional(j, "direction")) c.direction = direction(*d, child(pointer, "direction"));
     if (const json* r = optional(j, "repeat")) c.repeat = repeat(*r, child(pointer, "repeat"));
     return c;
@@ -281,7 +358,10 @@ SpriteSheet read_sheet(const json& root) {
     const std::size_t count = def.frames.size();
     if (const json* tags = optional(meta, "frameTags")) {
         if (!tags->is_array()) fail("/meta/frameTags", "expected an array, got " + type_of(*tags));
-        for (std::size_t k = 0; k < tags->size(); ++k) def.clips.push_back(read_tag((*tags)[k], child("/meta/frameTags", k), count));
+        const std::vector<PackedSprite> sprites = packed_sprites(def.frames);
+        for (std::size_t k = 0; k < tags->size(); ++k) {
+            def.clips.push_back(read_tag((*tags)[k], child("/meta/frameTags", k), count, sprites));
+        }
     }
     if (const json* slices = optional(meta, "slices")) {
         if (!slices->is_array()) fail("/meta/slices", "expected an array, got " + type_of(*slices));
