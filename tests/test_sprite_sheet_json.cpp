@@ -357,6 +357,19 @@ TEST(SpriteSheetJson, AsepriteTagsCountEachPackedSpritesFrames) {
         EXPECT_EQ(sheet.clips()[k].from, expected[k][0]);
         EXPECT_EQ(sheet.clips()[k].to, expected[k][1]);
     }
+    // Saved, the tags count their sprites' frames again, and read back the same.
+    const std::string saved = grape::save_sprite_sheet(sheet, grape::SheetJsonLayout::hash);
+    const std::size_t hop = saved.find("\"slime/hop\"");
+    ASSERT_NE(hop, std::string::npos);
+    const std::string hop_tag = saved.substr(hop, saved.find('}', hop) - hop);
+    EXPECT_NE(hop_tag.find("\"from\": 0,"), std::string::npos) << hop_tag;
+    EXPECT_NE(hop_tag.find("\"to\": 1,"), std::string::npos) << hop_tag;
+    expect_same_sheet(grape::load_sprite_sheet(saved), sheet);
+    // A clip given in code that names a sprite but leaves its frames cannot be written so.
+    grape::SpriteSheetDef def{.width = sheet.width(), .height = sheet.height(), .frames = {sheet.frames().begin(), sheet.frames().end()},
+                              .clips = {{.name = "slime/all", .from = 0, .to = 6}}};
+    expect_error([&] { grape::save_sprite_sheet(SpriteSheet(def), grape::SheetJsonLayout::array); },
+                 {"save_sprite_sheet: clip 'slime/all' names sprite 'slime' (sheet frames 4 to 5) but plays frames 0 to 6"});
     // A tag past its own sprite's frames is an error naming the sprite.
     expect_error([] { grape::load_sprite_sheet(packed_sheet(R"([{"name": "slime/hop", "from": 0, "to": 2}])")); },
                  {"sprite sheet: /meta/frameTags/0/to: 2 is past the last frame (frame count 2) of sprite \"slime\" (sheet frames 4 to 5)"});

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <fstream>
 #include <set>
+#include <span>
 #include <sstream>
 #include <system_error>
 #include <vector>
@@ -225,7 +226,7 @@ bool is_alphanumeric(char c) noexcept {
 // frames of several files by default, "TITLE N.EXT" (N counted from 0 in each sprite) or
 // "TITLE.EXT" for a sprite of one frame, each title's frames one run, and two titles or more.
 // Anything else: none.
-std::vector<PackedSprite> packed_sprites(const std::vector<SpriteFrame>& frames) {
+std::vector<PackedSprite> packed_sprites(std::span<const SpriteFrame> frames) {
     std::vector<PackedSprite> sprites;
     for (std::size_t k = 0; k < frames.size(); ++k) {
         const std::string& name = frames[k].name;
@@ -443,9 +444,22 @@ std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) 
         }
     }
     const char* directions[] = {"forward", "reverse", "pingpong", "pingpong_reverse"};
+    // On a sheet of several sprites a tag that names its sprite counts that sprite's frames, as
+    // the reader has it.
+    const std::vector<PackedSprite> sprites = packed_sprites(sheet.frames());
     json tags = json::array();
     for (const SpriteClip& c : sheet.clips()) {
-        json t = {{"name", c.name}, {"from", c.from}, {"to", c.to}, {"direction", directions[static_cast<int>(c.direction)]}};
+        std::size_t first = 0;
+        if (const PackedSprite* sprite = sprite_of_tag(c.name, sprites)) {
+            if (c.from < sprite->first || c.to >= sprite->first + sprite->count) {
+                throw Error("save_sprite_sheet: clip '" + c.name + "' names sprite '" + sprite->title + "' (sheet frames " +
+                            std::to_string(sprite->first) + " to " + std::to_string(sprite->first + sprite->count - 1) +
+                            ") but plays frames " + std::to_string(c.from) + " to " + std::to_string(c.to));
+            }
+            first = sprite->first;
+        }
+        json t = {{"name", c.name}, {"from", c.from - first}, {"to", c.to - first},
+                  {"direction", directions[static_cast<int>(c.direction)]}};
         if (c.repeat > 0) t["repeat"] = std::to_string(c.repeat);  // a string, as Aseprite writes it
         tags.push_back(std::move(t));
     }
