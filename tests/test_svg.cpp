@@ -712,7 +712,28 @@ void split_halves(double a, double& hi, double& lo) {
     lo = a - hi;
 }
 
-ExactSum operator*(const ExactSum& a, const ExactSum& b) {
+// The same value as few nonoverlapping doubles, smallest first (Shewchuk's grow-expansion
+// with Knuth's two-sum, exact; zeros dropped), so products and sums stay small.
+ExactSum compressed(const ExactSum& a) {
+    std::vector<double> expansion;
+    for (double t : a.terms) {
+        std::vector<double> grown;
+        for (const double e : expansion) {
+            const double s = t + e;
+            const double bv = s - t;
+            const double err = (t - (s - bv)) + (e - bv);
+            if (err != 0.0) grown.push_back(err);
+            t = s;
+        }
+        if (t != 0.0) grown.push_back(t);
+        expansion = std::move(grown);
+    }
+    return ExactSum{std::move(expansion)};
+}
+
+ExactSum operator*(const ExactSum& a_in, const ExactSum& b_in) {
+    const ExactSum a = compressed(a_in);
+    const ExactSum b = compressed(b_in);
     ExactSum product;
     for (const double x : a.terms) {
         for (const double y : b.terms) {
@@ -737,24 +758,11 @@ ExactSum operator-(ExactSum a, ExactSum b) {
     return std::move(a) + b;
 }
 
-// The sum rounded to a few ulps: Knuth's two-sum grows a nonoverlapping expansion of the terms
-// (exact), which summed from its smallest part up rounds only at the top.
+// The sum rounded to a few ulps: its nonoverlapping expansion summed from the smallest part
+// up rounds only at the top.
 double value_of(const ExactSum& a) {
-    std::vector<double> expansion;
-    for (double t : a.terms) {
-        std::vector<double> grown;
-        for (const double e : expansion) {
-            const double s = t + e;
-            const double bv = s - t;
-            const double err = (t - (s - bv)) + (e - bv);
-            if (err != 0.0) grown.push_back(err);
-            t = s;
-        }
-        grown.push_back(t);
-        expansion = std::move(grown);
-    }
     double sum = 0.0;
-    for (const double e : expansion) sum += e;
+    for (const double e : compressed(a).terms) sum += e;
     return sum;
 }
 
@@ -775,7 +783,7 @@ TEST(SvgJustReachingArcs, TheExactReferenceIsExact) {
 // how far the radii are from just reaching, from the very doubles of the data.
 struct NearReachingArc {
     Vec2 from, to;
-    double rx = 0.0, ry = 0.0, rotation = 0.0;  // rotation in degrees: any for a circle, else a multiple of 90
+    double rx = 0.0, ry = 0.0, rotation = 0.0;  // rotation in degrees: any for a circle, else a multiple of 30° or 45°
     bool large_arc = false, sweep = false;
 
     std::string data() const {
@@ -785,18 +793,51 @@ struct NearReachingArc {
         return text;
     }
 
-    // 1 − Λ = 1 − (x1/rx)² − (y1/ry)² with (x1, y1) half the chord in the ellipse's axes; a
-    // circle's Λ is |chord|²/(2r)² whatever its rotation, and a quarter turn swaps the axes.
+    // 1 − Λ = 1 − (x1/rx)² − (y1/ry)² with (x1, y1) = (c·hx + s·hy, −s·hx + c·hy), h half the
+    // chord, c and s the rotation's cosine and sine. Times rx²·ry² that is
+    //   rx²ry² − ry²(c²hx² + s²hy²) − rx²(s²hx² + c²hy²) − 2cs·hx·hy·(ry² − rx²),
+    // exact for rotations whose c², s² are rational and 2cs is rational or a rational times √3
+    // (multiples of 30° and 45°); a circle's Λ is |h|²/r² whatever its rotation.
     double radicand() const {
-        const ExactSum dx = exact(from.x) - exact(to.x);
-        const ExactSum dy = exact(from.y) - exact(to.y);
+        double c2 = 1.0, s2 = 0.0, cs_rational = 0.0, cs_root3 = 0.0;  // 2cs = cs_rational + cs_root3·√3
+        if (rx != ry) {
+            const double degrees = std::fmod(rotation, 360.0) + (rotation < 0.0 ? 360.0 : 0.0);
+            const int k30 = static_cast<int>(std::lround(degrees / 30.0));
+            const int k45 = static_cast<int>(std::lround(degrees / 45.0));
+            if (degrees == 45.0 * k45 && k45 % 2 == 1) {
+                c2 = s2 = 0.5;
+                cs_rational = (k45 % 4 == 1) ? 1.0 : -1.0;  // 45°, 225°: 2cs = 1; 135°, 315°: −1
+            } else if (degrees == 30.0 * k30) {
+                // cos² and sin 2θ at θ = 30°·k: (1, 0), (¾, √3/2), (¼, √3/2), (0, 0), (¼, −√3/2), (¾, −√3/2), …
+                constexpr double cos2[] = {1, 0.75, 0.25, 0, 0.25, 0.75};
+                constexpr double sin2[] = {0, 0.5, 0.5, 0, -0.5, -0.5};
+                c2 = cos2[k30 % 6];
+                s2 = 1.0 - c2;
+                cs_root3 = sin2[k30 % 6];
+            } else {
+                ADD_FAILURE() << "no exact reference for a rotation of " << rotation;
+            }
+        }
+        const ExactSum hx = exact(from.x * 0.5) - exact(to.x * 0.5);  // halving is exact
+        const ExactSum hy = exact(from.y * 0.5) - exact(to.y * 0.5);
         const ExactSum rx2 = exact(rx) * exact(rx);
         const ExactSum ry2 = exact(ry) * exact(ry);
-        const bool turned = rx != ry && std::fmod(std::abs(rotation), 180.0) == 90.0;
-        const ExactSum& along = turned ? dy : dx;
-        const ExactSum& across = turned ? dx : dy;
-        const ExactSum scale = exact(4.0) * rx2 * ry2;
-        return value_of(scale - along * along * ry2 - across * across * rx2) / value_of(scale);
+        const ExactSum hx2 = hx * hx;
+        const ExactSum hy2 = hy * hy;
+        const ExactSum cross = hx * hy * (ry2 - rx2);
+        const ExactSum scale = rx2 * ry2;
+        const ExactSum p = scale - ry2 * (exact(c2) * hx2 + exact(s2) * hy2) - rx2 * (exact(s2) * hx2 + exact(c2) * hy2) -
+                           exact(cs_rational) * cross;
+        const ExactSum q = exact(-cs_root3) * cross;
+        // p + √3·q without cancellation: where they nearly cancel, (p² − 3q²)/(p − √3·q).
+        const double pv = value_of(p);
+        const double qv = value_of(q);
+        const double root3 = std::sqrt(3.0);
+        double n = pv;
+        if (qv != 0.0) {
+            n = (pv > 0.0) == (qv > 0.0) ? pv + root3 * qv : value_of(p * p - exact(3.0) * q * q) / (pv - root3 * qv);
+        }
+        return n / value_of(scale);
     }
 
     // The arc's sweep on the unit circle the ellipse maps to: half a turn, plus or minus twice
@@ -860,6 +901,9 @@ TEST(SvgJustReachingArcs, DecimalRadiiJustPastReachingAreExact) {
         {{0, 0}, {0, 40}, 30, 20.0000000001, 0, true, false},
         {{0, 0}, {0, 60}, 30.00000000001, 20, 90, false, true},
         {{-3.5, 7.25}, {96.5, 7.25}, 50.000000000002, 80, 0, true, true},
+        {{0, 0}, {-28.2842712474619, 28.2842712474619}, 30, 20.0000000001, 45, true, true},
+        {{5, 5}, {5 + 75 * 0.8660254037844386, 5 + 75 * 0.5}, 37.5000000001, 12, 30, false, true},
+        {{5, 5}, {5 - 24 * 0.8660254037844386, 5 - 24 * 0.5}, 37.5, 12.00000000001, 120, true, false},
     };
     ArcErrors worst;
     for (const NearReachingArc& arc : arcs) {
@@ -875,8 +919,9 @@ TEST(SvgJustReachingArcs, DecimalRadiiJustPastReachingAreExact) {
 }
 
 TEST(SvgJustReachingArcs, RandomArcsWithRadicandsNearZeroAreExact) {
-    // Random circles (any rotation) and ellipses (turned by multiples of 90°) whose exact
-    // radicand lies between 16 ulps and 1e-12, drawn at every flag combination.
+    // Random circles (any rotation) and ellipses (turned by multiples of 30° and 45°, where the
+    // reference is exact) whose exact radicand lies between 16 ulps and 1e-12, drawn at every
+    // flag combination.
     std::mt19937_64 rng(grape::testing::test_seed(20261207));
     std::uniform_real_distribution<double> coordinate(-200.0, 200.0);
     std::uniform_real_distribution<double> radius(0.5, 150.0);
@@ -886,13 +931,14 @@ TEST(SvgJustReachingArcs, RandomArcsWithRadicandsNearZeroAreExact) {
     ArcErrors worst;
     int circles = 0;
     int ellipses = 0;
-    while (circles + ellipses < 4000) {
+    for (int attempt = 0; attempt < 1000000 && circles + ellipses < 4000; ++attempt) {
         NearReachingArc arc;
         const bool circle = bit(rng) == 1;
         arc.from = {coordinate(rng), coordinate(rng)};
         arc.rx = radius(rng);
         arc.ry = circle ? arc.rx : radius(rng);
-        arc.rotation = circle ? 360.0 * bit(rng) * turn(rng) / (2.0 * pi) : 90.0 * (bit(rng) + 2 * bit(rng));
+        constexpr double turns[] = {0, 30, 45, 60, 90, 120, 135, 150, 180, 210, 225, 240, 270, 300, 315, 330};
+        arc.rotation = circle ? 360.0 * bit(rng) * turn(rng) / (2.0 * pi) : turns[std::uniform_int_distribution<int>(0, 15)(rng)];
         arc.large_arc = bit(rng) == 1;
         arc.sweep = bit(rng) == 1;
         // Half the chord at Λ = 1 − 10^decades on the unit circle, mapped to the ellipse's axes

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace grape::detail {
 namespace {
@@ -75,11 +76,51 @@ Twice squared(Twice a) noexcept {
     return two_sum(square.hi, square.lo + 2.0 * a.hi * a.lo);
 }
 
+Twice times(Twice a, Twice b) noexcept {
+    const Twice product = two_product(a.hi, b.hi);
+    return two_sum(product.hi, product.lo + (a.hi * b.lo + a.lo * b.hi));
+}
+
+Twice negated(Twice a) noexcept { return {-a.hi, -a.lo}; }
+
+// cos and sin of `degrees` in [0, 360) to about 2⁻¹⁰⁰: an ellipse turned by another angle than a
+// multiple of 90° has Λ through the rotation, and the double cosine's rounding, amplified by
+// the axis ratio, would be all that is left of 1 − Λ. Reduced in degrees (exactly: each
+// difference below is of numbers within a factor 2) to [0°, 45°], where Taylor's series in
+// radians is below 2⁻¹¹⁰ of its sum after 15 terms each.
+void cos_sin_degrees_twice(double degrees, Twice& c, Twice& s) noexcept {
+    int quadrant = static_cast<int>(degrees / 90.0);
+    double r = degrees - 90.0 * quadrant;
+    if (r < 0.0) r = degrees - 90.0 * --quadrant;  // the division rounded up to the next quadrant
+    const bool complement = r > 45.0;
+    if (complement) r = 90.0 - r;
+    constexpr Twice radians_per_degree{0.017453292519943295, 2.9486522708701687e-19};  // π/180
+    const Twice theta = times(radians_per_degree, r);
+    const Twice theta2 = squared(theta);
+    Twice sine = theta;
+    Twice cosine{1.0, 0.0};
+    Twice odd = theta;         // θ^(2k+1)/(2k+1)!, signed
+    Twice even{1.0, 0.0};      // θ^(2k)/(2k)!, signed
+    for (int k = 1; k <= 14 && odd.hi != 0.0; ++k) {
+        even = negated(divided(times(even, theta2), double((2 * k - 1) * (2 * k))));
+        odd = negated(divided(times(odd, theta2), double((2 * k) * (2 * k + 1))));
+        cosine = plus(cosine, even);
+        sine = plus(sine, odd);
+    }
+    if (complement) std::swap(sine, cosine);
+    switch (quadrant & 3) {
+    case 0: c = cosine; s = sine; break;
+    case 1: c = negated(sine); s = cosine; break;
+    case 2: c = negated(cosine); s = negated(sine); break;
+    default: c = sine; s = negated(cosine); break;
+    }
+}
+
 // 1 − Λ = 1 − (x1/rx)² − (y1/ry)² for radii that nearly reach (Λ within [¼, 4]), to a few
 // ulps of itself however close to 0: half the chord is exact as a double-double, and so is
-// the rest but for roundings of order 2⁻¹⁰⁶. A circle's Λ is |chord|²/(2r)², free of the
-// rotation's rounded cosine; an ellipse's is exact when it is turned by a multiple of 90°.
-double reach_gap(Vec2 from, Vec2 to, double rx, double ry, double c, double s) noexcept {
+// the rest but for roundings of order 2⁻¹⁰⁰. A circle's Λ is |chord|²/(2r)², free of the
+// rotation; an ellipse's takes the rotation's cosine and sine in twice the precision too.
+double reach_gap(Vec2 from, Vec2 to, double rx, double ry, double degrees) noexcept {
     // Scaled so that the larger radius lies in [½, 1): the products below neither overflow
     // nor (but for axes 2¹⁰⁰⁰ apart) underflow. Powers of two keep every value exact.
     int exponent = 0;
@@ -94,8 +135,11 @@ double reach_gap(Vec2 from, Vec2 to, double rx, double ry, double c, double s) n
     if (rx == ry) {
         lambda = divided(divided(plus(squared(hx), squared(hy)), rx), rx);
     } else {
+        Twice c;
+        Twice s;
+        cos_sin_degrees_twice(degrees, c, s);
         const Twice x1 = plus(times(hx, c), times(hy, s));
-        const Twice y1 = plus(times(hx, -s), times(hy, c));
+        const Twice y1 = plus(times(hx, negated(s)), times(hy, c));
         lambda = plus(squared(divided(x1, rx)), squared(divided(y1, ry)));
     }
     const Twice gap = two_sum(1.0, -lambda.hi);
@@ -136,7 +180,7 @@ bool svg_arc_to_center(Vec2 from, Vec2 to, double rx, double ry, double rotation
     // The center sits √(1 − Λ) radii off the chord: where the radii nearly reach, 1 − Λ in
     // doubles would keep only the rounding of Λ (2⁻⁵³ of 1 − Λ = 1e-12 moves the center by
     // 1e-10 radii), so it is taken in twice the precision there.
-    const double gap = n > 0.5 && n < 2.0 ? reach_gap(from, to, rx, ry, c, s) : (1.0 - n) * (1.0 + n);
+    const double gap = n > 0.5 && n < 2.0 ? reach_gap(from, to, rx, ry, degrees) : (1.0 - n) * (1.0 + n);
     // Radii that reach to within a few ulps (decimal data that only rounds to just-reaching:
     // icons draw circles as two half-arcs) reach exactly: the center is the chord's midpoint.
     constexpr double reach_tolerance = 8.0 * std::numeric_limits<double>::epsilon();
