@@ -1,8 +1,8 @@
 // libFuzzer target for grape::load_sprite_sheet (Aseprite and TexturePacker JSON): any byte
 // string either loads or throws grape::Error. A loaded sheet must save in Aseprite's array
-// layout and load again to the same frames and clips (and in the hash layout, unless its frame
-// names are not unique), and every clip must play at normal, reversed and absurd rates without
-// showing a frame outside the clip. Anything else (a crash, a sanitizer report, another
+// layout and load again to the same frames (places, offsets, durations), scale and clips (and
+// in the hash layout, unless its frame names are not unique), and every clip must play at
+// normal, reversed and absurd rates without showing a frame outside the clip. Anything else (a crash, a sanitizer report, another
 // exception, a broken round trip) is a finding.
 #include <grape/error.hpp>
 #include <grape/sprite.hpp>
@@ -28,8 +28,10 @@ bool same_rect(const grape::FrameRect& a, const grape::FrameRect& b) {
 
 void require_same(const grape::SpriteSheet& a, const grape::SpriteSheet& b) {
     require(a.frame_count() == b.frame_count() && a.clips().size() == b.clips().size());
+    require(a.scale() == b.scale());
     for (std::size_t k = 0; k < a.frame_count(); ++k) {
         require(same_rect(a.frame(k).rect, b.frame(k).rect));
+        require(a.frame(k).offset_x == b.frame(k).offset_x && a.frame(k).offset_y == b.frame(k).offset_y);
         require(a.frame(k).rotated == b.frame(k).rotated);
         require(a.frame(k).duration_ms == b.frame(k).duration_ms);
     }

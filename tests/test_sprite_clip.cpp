@@ -264,6 +264,9 @@ TEST(SpriteSheet, ChecksFramesClipsAndSlices) {
                  {"frames[0].duration_ms", "positive", "got 0"});
     expect_error([] { SpriteSheet s({.width = 8, .height = 8, .frames = {{.rect = {0, 0, 8, 8}, .offset_x = 2, .source_width = 9}}}); },
                  {"frames[0].offset", "outside the 9x8 untrimmed image"});
+    // A frame that is its whole untrimmed image may sit anywhere (a crop that keeps its place).
+    EXPECT_EQ(SpriteSheet({.width = 8, .height = 8, .frames = {{.rect = {0, 0, 8, 8}, .offset_x = -3, .offset_y = 40}}}).frame(0).offset_x, -3);
+    expect_error([&] { SpriteSheet s({.width = 8, .height = 8, .scale = 0.0, .frames = {ok}}); }, {"scale must be positive and finite (got 0)"});
     expect_error([&] { SpriteSheet s({.width = 8, .height = 8, .frames = {ok}, .clips = {{.from = 0, .to = 1}}}); },
                  {"clips[0].to", "frame count 1"});
     expect_error([&] { SpriteSheet s({.width = 8, .height = 8, .frames = {ok}, .clips = {{.repeat = -1}}}); },

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "seeds.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,6 +15,8 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 namespace {
@@ -693,4 +697,269 @@ TEST(SvgJustReachingArcs, DecimalDataThatOnlyRoundsToReachingIsSnapped) {
         EXPECT_NEAR(path.length(), 2.0 * pi * c.radius, 1e-13 * c.radius);
         EXPECT_NEAR(grape::distance(path.point(0.25), path.point(0.75)), 2.0 * c.radius, 1e-13 * c.radius);
     }
+}
+
+// Exact arithmetic on doubles, for references independent of the code under test: a value is
+// an unevaluated sum of doubles, so sums are exact by concatenation and products by Dekker's
+// exact two-product of every pair of terms; only the final read-out rounds.
+struct ExactSum {
+    std::vector<double> terms;
+};
+
+void split_halves(double a, double& hi, double& lo) {
+    const double c = 134217729.0 * a;  // 2²⁷ + 1: hi keeps the upper 26 bits of the significand
+    hi = c - (c - a);
+    lo = a - hi;
+}
+
+// The same value as few nonoverlapping doubles, smallest first (Shewchuk's grow-expansion
+// with Knuth's two-sum, exact; zeros dropped), so products and sums stay small.
+ExactSum compressed(const ExactSum& a) {
+    std::vector<double> expansion;
+    for (double t : a.terms) {
+        std::vector<double> grown;
+        for (const double e : expansion) {
+            const double s = t + e;
+            const double bv = s - t;
+            const double err = (t - (s - bv)) + (e - bv);
+            if (err != 0.0) grown.push_back(err);
+            t = s;
+        }
+        if (t != 0.0) grown.push_back(t);
+        expansion = std::move(grown);
+    }
+    return ExactSum{std::move(expansion)};
+}
+
+ExactSum operator*(const ExactSum& a_in, const ExactSum& b_in) {
+    const ExactSum a = compressed(a_in);
+    const ExactSum b = compressed(b_in);
+    ExactSum product;
+    for (const double x : a.terms) {
+        for (const double y : b.terms) {
+            double xh = 0.0, xl = 0.0, yh = 0.0, yl = 0.0;
+            split_halves(x, xh, xl);
+            split_halves(y, yh, yl);
+            const double p = x * y;
+            product.terms.push_back(p);
+            product.terms.push_back(((xh * yh - p) + xh * yl + xl * yh) + xl * yl);
+        }
+    }
+    return product;
+}
+
+ExactSum operator+(ExactSum a, const ExactSum& b) {
+    a.terms.insert(a.terms.end(), b.terms.begin(), b.terms.end());
+    return a;
+}
+
+ExactSum operator-(ExactSum a, ExactSum b) {
+    for (double& t : b.terms) t = -t;
+    return std::move(a) + b;
+}
+
+// The sum rounded to a few ulps: its nonoverlapping expansion summed from the smallest part
+// up rounds only at the top.
+double value_of(const ExactSum& a) {
+    double sum = 0.0;
+    for (const double e : compressed(a).terms) sum += e;
+    return sum;
+}
+
+ExactSum exact(double a) { return ExactSum{{a}}; }
+
+TEST(SvgJustReachingArcs, TheExactReferenceIsExact) {
+    // (1 + 2⁻³⁰)² − (1 + 2⁻²⁹) is 2⁻⁶⁰, the term a double product drops.
+    const double a = 1.0 + std::ldexp(1.0, -30);
+    EXPECT_EQ(value_of(exact(a) * exact(a) - exact(1.0 + std::ldexp(1.0, -29))), std::ldexp(1.0, -60));
+    EXPECT_EQ(value_of(exact(3.0) * exact(7.0) - exact(21.0)), 0.0);
+    // 0.1 and 0.01 are 3602879701896397/2⁵⁵ and 5764607523034235/2⁵⁹: 0.1² − 0.01 is
+    // 12980742146337070512478121581609/2¹¹⁰ − 5764607523034235/2⁵⁹ = 9.020562075079397e-19
+    // (Python's fractions.Fraction), where the double product says 0.010000000000000002.
+    EXPECT_DOUBLE_EQ(value_of(exact(0.1) * exact(0.1) - exact(0.01)), 9.020562075079397e-19);
+}
+
+// One arc as the parser reads it, with its exact radicand 1 − Λ (the SVG notes' Λ, F.6.6):
+// how far the radii are from just reaching, from the very doubles of the data.
+struct NearReachingArc {
+    Vec2 from, to;
+    double rx = 0.0, ry = 0.0, rotation = 0.0;  // rotation in degrees: any for a circle, else a multiple of 30° or 45°
+    bool large_arc = false, sweep = false;
+
+    std::string data() const {
+        char text[256];
+        std::snprintf(text, sizeof text, "M %.17g %.17g A %.17g %.17g %.17g %d %d %.17g %.17g", from.x, from.y, rx, ry,
+                      rotation, large_arc ? 1 : 0, sweep ? 1 : 0, to.x, to.y);
+        return text;
+    }
+
+    // 1 − Λ = 1 − (x1/rx)² − (y1/ry)² with (x1, y1) = (c·hx + s·hy, −s·hx + c·hy), h half the
+    // chord, c and s the rotation's cosine and sine. Times rx²·ry² that is
+    //   rx²ry² − ry²(c²hx² + s²hy²) − rx²(s²hx² + c²hy²) − 2cs·hx·hy·(ry² − rx²),
+    // exact for rotations whose c², s² are rational and 2cs is rational or a rational times √3
+    // (multiples of 30° and 45°); a circle's Λ is |h|²/r² whatever its rotation.
+    double radicand() const {
+        double c2 = 1.0, s2 = 0.0, cs_rational = 0.0, cs_root3 = 0.0;  // 2cs = cs_rational + cs_root3·√3
+        if (rx != ry) {
+            const double degrees = std::fmod(rotation, 360.0) + (rotation < 0.0 ? 360.0 : 0.0);
+            const int k30 = static_cast<int>(std::lround(degrees / 30.0));
+            const int k45 = static_cast<int>(std::lround(degrees / 45.0));
+            if (degrees == 45.0 * k45 && k45 % 2 == 1) {
+                c2 = s2 = 0.5;
+                cs_rational = (k45 % 4 == 1) ? 1.0 : -1.0;  // 45°, 225°: 2cs = 1; 135°, 315°: −1
+            } else if (degrees == 30.0 * k30) {
+                // cos² and sin 2θ at θ = 30°·k: (1, 0), (¾, √3/2), (¼, √3/2), (0, 0), (¼, −√3/2), (¾, −√3/2), …
+                constexpr double cos2[] = {1, 0.75, 0.25, 0, 0.25, 0.75};
+                constexpr double sin2[] = {0, 0.5, 0.5, 0, -0.5, -0.5};
+                c2 = cos2[k30 % 6];
+                s2 = 1.0 - c2;
+                cs_root3 = sin2[k30 % 6];
+            } else {
+                ADD_FAILURE() << "no exact reference for a rotation of " << rotation;
+            }
+        }
+        const ExactSum hx = exact(from.x * 0.5) - exact(to.x * 0.5);  // halving is exact
+        const ExactSum hy = exact(from.y * 0.5) - exact(to.y * 0.5);
+        const ExactSum rx2 = exact(rx) * exact(rx);
+        const ExactSum ry2 = exact(ry) * exact(ry);
+        const ExactSum hx2 = hx * hx;
+        const ExactSum hy2 = hy * hy;
+        const ExactSum cross = hx * hy * (ry2 - rx2);
+        const ExactSum scale = rx2 * ry2;
+        const ExactSum p = scale - ry2 * (exact(c2) * hx2 + exact(s2) * hy2) - rx2 * (exact(s2) * hx2 + exact(c2) * hy2) -
+                           exact(cs_rational) * cross;
+        const ExactSum q = exact(-cs_root3) * cross;
+        // p + √3·q without cancellation: where they nearly cancel, (p² − 3q²)/(p − √3·q).
+        const double pv = value_of(p);
+        const double qv = value_of(q);
+        const double root3 = std::sqrt(3.0);
+        double n = pv;
+        if (qv != 0.0) {
+            n = (pv > 0.0) == (qv > 0.0) ? pv + root3 * qv : value_of(p * p - exact(3.0) * q * q) / (pv - root3 * qv);
+        }
+        return n / value_of(scale);
+    }
+
+    // The arc's sweep on the unit circle the ellipse maps to: half a turn, plus or minus twice
+    // the angle the center's offset √(1 − Λ) (in radii, along the chord's bisector) subtends.
+    double exact_sweep() const {
+        const double half_turn_change = 2.0 * std::asin(std::sqrt(radicand()));
+        return (sweep ? 1.0 : -1.0) * (pi + (large_arc ? half_turn_change : -half_turn_change));
+    }
+};
+
+double parametric_sweep(const Path& part) {
+    const grape::PathSpec spec = grape::describe(part);
+    if (const auto* circle = std::get_if<grape::CircleSpec>(&spec)) return circle->end_angle - circle->start_angle;
+    const auto& ellipse = std::get<grape::EllipticalArcSpec>(spec);
+    return ellipse.end_angle - ellipse.start_angle;
+}
+
+// Ordinary rounding after the radicand: two atan2 (an ulp of π each, on arguments a few ulps
+// off), the turn added to their difference, and for a circle the rotation added to each angle:
+// fewer than 32 ulps of 1 on a sweep near π. A circle's length r·|sweep| adds an ulp.
+constexpr double sweep_tolerance = 32 * eps;
+
+struct ArcErrors {
+    double sweep = 0.0;   // largest |sweep − exact| / π
+    double length = 0.0;  // largest relative length error, circles only
+};
+
+ArcErrors check_near_reaching(const NearReachingArc& arc) {
+    SCOPED_TRACE(arc.data());
+    const ComplexPath path = parse_svg_path(arc.data());
+    EXPECT_EQ(path.parts().size(), 1u);
+    if (path.parts().size() != 1u) return {};
+    const double exact_sweep = arc.exact_sweep();
+    const double sweep = parametric_sweep(path.parts()[0]);
+    EXPECT_NEAR(sweep, exact_sweep, sweep_tolerance) << "radicand " << arc.radicand();
+    ArcErrors errors{std::abs(sweep - exact_sweep) / pi, 0.0};
+    if (arc.rx == arc.ry) {
+        const double exact_length = arc.rx * std::abs(exact_sweep);
+        EXPECT_NEAR(path.length(), exact_length, (sweep_tolerance / pi + eps) * exact_length);
+        errors.length = std::abs(path.length() - exact_length) / exact_length;
+    }
+    return errors;
+}
+
+void record(const char* name, double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2e", value);
+    ::testing::Test::RecordProperty(name, text);
+}
+
+TEST(SvgJustReachingArcs, DecimalRadiiJustPastReachingAreExact) {
+    // Radii a hair longer than half the chord (the radicand 1 − Λ between 1e-14 and 1e-8):
+    // the center sits √(1 − Λ) radii off the chord, and Λ rounded to a double near 1 costs up
+    // to 1e-9 of the sweep. Circles, an ellipse reaching along its y axis, one turned a quarter.
+    std::vector<NearReachingArc> arcs{
+        {{98, 0}, {0, 0}, 49.0000001, 49.0000001, 0, true, true},
+        {{10, 10}, {20, 10}, 5.000000000001, 5.000000000001, 0, false, true},
+        {{10, 10}, {20, 10}, 5.00000000000005, 5.00000000000005, 30, true, false},
+        {{20.32, 2.91}, {7.12, 25.31}, 13.0000000001, 13.0000000001, 0, true, true},
+        {{0.53, 28.33}, {0.53, 13.41}, 7.4600000001, 7.4600000001, 0, false, false},
+        {{0, 0}, {0, 40}, 30, 20.0000000001, 0, true, false},
+        {{0, 0}, {0, 60}, 30.00000000001, 20, 90, false, true},
+        {{-3.5, 7.25}, {96.5, 7.25}, 50.000000000002, 80, 0, true, true},
+        {{0, 0}, {-28.2842712474619, 28.2842712474619}, 30, 20.0000000001, 45, true, true},
+        {{5, 5}, {5 + 75 * 0.8660254037844386, 5 + 75 * 0.5}, 37.5000000001, 12, 30, false, true},
+        {{5, 5}, {5 - 24 * 0.8660254037844386, 5 - 24 * 0.5}, 37.5, 12.00000000001, 120, true, false},
+    };
+    ArcErrors worst;
+    for (const NearReachingArc& arc : arcs) {
+        const double radicand = arc.radicand();
+        EXPECT_GT(radicand, 16 * eps) << arc.data();  // past the few ulps that snap (below)
+        EXPECT_LT(radicand, 1e-7) << arc.data();
+        const ArcErrors e = check_near_reaching(arc);
+        worst.sweep = std::max(worst.sweep, e.sweep);
+        worst.length = std::max(worst.length, e.length);
+    }
+    record("largest_sweep_error", worst.sweep);
+    record("largest_length_error", worst.length);
+}
+
+TEST(SvgJustReachingArcs, RandomArcsWithRadicandsNearZeroAreExact) {
+    // Random circles (any rotation) and ellipses (turned by multiples of 30° and 45°, where the
+    // reference is exact) whose exact radicand lies between 16 ulps and 1e-12, drawn at every
+    // flag combination.
+    std::mt19937_64 rng(grape::testing::test_seed(20261207));
+    std::uniform_real_distribution<double> coordinate(-200.0, 200.0);
+    std::uniform_real_distribution<double> radius(0.5, 150.0);
+    std::uniform_real_distribution<double> turn(0.0, 2.0 * pi);
+    std::uniform_real_distribution<double> decades(-14.3, -12.0);
+    std::uniform_int_distribution<int> bit(0, 1);
+    ArcErrors worst;
+    int circles = 0;
+    int ellipses = 0;
+    for (int attempt = 0; attempt < 1000000 && circles + ellipses < 4000; ++attempt) {
+        NearReachingArc arc;
+        const bool circle = bit(rng) == 1;
+        arc.from = {coordinate(rng), coordinate(rng)};
+        arc.rx = radius(rng);
+        arc.ry = circle ? arc.rx : radius(rng);
+        constexpr double turns[] = {0, 30, 45, 60, 90, 120, 135, 150, 180, 210, 225, 240, 270, 300, 315, 330};
+        arc.rotation = circle ? 360.0 * bit(rng) * turn(rng) / (2.0 * pi) : turns[std::uniform_int_distribution<int>(0, 15)(rng)];
+        arc.large_arc = bit(rng) == 1;
+        arc.sweep = bit(rng) == 1;
+        // Half the chord at Λ = 1 − 10^decades on the unit circle, mapped to the ellipse's axes
+        // and turned into the data's: from − to = 2·half.
+        const double reach = std::sqrt(1.0 - std::pow(10.0, decades(rng)));
+        const double psi = turn(rng);
+        const double x1 = arc.rx * reach * std::cos(psi);
+        const double y1 = arc.ry * reach * std::sin(psi);
+        const double phi = arc.rotation * (pi / 180.0);
+        const Vec2 half{std::cos(phi) * x1 - std::sin(phi) * y1, std::sin(phi) * x1 + std::cos(phi) * y1};
+        arc.to = arc.from - 2.0 * half;
+        const double radicand = arc.radicand();
+        if (!(radicand > 16 * eps && radicand < 1e-12)) continue;  // the rounded data moved it
+        (circle ? circles : ellipses) += 1;
+        const ArcErrors e = check_near_reaching(arc);
+        worst.sweep = std::max(worst.sweep, e.sweep);
+        worst.length = std::max(worst.length, e.length);
+        if (::testing::Test::HasFailure()) break;
+    }
+    EXPECT_GT(circles, 1000);
+    EXPECT_GT(ellipses, 1000);
+    record("largest_sweep_error", worst.sweep);
+    record("largest_length_error", worst.length);
 }

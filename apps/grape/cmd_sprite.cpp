@@ -103,13 +103,13 @@ json info(const SpriteSheet& sheet) {
         slices.push_back({{"name", s.name}, {"keys", std::move(keys)}});
     }
     return {{"image", sheet.image()}, {"width", sheet.width()}, {"height", sheet.height()},
-            {"frame_count", sheet.frame_count()}, {"frames", std::move(frames)}, {"clips", std::move(clips)},
-            {"slices", std::move(slices)}};
+            {"scale", number_json(sheet.scale())}, {"frame_count", sheet.frame_count()}, {"frames", std::move(frames)},
+            {"clips", std::move(clips)}, {"slices", std::move(slices)}};
 }
 
 // A sheet without tags (a TexturePacker atlas) plays all its frames in order.
 SpriteSheet with_all_frames_clip(const SpriteSheet& sheet) {
-    SpriteSheetDef def{.image = sheet.image(), .width = sheet.width(), .height = sheet.height(),
+    SpriteSheetDef def{.image = sheet.image(), .width = sheet.width(), .height = sheet.height(), .scale = sheet.scale(),
                        .frames = {sheet.frames().begin(), sheet.frames().end()},
                        .clips = {{.name = "all", .from = 0, .to = sheet.frame_count() - 1}},
                        .slices = {sheet.slices().begin(), sheet.slices().end()}};

@@ -37,8 +37,8 @@ struct SpriteFrame {
     std::string name{};          ///< the exporter's key or file name ("" allowed)
     FrameRect rect{};            ///< its pixels on the sheet; for a rotated frame the turned region (rect.width = height())
     bool rotated = false;      ///< stored turned 90° clockwise on the sheet (TexturePacker): its top-left pixel is the region's top-right
-    int offset_x = 0;          ///< left of the trimmed pixels in the untrimmed image, pixels (spriteSourceSize.x)
-    int offset_y = 0;          ///< top of the trimmed pixels in the untrimmed image, pixels (spriteSourceSize.y)
+    int offset_x = 0;          ///< left of the trimmed pixels in the untrimmed image, pixels (spriteSourceSize.x; any sign for an untrimmed frame that keeps its position)
+    int offset_y = 0;          ///< top of the trimmed pixels in the untrimmed image, pixels (spriteSourceSize.y; likewise)
     int source_width = 0;      ///< untrimmed image width, pixels (sourceSize.w); 0: width()
     int source_height = 0;     ///< untrimmed image height, pixels (sourceSize.h); 0: height()
     double duration_ms = 100;  ///< how long it shows at rate 1, milliseconds (> 0)
@@ -83,6 +83,7 @@ struct SpriteSheetDef {
     std::string image{};                ///< the sheet picture, as the data names it ("" unknown)
     int width = 0;                    ///< sheet width, pixels (> 0)
     int height = 0;                   ///< sheet height, pixels (> 0)
+    double scale = 1.0;               ///< the art's scale on the sheet (TexturePacker's meta.scale, > 0): 0.5 for an @1x sheet of @2x art
     std::vector<SpriteFrame> frames{};  ///< at least one
     std::vector<SpriteClip> clips{};    ///< named clips ("" names allowed; the first of a name wins)
     std::vector<SpriteSlice> slices{};  ///< named regions
@@ -92,9 +93,11 @@ struct SpriteSheetDef {
 class GRAPE_SPRITE_API SpriteSheet {
 public:
     /// Checks and keeps `def`: throws grape::Error naming the field (frames[3].duration_ms, …)
-    /// when the sheet is empty, a frame leaves the sheet or its untrimmed image, a duration is
-    /// not positive and finite, or a clip or slice key names a frame past the end. A source
-    /// size of 0 becomes the frame's own size.
+    /// when the sheet is empty, a trimmed frame leaves the sheet or its untrimmed image, a
+    /// duration is not positive and finite, the scale is not positive and finite, or a clip or
+    /// slice key names a frame past the end. A frame that is its whole untrimmed image may sit
+    /// at any offset (TexturePacker's "crop, keep position"). A source size of 0 becomes the
+    /// frame's own size.
     explicit SpriteSheet(SpriteSheetDef def);
 
     /// The sheet picture's name, as the data gave it.
@@ -103,6 +106,9 @@ public:
     int width() const noexcept { return def_.width; }
     /// Sheet height, pixels.
     int height() const noexcept { return def_.height; }
+    /// The art's scale on the sheet: every pixel value of the sheet is in the sheet picture's
+    /// pixels; divide by scale for the art's own pixels (1 unless the packer scaled it).
+    double scale() const noexcept { return def_.scale; }
     /// Number of frames.
     std::size_t frame_count() const noexcept { return def_.frames.size(); }
     /// Frame k (k < frame_count(); asserted in debug builds).

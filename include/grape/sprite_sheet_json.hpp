@@ -33,8 +33,10 @@ GRAPE_SCENE_API SpriteSheet load_sprite_sheet_file(const std::filesystem::path& 
 GRAPE_SCENE_API std::filesystem::path sprite_sheet_image_path(const SpriteSheet& sheet,
                                                               const std::filesystem::path& json_file);
 /// The sheet as Aseprite JSON in either layout: frames with durations, tags, slices with
-/// pivots (a frame's own pivot is kept only through slices). The hash layout keys frames by
-/// name, so names must then be unique and not empty (grape::Error otherwise).
+/// pivots (a frame's own pivot is kept only through slices), the scale. The hash layout keys
+/// frames by name, so names must then be unique and not empty (grape::Error otherwise). On a
+/// sheet of several sprites (docs/sprite-sheets.md) a clip whose name starts with a sprite's
+/// title is written counting that sprite's frames, and must lie within them (grape::Error).
 GRAPE_SCENE_API std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout);
 
 }  // namespace grape

@@ -125,7 +125,7 @@ void load_scene_sprite_sheets(Scene& scene, const std::filesystem::path& folder)
                      "the sheet has " + std::to_string(sheet.frame_count()) + " frames (0 to " +
                          std::to_string(sheet.frame_count() - 1) + ")");
             // The range becomes a clip of the sheet's own: the same frames, one clip more.
-            SpriteSheetDef def{.image = sheet.image(), .width = sheet.width(), .height = sheet.height(),
+            SpriteSheetDef def{.image = sheet.image(), .width = sheet.width(), .height = sheet.height(), .scale = sheet.scale(),
                                .frames = {sheet.frames().begin(), sheet.frames().end()},
                                .clips = {sheet.clips().begin(), sheet.clips().end()},
                                .slices = {sheet.slices().begin(), sheet.slices().end()}};

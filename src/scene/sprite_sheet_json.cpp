@@ -14,8 +14,10 @@
 #include <cmath>
 #include <fstream>
 #include <set>
+#include <span>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 namespace grape {
 namespace {
@@ -105,29 +107,48 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
                            size_text(f.rect.width, f.rect.height) + (f.rotated ? " (rotated)" : "") + " leaves the " +
                            size_text(sheet_w, sheet_h) + " sheet (meta.size)");
     }
+    // The pixels' own size and place on the sheet: the frame's, or inside it past Aseprite's
+    // inner padding (its exporter makes each cell the trimmed size plus the padding p on every
+    // side, writes the cell as `frame` and the trimmed pixels' size in spriteSourceSize).
+    int pixels_w = upright.width;
+    int pixels_h = upright.height;
     if (const json* s = optional(j, "spriteSourceSize")) {
         const std::string at = child(pointer, "spriteSourceSize");
         const FrameRect r = rect(*s, at, 1);
-        if (r.width != upright.width || r.height != upright.height) {
-            fail(at, "size " + size_text(r.width, r.height) + " differs from the frame's " +
-                         size_text(upright.width, upright.height));
+        const int extra_w = upright.width - r.width;
+        const int extra_h = upright.height - r.height;
+        if (extra_w != 0 || extra_h != 0) {
+            if (extra_w != extra_h || extra_w < 0 || extra_w % 2 != 0) {
+                fail(at, "size " + size_text(r.width, r.height) + " differs from the frame's " +
+                             size_text(upright.width, upright.height) +
+                             " other than by an inner padding (the frame larger by the same even number on both axes)");
+            }
+            const int padding = extra_w / 2;
+            pixels_w = r.width;
+            pixels_h = r.height;
+            f.rect = f.rotated ? FrameRect{f.rect.x + padding, f.rect.y + padding, pixels_h, pixels_w}
+                               : FrameRect{f.rect.x + padding, f.rect.y + padding, pixels_w, pixels_h};
         }
         f.offset_x = r.x;
         f.offset_y = r.y;
     }
-    f.source_width = upright.width;
-    f.source_height = upright.height;
+    f.source_width = pixels_w;
+    f.source_height = pixels_h;
     if (const json* s = optional(j, "sourceSize")) {
         const std::string at = child(pointer, "sourceSize");
         object(*s, at);
         f.source_width = pixels(*s, at, "w", 1);
         f.source_height = pixels(*s, at, "h", 1);
     }
-    if (f.offset_x < 0 || f.offset_y < 0 || std::int64_t{f.offset_x} + upright.width > f.source_width ||
-        std::int64_t{f.offset_y} + upright.height > f.source_height) {
+    // Trimmed pixels lie inside the untrimmed image. Pixels that are the whole image may sit
+    // anywhere: TexturePacker's "crop, keep position" makes the crop the sprite (sourceSize)
+    // and keeps where it was in the art as spriteSourceSize's x, y, of any sign.
+    const bool whole_image = pixels_w == f.source_width && pixels_h == f.source_height;
+    if (!whole_image && (f.offset_x < 0 || f.offset_y < 0 || std::int64_t{f.offset_x} + pixels_w > f.source_width ||
+                         std::int64_t{f.offset_y} + pixels_h > f.source_height)) {
         fail(child(pointer, "spriteSourceSize"),
-             "puts the trimmed " + size_text(upright.width, upright.height) + " pixels at (" + std::to_string(f.offset_x) +
-                 ", " + std::to_string(f.offset_y) + "), outside the " + size_text(f.source_width, f.source_height) +
+             "puts the trimmed " + size_text(pixels_w, pixels_h) + " pixels at (" + std::to_string(f.offset_x) + ", " +
+                 std::to_string(f.offset_y) + "), outside the " + size_text(f.source_width, f.source_height) +
                  " sourceSize");
     }
     if (const json* d = optional(j, "duration")) {
@@ -135,14 +156,31 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
         f.duration_ms = number(*d, at);
         if (!(f.duration_ms > 0.0)) fail(at, "must be positive, milliseconds (got " + number_text(f.duration_ms) + ")");
     }
-    if (const json* p = optional(j, "pivot")) {  // TexturePacker: a fraction of the untrimmed size
-        const std::string at = child(pointer, "pivot");
+    // TexturePacker's pivot (`anchor` in its PixiJS format): a fraction of the sprite's size,
+    // from its top-left. A kept-position crop's sprite is the crop, where it sat in the art.
+    const char* pivot_key = optional(j, "pivot") ? "pivot" : "anchor";
+    if (const json* p = optional(j, pivot_key)) {
+        const std::string at = child(pointer, pivot_key);
         object(*p, at);
         const double px = number(required(*p, at, "x"), child(at, "x"));
         const double py = number(required(*p, at, "y"), child(at, "y"));
-        f.pivot = {px * f.source_width, py * f.source_height};
+        const Vec2 origin = whole_image ? Vec2{double(f.offset_x), double(f.offset_y)} : Vec2{};
+        f.pivot = origin + Vec2{px * f.source_width, py * f.source_height};
     }
     return f;
+}
+
+// Both tools write the scale as a string of a decimal number ("1", "0.5"); a number is taken too.
+double sheet_scale(const json& j, const std::string& pointer) {
+    double v = 0.0;
+    if (j.is_string()) {
+        const std::string s = j.get<std::string>();
+        if (!detail::parse_finite(s, v)) fail(pointer, "expected a number as text, like \"0.5\" (got \"" + s + "\")");
+    } else {
+        v = number(j, pointer);
+    }
+    if (!(v > 0.0)) fail(pointer, "must be positive (got " + number_text(v) + ")");
+    return v;
 }
 
 ClipDirection direction(const json& j, const std::string& pointer) {
@@ -172,13 +210,89 @@ int repeat(const json& j, const std::string& pointer) {
     return static_cast<int>(v);
 }
 
-SpriteClip read_tag(const json& j, const std::string& pointer, std::size_t count) {
+// One of several sprites Aseprite packed onto a sheet: its frames are the run of `count` from
+// sheet frame `first`, and its tags count from its own first frame.
+struct PackedSprite {
+    std::string title;
+    std::size_t first = 0;
+    std::size_t count = 0;
+};
+
+bool is_alphanumeric(char c) noexcept {
+    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+// The sprites of a sheet that says it packs several: every frame has the name Aseprite gives
+// frames of several files by default, "TITLE N.EXT" (N counted from 0 in each sprite) or
+// "TITLE.EXT" for a sprite of one frame, each title's frames one run, and two titles or more.
+// Anything else: none.
+std::vector<PackedSprite> packed_sprites(std::span<const SpriteFrame> frames) {
+    std::vector<PackedSprite> sprites;
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        const std::string& name = frames[k].name;
+        const std::size_t dot = name.rfind('.');
+        if (dot == std::string::npos || dot == 0 || dot + 1 == name.size()) return {};
+        for (std::size_t i = dot + 1; i < name.size(); ++i) {
+            if (!is_alphanumeric(name[i])) return {};
+        }
+        std::string title = name.substr(0, dot);
+        std::size_t number = 0;
+        bool numbered = false;
+        const std::size_t space = title.rfind(' ');
+        const std::size_t digits = space == std::string::npos ? 0 : title.size() - space - 1;
+        if (digits > 0 && digits <= 9 && space > 0 &&
+            title.find_first_not_of("0123456789", space + 1) == std::string::npos) {
+            number = std::stoul(title.substr(space + 1));
+            numbered = true;
+            title.resize(space);
+        }
+        if (!sprites.empty() && sprites.back().title == title) {
+            if (!numbered || number != sprites.back().count) return {};
+            ++sprites.back().count;
+            continue;
+        }
+        if (numbered && number != 0) return {};
+        for (const PackedSprite& s : sprites) {
+            if (s.title == title) return {};
+        }
+        sprites.push_back({std::move(title), k, 1});
+    }
+    if (sprites.size() < 2) return {};
+    return sprites;
+}
+
+// The sprite a tag names when Aseprite wrote it with a tag name format that starts with the
+// title ("{title}/{tag}" gives "hero/walk"): the longest title followed by a separator.
+const PackedSprite* sprite_of_tag(const std::string& tag, const std::vector<PackedSprite>& sprites) {
+    const PackedSprite* found = nullptr;
+    for (const PackedSprite& s : sprites) {
+        if (tag.size() > s.title.size() + 1 && tag.compare(0, s.title.size(), s.title) == 0 &&
+            !is_alphanumeric(tag[s.title.size()]) && (!found || s.title.size() > found->title.size())) {
+            found = &s;
+        }
+    }
+    return found;
+}
+
+SpriteClip read_tag(const json& j, const std::string& pointer, std::size_t count, const std::vector<PackedSprite>& sprites) {
     object(j, pointer);
     SpriteClip c;
     c.name = string(required(j, pointer, "name"), child(pointer, "name"));
-    c.from = frame_index(j, pointer, "from", count);
-    c.to = frame_index(j, pointer, "to", count);
-    if (c.to < c.from) fail(child(pointer, "to"), std::to_string(c.to) + " is before from (" + std::to_string(c.from) + ")");
+    // Aseprite numbers each packed sprite's tags from that sprite's first frame.
+    const PackedSprite* sprite = sprite_of_tag(c.name, sprites);
+    const std::size_t first = sprite ? sprite->first : 0;
+    const std::size_t frames = sprite ? sprite->count : count;
+    try {
+        c.from = first + frame_index(j, pointer, "from", frames);
+        c.to = first + frame_index(j, pointer, "to", frames);
+    } catch (const Error& e) {
+        if (!sprite) throw;
+        throw Error(std::string(e.what()) + " of sprite \"" + sprite->title + "\" (sheet frames " +
+                    std::to_string(first) + " to " + std::to_string(first + frames - 1) + ")");
+    }
+    if (c.to < c.from) {
+        fail(child(pointer, "to"), std::to_string(c.to - first) + " is before from (" + std::to_string(c.from - first) + ")");
+    }
     if (const json* d = optional(j, "direction")) c.direction = direction(*d, child(pointer, "direction"));
     if (const json* r = optional(j, "repeat")) c.repeat = repeat(*r, child(pointer, "repeat"));
     return c;
@@ -221,6 +335,7 @@ SpriteSheet read_sheet(const json& root) {
     def.width = pixels(size, "/meta/size", "w", 1);
     def.height = pixels(size, "/meta/size", "h", 1);
     if (const json* image = optional(meta, "image")) def.image = string(*image, "/meta/image");
+    if (const json* scale = optional(meta, "scale")) def.scale = sheet_scale(*scale, "/meta/scale");
 
     const json& frames = required(root, "", "frames");
     if (frames.is_object()) {
@@ -244,7 +359,10 @@ SpriteSheet read_sheet(const json& root) {
     const std::size_t count = def.frames.size();
     if (const json* tags = optional(meta, "frameTags")) {
         if (!tags->is_array()) fail("/meta/frameTags", "expected an array, got " + type_of(*tags));
-        for (std::size_t k = 0; k < tags->size(); ++k) def.clips.push_back(read_tag((*tags)[k], child("/meta/frameTags", k), count));
+        const std::vector<PackedSprite> sprites = packed_sprites(def.frames);
+        for (std::size_t k = 0; k < tags->size(); ++k) {
+            def.clips.push_back(read_tag((*tags)[k], child("/meta/frameTags", k), count, sprites));
+        }
     }
     if (const json* slices = optional(meta, "slices")) {
         if (!slices->is_array()) fail("/meta/slices", "expected an array, got " + type_of(*slices));
@@ -326,9 +444,22 @@ std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) 
         }
     }
     const char* directions[] = {"forward", "reverse", "pingpong", "pingpong_reverse"};
+    // On a sheet of several sprites a tag that names its sprite counts that sprite's frames, as
+    // the reader has it.
+    const std::vector<PackedSprite> sprites = packed_sprites(sheet.frames());
     json tags = json::array();
     for (const SpriteClip& c : sheet.clips()) {
-        json t = {{"name", c.name}, {"from", c.from}, {"to", c.to}, {"direction", directions[static_cast<int>(c.direction)]}};
+        std::size_t first = 0;
+        if (const PackedSprite* sprite = sprite_of_tag(c.name, sprites)) {
+            if (c.from < sprite->first || c.to >= sprite->first + sprite->count) {
+                throw Error("save_sprite_sheet: clip '" + c.name + "' names sprite '" + sprite->title + "' (sheet frames " +
+                            std::to_string(sprite->first) + " to " + std::to_string(sprite->first + sprite->count - 1) +
+                            ") but plays frames " + std::to_string(c.from) + " to " + std::to_string(c.to));
+            }
+            first = sprite->first;
+        }
+        json t = {{"name", c.name}, {"from", c.from - first}, {"to", c.to - first},
+                  {"direction", directions[static_cast<int>(c.direction)]}};
         if (c.repeat > 0) t["repeat"] = std::to_string(c.repeat);  // a string, as Aseprite writes it
         tags.push_back(std::move(t));
     }
@@ -347,7 +478,7 @@ std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) 
                  {"image", sheet.image()},
                  {"format", "RGBA8888"},
                  {"size", {{"w", sheet.width()}, {"h", sheet.height()}}},
-                 {"scale", "1"},
+                 {"scale", number_text(sheet.scale())},
                  {"frameTags", std::move(tags)},
                  {"layers", json::array()},
                  {"slices", std::move(slices)}};

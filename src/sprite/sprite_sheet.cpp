@@ -22,6 +22,9 @@ SpriteSheet::SpriteSheet(SpriteSheetDef def) : def_(std::move(def)) {
                     std::to_string(def_.height) + ")");
     }
     if (def_.frames.empty()) throw Error("SpriteSheet: frames is empty; a sheet needs at least one frame");
+    if (!(std::isfinite(def_.scale) && def_.scale > 0.0)) {
+        throw Error("SpriteSheet: scale must be positive and finite (got " + detail::number_text(def_.scale) + ")");
+    }
     for (std::size_t k = 0; k < def_.frames.size(); ++k) {
         SpriteFrame& f = def_.frames[k];
         const FrameRect& r = f.rect;
@@ -37,8 +40,10 @@ SpriteSheet::SpriteSheet(SpriteSheetDef def) : def_(std::move(def)) {
         }
         if (f.source_width == 0) f.source_width = f.width();
         if (f.source_height == 0) f.source_height = f.height();
-        if (f.offset_x < 0 || f.offset_y < 0 || std::int64_t{f.offset_x} + f.width() > f.source_width ||
-            std::int64_t{f.offset_y} + f.height() > f.source_height) {
+        // Pixels that are the whole untrimmed image can be placed anywhere ("crop, keep
+        // position": the crop drawn where it was in the art); trimmed pixels lie inside it.
+        if (f.trimmed() && (f.offset_x < 0 || f.offset_y < 0 || std::int64_t{f.offset_x} + f.width() > f.source_width ||
+                            std::int64_t{f.offset_y} + f.height() > f.source_height)) {
             throw Error(at("frames", k, "offset") + "(" + std::to_string(f.offset_x) + ", " +
                         std::to_string(f.offset_y) + ") puts its " + std::to_string(f.width()) + "x" +
                         std::to_string(f.height()) + " pixels outside the " + std::to_string(f.source_width) +
