@@ -16,10 +16,16 @@ std::string number(double x) { return detail::general_text(x, 6); }
 // Frame counts up to 2^30 keep 2n − 2 in the 32-bit position (sums are formed in 64 bits).
 constexpr std::size_t max_frame_count = std::size_t{1} << 30;
 
+}  // namespace
+
+namespace detail {
+
 // A slot whose function can be replaced (or removed) by the function itself while it runs:
 // the running copy is moved out first and put back only if nobody assigned the slot meanwhile.
+// Named, not anonymous: SpritePlayer::Callbacks holds it, and in a unity build a member whose
+// type has internal linkage is a -Wsubobject-linkage warning.
 template <class F>
-struct Slot {
+struct CallbackSlot {
     F fn;
     std::uint64_t generation = 0;
 
@@ -38,13 +44,13 @@ struct Slot {
     }
 };
 
-}  // namespace
+}  // namespace detail
 
 struct SpritePlayer::Callbacks {
     Playable* playable = nullptr;
-    Slot<FrameCallback> frame;
-    Slot<CompleteCallback> complete;
-    Slot<LoopCallback> loop;
+    detail::CallbackSlot<FrameCallback> frame;
+    detail::CallbackSlot<CompleteCallback> complete;
+    detail::CallbackSlot<LoopCallback> loop;
     std::size_t cycles_done = 0;  // since `loop` was set
 };
 
