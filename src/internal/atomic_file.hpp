@@ -1,8 +1,11 @@
 // Files written in full or not at all, for the render and scene modules and the grape tool
-// (internal: not installed). Bytes go to a sibling temporary FILE.partial; commit() flushes
-// them, fsyncs, and renames the temporary over FILE (on Windows: FlushFileBuffers, then
-// MoveFileExW replacing FILE), so a reader sees the old file or the whole new one. Every failure (a full disk, a missing folder, a folder in the way) throws
-// grape::Error "cannot write FILE: REASON" and leaves neither FILE nor the temporary behind.
+// (internal: not installed). Bytes go to a sibling temporary FILE.partial-PID-N that only this
+// writer uses (created exclusively: O_EXCL, or _O_EXCL on Windows); commit() flushes them,
+// fsyncs, and renames the temporary over FILE (on Windows: FlushFileBuffers, then MoveFileExW
+// replacing FILE), so a reader sees the old file or one writer's whole new one, and of many
+// concurrent writers of FILE the last rename wins. Every failure (a full disk, a missing
+// folder, a folder in the way) throws grape::Error "cannot write FILE: REASON" and leaves
+// neither FILE nor the temporary behind.
 #pragma once
 
 #include <cstddef>
@@ -18,7 +21,7 @@ struct CleanupEntry;
 /// One file being written; destroying it uncommitted removes the temporary.
 class AtomicFile {
 public:
-    /// Opens FILE.partial for writing; throws if FILE is a folder or cannot be created.
+    /// Creates this writer's temporary beside FILE; throws if FILE is a folder or it cannot be created.
     explicit AtomicFile(std::filesystem::path file);
     ~AtomicFile();
     AtomicFile(const AtomicFile&) = delete;
