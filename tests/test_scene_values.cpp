@@ -320,6 +320,14 @@ TEST(SceneValues, BadInputNamesItsPointer) {
         {tween(R"("property": "x", "to": 1, "curve": "wobbly")"), "/tweens/0/curve", "nor is it a name in /curves"},
         {tween(R"j("property": "x", "to": 1, "curve": "svg(M0,0 A1,1 0 0 1 1,1)")j"), "/tweens/0/curve", ""},
         {tween(R"("property": "x", "to": 1, "speed": 2)"), "/tweens/0/speed", "unknown field"},
+        // Values that overflow on the way: a start of 1e308 moved by 1e308, a colour whose
+        // linear light is past the largest double, an elastic period whose 2π/p is infinite.
+        {R"({"properties": [{"name": "x", "value": 1e308}], "tweens": [{"property": "x", "by": 1e308, "duration": 1}]})",
+         "/tweens/0/by", "overflow the range of a double"},
+        {tween(R"("property": "c", "to": [1e308, 0, 0, 1])"), "/tweens/0/to", "overflow the range of a double"},
+        {tween(R"("property": "p", "from": [-1e308, 0], "to": [1.7e308, 0], "curve": "back-in-out")"), "/tweens/0/to",
+         "overflow the range of a double"},
+        {tween(R"j("property": "x", "to": 1, "curve": "elastic-out(1,1e-310)")j"), "/tweens/0/curve", "period must be >= 1e-15"},
         {R"({"properties": [{"name": "x", "type": "text", "value": 0}]})", "/properties/0/type", "unknown value \"text\""},
         {R"({"properties": [{"name": "x", "value": 0}, {"name": "x", "value": 1}]})", "/properties/1/name", "duplicate name"},
         {R"({"properties": [{"name": "x", "value": 0, "space": "oklab"}]})", "/properties/0/space", "only colours"},
@@ -344,6 +352,15 @@ TEST(SceneValues, BadInputNamesItsPointer) {
         SCOPED_TRACE(c.json);
         expect_error([&] { (void)grape::load_scene(c.json); }, {"scene: " + c.pointer + ": ", c.why});
     }
+}
+
+// Large values that stay finite all the way are kept: 0 by 1e308 is 5e307 half way.
+TEST(SceneValues, LargeValuesThatStayFiniteAreKept) {
+    const Scene scene = grape::load_scene(R"({"properties": [{"name": "x", "value": 0}],
+        "tweens": [{"property": "x", "by": 1e308, "duration": 1}]})");
+    const SceneProperties values(scene, SceneTiming(scene));
+    EXPECT_EQ(std::get<double>(values.value(0, 0.5)), 5e307);
+    EXPECT_EQ(std::get<double>(values.value(0, 1.0)), 1e308);
 }
 
 TEST(SceneValues, ScenesBuiltInCodeAreChecked) {

@@ -65,6 +65,41 @@ void check_value(const SceneValue& v, const SceneProperty& prop, const std::stri
     if (!finite(v)) fail(pointer, "number out of range");
 }
 
+// The progress a curve covers over t ∈ [0, 1]: the range of 257 samples and its ends, widened
+// by 1/64 of its width for peaks between samples; an elastic curve's swings can be narrower
+// than the samples, so its amplitude counts as reached either way.
+struct ProgressRange {
+    double lo = 0.0, hi = 1.0;
+};
+ProgressRange progress_range(const Curve& curve) noexcept {
+    ProgressRange r;
+    for (int k = 0; k <= 256; ++k) {
+        const double u = curve(k / 256.0);
+        r.lo = std::min(r.lo, u);
+        r.hi = std::max(r.hi, u);
+    }
+    const double widen = (r.hi - r.lo) / 64.0;
+    r.lo -= widen;
+    r.hi += widen;
+    const CurveKind kind = curve.kind();
+    if (kind >= CurveKind::elastic_in && kind <= CurveKind::elastic_out_in) {
+        r.lo = std::min(r.lo, -curve.parameter(0));
+        r.hi = std::max(r.hi, 1.0 + curve.parameter(0));
+    }
+    return r;
+}
+
+// True when every value the tween writes for progress in `range` is finite. Numbers, vec2 and
+// angles are linear in the progress, so finite at both ends (products included: an overflowing
+// product is infinite there) means finite between; a colour mixes through powers and cube
+// roots of each end, so half way is checked too.
+bool stays_finite(const SceneProperty& prop, const SceneValue& a, const SceneValue& b, ProgressRange range) noexcept {
+    if (!finite(a) || !finite(b)) return false;
+    for (double u : {range.lo, 0.5, range.hi})
+        if (!finite(interpolate(prop, a, b, u))) return false;
+    return true;
+}
+
 }  // namespace
 
 SceneValue interpolate(const SceneProperty& property, const SceneValue& a, const SceneValue& b, double u) noexcept {
@@ -127,6 +162,16 @@ SceneProperties::SceneProperties(const Scene& scene, const SceneTiming& timing)
             tweens_[i].from = start;
             if (mode == ValueMode::relative) tweens_[i].to = add(start, scene.tweens[i].to);
         }
+    }
+    // Values that overflow on the way (a start of 1e308 moved by 1e308, a colour whose linear
+    // light is past the largest double) would write infinities or NaN: refused, naming the
+    // end the tween gives.
+    for (std::size_t i = 0; i < tweens_.size(); ++i) {
+        const SceneTween& tw = scene.tweens[i];
+        const SceneProperty& prop = properties_[tweens_[i].property];
+        if (!stays_finite(prop, tweens_[i].from, tweens_[i].to, progress_range(tw.curve)))
+            fail(child(child("/tweens", i), tw.mode == ValueMode::relative ? "by" : "to"),
+                 "the values from the start to this end overflow the range of a double (property \"" + prop.name + "\")");
     }
 }
 
