@@ -37,8 +37,14 @@ run_full() {  # run_full CMD...: as run, on a disk where every write fails
 
 case $case_name in
 full_disk_png_frames)
-    # Every frame on a full disk: exit 2 naming the first, nothing left.
-    mkdir "$work/out.d"
+    # The second frame cannot be written (a folder in its place): exit 2 naming it, the first
+    # frame removed, the folder left as it was.
+    mkdir "$work/out.d" "$work/out.d/f-0002.png"
+    run "$grape" render "$scenes/seed_parabola.json" -o "$work/out.d/f.png" --frames 3 --fps 10
+    expect_error "$work/status" "$work/err" "cannot write $work/out.d/f-0002.png: it is a folder"
+    [ "$(ls -A "$work/out.d")" = f-0002.png ] || fail "files left: $(ls -A "$work/out.d")"
+    # Every frame on a full disk: nothing left.
+    rmdir "$work/out.d/f-0002.png"
     run_full "$grape" render "$scenes/seed_parabola.json" -o "$work/out.d/f.png" --frames 3 --fps 10
     expect_error "$work/status" "$work/err" "cannot write $work/out.d/f-0001.png: file too large"
     nothing_left "$work/out.d"
@@ -162,6 +168,28 @@ demo_out_unwritable)
     echo text >"$work/file"
     run "$grape" demo --out "$work/file/sub"
     expect_error "$work/status" "$work/err" "demo: --out $work/file/sub: cannot create the folder"
+    ;;
+demo_full_disk_new_folder)
+    # A failed demo removes the folders it created for --out (and the files in them).
+    run_full "$grape" demo --out "$work/new/sub"
+    expect_error "$work/status" "$work/err" ": file too large"
+    [ ! -e "$work/new" ] || fail "the demo's new folder is left: $(ls -AR "$work/new")"
+    ;;
+demo_full_disk_keeps_folder)
+    # The disk fills half way through the demo's pictures (a 256 KiB tmpfs; the pictures are
+    # ~470 KB): the folder keeps exactly what it held, the old gallery.png included.
+    if ! mkdir -p "$work/disk" || ! mount -t tmpfs -o size=256k tmpfs "$work/disk" 2>"$work/mount-err"; then
+        echo "mounting a tmpfs is not permitted here ($(cat "$work/mount-err")); demo_full_disk_new_folder covers a failed demo"
+        exit 77
+    fi
+    trap 'umount "$work/disk"' EXIT
+    echo old >"$work/disk/gallery.png"
+    echo mine >"$work/disk/notes.txt"
+    run "$grape" demo --out "$work/disk"
+    expect_error "$work/status" "$work/err" ": no space left on device"
+    [ "$(ls -A "$work/disk")" = "gallery.png
+notes.txt" ] || fail "files left or lost: $(ls -A "$work/disk")"
+    [ "$(cat "$work/disk/gallery.png")" = old ] || fail "the old gallery.png was replaced"
     ;;
 scene_is_folder)
     mkdir "$work/scene.json"

@@ -332,6 +332,47 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
     out.commit();
 }
 
+// -------------------------------------------------------------------------- StagingFolder
+
+StagingFolder::StagingFolder(std::filesystem::path folder, std::filesystem::path created)
+    : folder_(std::move(folder)), created_(std::move(created)) {
+    std::error_code ec;
+    for (int attempt = 0; attempt < temporary_attempts; ++attempt) {
+        staging_ = folder_ / (".partial-" + std::to_string(process_id()) + "-" +
+                              std::to_string(temporaries_named.fetch_add(1, std::memory_order_relaxed)));
+        if (std::filesystem::create_directory(staging_, ec)) return;
+        if (ec) break;  // false without an error: the name is taken, try the next
+    }
+    const int err = ec ? ec.default_error_condition().value() : EEXIST;
+    staging_.clear();
+    throw Error("cannot write " + utf8_string(folder_) + ": " +
+                (err == EEXIST ? std::string("every temporary name tried is taken") : write_failure_reason(err, folder_)));
+}
+
+StagingFolder::~StagingFolder() {
+    if (committed_ || staging_.empty()) return;
+    std::error_code ec;
+    std::filesystem::remove_all(staging_, ec);
+    if (created_.empty()) return;
+    // Only empty folders go (remove fails on any other): what was put there meanwhile stays.
+    for (std::filesystem::path p = folder_; !p.empty(); p = p.parent_path()) {
+        if (!std::filesystem::remove(p, ec) || p == created_ || p == p.parent_path()) break;
+    }
+}
+
+void StagingFolder::commit() {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(staging_, ec)) {
+        const std::filesystem::path to = folder_ / entry.path().filename();
+        if (const int err = replace_file(entry.path(), to))
+            throw Error("cannot write " + utf8_string(to) + ": " + write_failure_reason(err, to));
+    }
+    if (ec) throw Error("cannot write " + utf8_string(folder_) + ": " + write_failure_reason(ec.default_error_condition().value(), folder_));
+    std::filesystem::remove(staging_, ec);
+    committed_ = true;
+    sync_folder(folder_);
+}
+
 // ------------------------------------------------------------------------------- RunFiles
 
 RunFiles::~RunFiles() {

@@ -60,6 +60,32 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
 /// ("no space left on device"), or "folder F does not exist" for a missing folder.
 std::string write_failure_reason(int err, const std::filesystem::path& file);
 
+/// A folder's new files made visible together: they are written into a fresh staging folder
+/// inside FOLDER (.partial-PID-N), and commit() moves each over its name in FOLDER. Destroyed
+/// without commit() (the run failed), it removes the staging folder with everything in it,
+/// and then FOLDER and its parents up to CREATED (the outermost folder the run created; empty:
+/// none), each only if empty. So a failed run leaves FOLDER as it was, or gone if it made it.
+class StagingFolder {
+public:
+    /// Creates the staging folder; throws "cannot write FOLDER: REASON".
+    explicit StagingFolder(std::filesystem::path folder, std::filesystem::path created = {});
+    ~StagingFolder();
+    StagingFolder(const StagingFolder&) = delete;
+    StagingFolder& operator=(const StagingFolder&) = delete;
+
+    /// Where to write the files.
+    const std::filesystem::path& path() const noexcept { return staging_; }
+    /// Moves every staged file over its name in FOLDER and removes the staging folder; throws
+    /// "cannot write FILE: REASON" if a move fails (the files not yet moved are removed).
+    void commit();
+
+private:
+    std::filesystem::path folder_;
+    std::filesystem::path staging_;
+    std::filesystem::path created_;
+    bool committed_ = false;
+};
+
 /// Makes SIGINT and SIGTERM remove every file registered here (temporaries of AtomicFiles,
 /// the files of an unfinished RunFiles), then end the process by the same signal. For
 /// single-threaded programs such as the grape tool; call once at start.
