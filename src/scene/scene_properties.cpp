@@ -11,6 +11,8 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 
 namespace grape {
 
@@ -117,12 +119,15 @@ SceneValue interpolate(const SceneProperty& property, const SceneValue& a, const
 
 SceneProperties::SceneProperties(const Scene& scene, const SceneTiming& timing)
     : properties_(scene.properties), timing_(timing) {
+    // Properties by name, hashed: a scene of 10⁵ properties and tweens loads in linear time
+    // (comparing each name with every other took minutes).
+    std::unordered_map<std::string_view, std::size_t> by_name;
+    by_name.reserve(properties_.size());
     for (std::size_t k = 0; k < properties_.size(); ++k) {
         const SceneProperty& prop = properties_[k];
         const std::string p = child("/properties", k);
         if (prop.name.empty()) fail(child(p, "name"), "must not be empty");
-        for (std::size_t j = 0; j < k; ++j)
-            if (properties_[j].name == prop.name) fail(child(p, "name"), "duplicate name \"" + prop.name + "\"");
+        if (!by_name.emplace(prop.name, k).second) fail(child(p, "name"), "duplicate name \"" + prop.name + "\"");
         check_value(prop.value, prop, child(p, "value"));
     }
     if (timing.tween_count() != scene.tweens.size())
@@ -132,9 +137,10 @@ SceneProperties::SceneProperties(const Scene& scene, const SceneTiming& timing)
     for (std::size_t i = 0; i < scene.tweens.size(); ++i) {
         const SceneTween& tw = scene.tweens[i];
         const std::string p = child("/tweens", i);
-        const std::ptrdiff_t k = scene.find_property(tw.property);
-        if (k < 0) fail(child(p, "property"), "no property named \"" + tw.property + "\" in /properties");
-        const SceneProperty& prop = properties_[static_cast<std::size_t>(k)];
+        const auto found = by_name.find(tw.property);
+        if (found == by_name.end()) fail(child(p, "property"), "no property named \"" + tw.property + "\" in /properties");
+        const std::size_t k = found->second;
+        const SceneProperty& prop = properties_[k];
         if (tw.mode == ValueMode::from_to) check_value(tw.from, prop, child(p, "from"));
         if (tw.mode == ValueMode::relative && prop.type == ScenePropertyType::color)
             fail(child(p, "by"), "a colour cannot move by an amount (property \"" + prop.name + "\" is a color): give \"to\"");
@@ -145,8 +151,8 @@ SceneProperties::SceneProperties(const Scene& scene, const SceneTiming& timing)
         if (!(tw.time_scale > 0.0) || !std::isfinite(tw.time_scale)) fail(child(p, "time_scale"), "must be positive and finite");
         if (tw.repeat < -1) fail(child(p, "repeat"), "must be −1 (forever) or a count ≥ 0");
         const double u0 = tw.curve(tw.reversed ? 1.0 : 0.0);
-        tweens_.push_back({tw.mode == ValueMode::from_to ? tw.from : prop.value, tw.to, static_cast<std::size_t>(k), u0});
-        order_[static_cast<std::size_t>(k)].push_back(i);
+        tweens_.push_back({tw.mode == ValueMode::from_to ? tw.from : prop.value, tw.to, k, u0});
+        order_[k].push_back(i);
         entry_.push_back(timing.tween_entry(i));
     }
     // Each property's tweens by entry (ties: their order in "tweens"); then, in that order,
