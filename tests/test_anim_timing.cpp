@@ -295,13 +295,43 @@ TEST(EngineLimits, OneTickDeliversBoundedLoopEventsAndTheExactState) {
     EXPECT_EQ(skipped, static_cast<std::uint64_t>(crossed) - 1);
     const grape::PlayState s = grape::play_at_position(position, 0, false, true);
     EXPECT_EQ(a.progress(), s.backward ? 1.0 - s.phase : s.phase);
-    EXPECT_EQ(a.repetition(), static_cast<int>(std::fmod(crossed, 4294967296.0)));
+    EXPECT_EQ(a.repetition(), INT32_MAX);  // 1e10 plays: saturates, as play numbers do
     EXPECT_EQ(p.x, a.progress());
     // The next frame goes on from there as usual.
     calls = 0;
     engine.tick(0.25 * duration);
     EXPECT_EQ(calls, 0);
     EXPECT_NEAR(p.x, s.backward ? 0.75 - s.phase : s.phase + 0.25, 1e-6);  // phase rounding of 1e10 plays
+}
+
+// Plays are counted in 64 bits: past 2³² plays of an endless 1 s loop, time() is the time
+// sought (2³² + 0.5 s is a double exactly), progress is the half play, repetition() and the
+// next on_loop's play number saturate at INT32_MAX instead of starting again from 0.
+TEST(EngineLimits, PlaysPastTwoToThe32DoNotWrap) {
+    for (const bool yoyo : {false, true}) {
+        Engine engine;
+        Point p;
+        Animation a = engine.create_2d_animation(p, unit_line, 1.0, {.repeat = -1, .yoyo = yoyo});
+        int last_play = -1;
+        a.on_loop([&](int play) { last_play = play; });
+        a.seek(4294967296.5);
+        Point q;  // without handlers: the engine's lean loop begins its next play
+        Animation b = engine.create_2d_animation(q, unit_line, 1.0, {.repeat = -1, .yoyo = yoyo});
+        b.seek(4294967296.5);
+        EXPECT_EQ(a.time(), 4294967296.5) << yoyo;
+        EXPECT_EQ(a.progress(), 0.5) << yoyo;
+        EXPECT_EQ(a.repetition(), INT32_MAX) << yoyo;
+        engine.tick(0.25);  // within the play (the lean update)
+        EXPECT_EQ(a.time(), 4294967296.75) << yoyo;
+        EXPECT_EQ(p.x, 0.75) << yoyo;  // play 2³² is even: forwards
+        engine.tick(0.5);  // into play 2³² + 1 (odd: backwards under yoyo)
+        EXPECT_EQ(last_play, INT32_MAX) << yoyo;
+        EXPECT_EQ(a.time(), 4294967297.25) << yoyo;
+        EXPECT_EQ(p.x, yoyo ? 0.75 : 0.25) << yoyo;
+        EXPECT_EQ(b.time(), 4294967297.25) << yoyo;
+        EXPECT_EQ(b.repetition(), INT32_MAX) << yoyo;
+        EXPECT_EQ(q.x, p.x) << yoyo;
+    }
 }
 
 TEST(EngineLimits, UpToMaxLoopEventsEachPlayHasItsOwnEvent) {

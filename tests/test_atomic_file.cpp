@@ -1,8 +1,10 @@
 // Files written whole or not at all (src/internal/atomic_file.hpp): the bytes arrive intact,
 // nothing is visible under the name before commit, and every failure leaves neither the
 // file nor its temporary and names both the file and the reason. A full disk is tested on a
-// real one by tests/full_disk.sh (a small tmpfs); here the temporary is a link to /dev/full,
-// whose every write fails with ENOSPC.
+// real one by tests/tool_files.sh (a small tmpfs); here a file size limit of 0 (RLIMIT_FSIZE,
+// SIGXFSZ ignored) makes every write fail with EFBIG, as a full disk fails with ENOSPC. (The
+// temporaries are created exclusively, so a link planted at a temporary's name is never written
+// through.)
 #include "atomic_file.hpp"
 #include "seeds.hpp"
 
@@ -15,7 +17,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
@@ -112,47 +117,98 @@ TEST_F(AtomicFileTest, AFolderInTheWayIsNamedAndNothingIsLeft) {
     EXPECT_FALSE(fs::exists(out.temporary()));
 }
 
-// The next write to FILE's temporary fails as on a full disk.
-void fill_disk_for(const fs::path& file) {
-    fs::path tmp = file;
-    tmp += ".partial";
-    fs::create_symlink("/dev/full", tmp);
-}
+// While it lives, every write of a file fails (EFBIG: a file size limit of 0) as on a full disk.
+class FullDisk {
+public:
+    FullDisk() {
+        ::getrlimit(RLIMIT_FSIZE, &old_);
+        rlimit none = old_;
+        none.rlim_cur = 0;
+        ::setrlimit(RLIMIT_FSIZE, &none);
+        old_handler_ = std::signal(SIGXFSZ, SIG_IGN);  // else the signal ends the process
+    }
+    ~FullDisk() {
+        ::setrlimit(RLIMIT_FSIZE, &old_);
+        std::signal(SIGXFSZ, old_handler_);
+    }
+    FullDisk(const FullDisk&) = delete;
+    FullDisk& operator=(const FullDisk&) = delete;
+
+private:
+    rlimit old_{};
+    void (*old_handler_)(int) = SIG_DFL;
+};
 
 TEST_F(AtomicFileTest, AFullDiskIsReportedAndLeavesNothing) {
-    if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
     const fs::path file = dir_ / "run.csv";
-    fill_disk_for(file);
-    // Small writes stay in the buffer; the failure shows at commit at the latest.
-    grape::detail::AtomicFile out(file);
-    out.write("t,x\n");
-    EXPECT_EQ(error_of([&] { out.commit(); }), "cannot write " + file.string() + ": no space left on device");
+    {
+        // Small writes stay in the buffer; the failure shows at commit at the latest.
+        const FullDisk full;
+        grape::detail::AtomicFile out(file);
+        out.write("t,x\n");
+        EXPECT_EQ(error_of([&] { out.commit(); }), "cannot write " + file.string() + ": file too large");
+    }
     EXPECT_EQ(entries(), 0u);
-    // A large write fails at once.
-    fill_disk_for(file);
-    grape::detail::AtomicFile big(file);
-    EXPECT_EQ(error_of([&] { big.write(std::string(1 << 20, 'x')); }), "cannot write " + file.string() + ": no space left on device");
+    {
+        // A large write fails at once.
+        const FullDisk full;
+        grape::detail::AtomicFile big(file);
+        EXPECT_EQ(error_of([&] { big.write(std::string(1 << 20, 'x')); }), "cannot write " + file.string() + ": file too large");
+    }
     EXPECT_EQ(entries(), 0u);
+}
+
+// Writers of one file at once (threads here, processes in tool.concurrent_*) each have a
+// temporary of their own: each commit puts one whole file in place, the last one wins.
+TEST_F(AtomicFileTest, WritersOfOneFileHaveTheirOwnTemporaries) {
+    const fs::path file = dir_ / "out.png";
+    grape::detail::AtomicFile a(file);
+    grape::detail::AtomicFile b(file);
+    EXPECT_NE(a.temporary(), b.temporary());
+    a.write("first writer");
+    b.write("second");
+    b.commit();
+    EXPECT_EQ(read(file), "second");
+    a.commit();
+    EXPECT_EQ(read(file), "first writer");
+    EXPECT_EQ(entries(), 1u);
+}
+
+// A link planted where a fixed temporary name would be is neither followed nor truncated.
+TEST_F(AtomicFileTest, ALinkAtATemporaryNameIsNotWrittenThrough) {
+    const fs::path victim = dir_ / "victim.txt";
+    grape::detail::write_file_atomically(victim, "keep");
+    const fs::path file = dir_ / "out.png";
+    fs::path planted = file;
+    planted += ".partial";
+    fs::create_symlink(victim, planted);
+    grape::detail::write_file_atomically(file, "new");
+    EXPECT_EQ(read(victim), "keep");
+    EXPECT_EQ(read(file), "new");
+    EXPECT_TRUE(fs::is_symlink(planted));
 }
 
 #ifdef GRAPE_TEST_RENDER
 TEST_F(AtomicFileTest, CanvasAndSceneReportAFullDisk) {
-    if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
     grape::Canvas canvas(64, 48);
     canvas.stroke_line({0, 0}, {64, 48}, {});
     for (const char* name : {"p.png", "p.svg", "p.pdf"}) {
         const fs::path file = dir_ / name;
-        fill_disk_for(file);
-        EXPECT_EQ(error_of([&] { canvas.write(file); }), "cannot write " + file.string() + ": no space left on device");
+        {
+            const FullDisk full;
+            EXPECT_EQ(error_of([&] { canvas.write(file); }), "cannot write " + file.string() + ": file too large");
+        }
         EXPECT_EQ(entries(), 0u) << name;
         canvas.write(file);  // and with room, the same call writes it
         EXPECT_GT(fs::file_size(file), 0u);
         fs::remove(file);
     }
     const fs::path scene_file = dir_ / "s.json";
-    fill_disk_for(scene_file);
-    EXPECT_EQ(error_of([&] { grape::save_scene_file(grape::Scene{}, scene_file); }),
-              "cannot write " + scene_file.string() + ": no space left on device");
+    {
+        const FullDisk full;
+        EXPECT_EQ(error_of([&] { grape::save_scene_file(grape::Scene{}, scene_file); }),
+                  "cannot write " + scene_file.string() + ": file too large");
+    }
     EXPECT_EQ(entries(), 0u);
 }
 #endif

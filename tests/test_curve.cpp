@@ -279,6 +279,18 @@ TEST(Curve, BadParametersNameTheArgument) {
     EXPECT_NE(error_text([] { (void)Curve(CurveKind::steps); }).find("needs its parameters"), std::string::npos);
 }
 
+// A subnormal period made 2π/p infinite and every value NaN: refused, naming the period; the
+// shortest period accepted stays finite over t ∈ [0, 1], and non-positive ones are the default.
+TEST(Curve, ElasticPeriodTooShortToComputeIsRefused) {
+    for (EaseDirection d : {EaseDirection::in, EaseDirection::out, EaseDirection::in_out})
+        EXPECT_NE(error_text([d] { (void)Curve::elastic(d, 1.0, 1e-310); }).find("period must be >= 1e-15"), std::string::npos);
+    EXPECT_NE(error_text([] { (void)grape::parse_curve("elastic-out(1,1e-310)"); }).find("period must be >= 1e-15"),
+              std::string::npos);
+    const Curve shortest = Curve::elastic(EaseDirection::out, 1.0, 1e-15);
+    for (int k = 0; k <= 1000; ++k) EXPECT_TRUE(std::isfinite(shortest(k / 1000.0))) << k;
+    EXPECT_EQ(Curve::elastic(EaseDirection::out, 1.0, -1.0), Curve(CurveKind::elastic_out));
+}
+
 // --- CSS cubic-bezier ----------------------------------------------------------------------
 
 namespace {

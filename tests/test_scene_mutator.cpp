@@ -282,7 +282,8 @@ TEST(SceneMutator, LoadsOrRefusesEveryMutant) {
             scene = grape::load_scene(text);
         } catch (const grape::Error& e) {
             ++refused;
-            ASSERT_EQ(std::string(e.what()).rfind("scene: ", 0), 0u) << e.what() << "\nmutant: " << text.substr(0, 2000);
+            // "scene: /pointer: reason": the pointer of the value at fault, never an internal name.
+            EXPECT_EQ(std::string(e.what()).rfind("scene: /", 0), 0u) << e.what() << "\nmutant: " << text.substr(0, 2000);
             continue;
         } catch (const std::exception& e) {
             FAIL() << "not a grape::Error: " << e.what() << "\nround " << ran << " mutant: " << text.substr(0, 2000);

@@ -288,6 +288,29 @@ TEST(SceneTimelines, RandomNestedTreesAgreeWithAReferenceModel) {
     }
 }
 
+// Three nested timelines at time scale 1e300: the outer one lasts 1e-900 s, which underflows
+// to 0. After its start the animation has ended: at its end (u = 1) at any later time, at its
+// start at time 0 itself, as exact arithmetic gives for every time a double can hold.
+TEST(SceneTimelines, TimeScalesWhoseLengthsUnderflowStillReachTheEnd) {
+    const Scene s = grape::load_scene(R"({
+        "animations": [{"name": "a", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1}],
+        "timelines": [{"name": "inner", "time_scale": 1e300, "children": [{"animation": "a"}]},
+                      {"name": "middle", "time_scale": 1e300, "children": [{"timeline": "inner"}]},
+                      {"name": "outer", "time_scale": 1e300, "children": [{"timeline": "middle"}]}]})");
+    const SceneTiming timing(s);
+    EXPECT_EQ(timing.progress(0, 0.0), 0.0);
+    for (const double t : {1e-300, 1.0, 2.0}) EXPECT_EQ(timing.progress(0, t), 1.0) << t;
+    // Two levels underflow as well (the outer lasts 1e-600 s): the same answer.
+    const Scene two = grape::load_scene(R"({
+        "animations": [{"name": "a", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "duration": 1}],
+        "timelines": [{"name": "inner", "time_scale": 1e300, "children": [{"animation": "a"}]},
+                      {"name": "outer", "time_scale": 1e300, "children": [{"timeline": "inner"}]}]})");
+    const SceneTiming timing_two(two);
+    for (const double t : {1e-300, 1.0}) EXPECT_EQ(timing_two.progress(0, t), 1.0) << t;
+    for (std::size_t k = 0; k < timing.timeline_count(); ++k)  // drawn playheads stay on their strips
+        EXPECT_LE(timing.timeline_time(k, 1.0), timing.layout(k).duration) << k;
+}
+
 TEST(SceneTimelines, SaveAndLoadGiveTheSameTimelines) {
     const Scene s = grape::load_scene_file(std::filesystem::path(GRAPE_SCENES_DIR) / "timeline_cutscene.json");
     Scene edited = s;

@@ -4,7 +4,9 @@
 # (skipped, with the reason).
 #   tests/tool_files.sh CASE GRAPE WORKDIR SCENES_DIR
 # A full disk is either a small tmpfs mounted for the case (when mounting is permitted) or a
-# temporary that is a link to /dev/full (every write fails with ENOSPC).
+# file size limit of 0 (ulimit -f 0, SIGXFSZ ignored: every write fails with EFBIG, "file too
+# large"). The tool's temporaries are created exclusively under names of their own, so a link
+# planted at a temporary's name is never written through.
 set -u
 . "$(dirname "$0")/tool_case.sh"
 # expect_error STATUS_FILE STDERR_FILE TEXT: status 2 and TEXT (fixed string) on stderr.
@@ -15,7 +17,7 @@ expect_error() {
     [ "$status" = 2 ] || fail "exit status $status, expected 2"
     grep -qF -- "$3" "$2" || fail "stderr does not say '$3'"
 }
-# nothing_left DIR: DIR holds no file at all (no frames, no .partial, no empty file).
+# nothing_left DIR: DIR holds no file at all (no frames, no temporary, no empty file).
 nothing_left() {
     left=$(ls -A "$1")
     [ -z "$left" ] || fail "files left behind in $1: $left"
@@ -24,45 +26,54 @@ run() {  # run CMD...: status in $work/status, stderr in $work/err, stdout in $w
     "$@" >"$work/out" 2>"$work/err"
     echo $? >"$work/status"
 }
+run_full() {  # run_full CMD...: as run, on a disk where every write fails
+    # Its stdout and stderr go through pipes to files written without the limit.
+    mkfifo "$work/err.fifo"
+    cat "$work/err.fifo" >"$work/err" &
+    { (ulimit -f 0 && trap '' XFSZ && exec "$@") 2>"$work/err.fifo"; echo $? >"$work/status"; } | cat >"$work/out"
+    wait
+    rm "$work/err.fifo"
+}
 
 case $case_name in
 full_disk_png_frames)
-    # The second frame's temporary is on a full disk: exit 2 naming it, the first frame removed.
-    mkdir "$work/out.d"
-    ln -s /dev/full "$work/out.d/f-0002.png.partial"
+    # The second frame cannot be written (a folder in its place): exit 2 naming it, the first
+    # frame removed, the folder left as it was.
+    mkdir "$work/out.d" "$work/out.d/f-0002.png"
     run "$grape" render "$scenes/seed_parabola.json" -o "$work/out.d/f.png" --frames 3 --fps 10
-    expect_error "$work/status" "$work/err" "cannot write $work/out.d/f-0002.png: no space left on device"
+    expect_error "$work/status" "$work/err" "cannot write $work/out.d/f-0002.png: it is a folder"
+    [ "$(ls -A "$work/out.d")" = f-0002.png ] || fail "files left: $(ls -A "$work/out.d")"
+    # Every frame on a full disk: nothing left.
+    rmdir "$work/out.d/f-0002.png"
+    run_full "$grape" render "$scenes/seed_parabola.json" -o "$work/out.d/f.png" --frames 3 --fps 10
+    expect_error "$work/status" "$work/err" "cannot write $work/out.d/f-0001.png: file too large"
     nothing_left "$work/out.d"
     ;;
 full_disk_pdf)
     mkdir "$work/out.d"
-    ln -s /dev/full "$work/out.d/chain.pdf.partial"
-    run "$grape" render "$scenes/pendulum_chain.json" -o "$work/out.d/chain.pdf" --time 1
-    expect_error "$work/status" "$work/err" "cannot write $work/out.d/chain.pdf: no space left on device"
+    run_full "$grape" render "$scenes/pendulum_chain.json" -o "$work/out.d/chain.pdf" --time 1
+    expect_error "$work/status" "$work/err" "cannot write $work/out.d/chain.pdf: file too large"
     nothing_left "$work/out.d"
     ;;
 full_disk_keeps_old)
     # A picture replaces its file only when complete: a failed render leaves the old one.
     mkdir "$work/out.d"
     echo old >"$work/out.d/s.png"
-    ln -s /dev/full "$work/out.d/s.png.partial"
-    run "$grape" render "$scenes/seed_spiral.json" -o "$work/out.d/s.png"
-    expect_error "$work/status" "$work/err" "cannot write $work/out.d/s.png: no space left on device"
+    run_full "$grape" render "$scenes/seed_spiral.json" -o "$work/out.d/s.png"
+    expect_error "$work/status" "$work/err" "cannot write $work/out.d/s.png: file too large"
     [ "$(cat "$work/out.d/s.png")" = old ] || fail "the old picture was lost"
     [ "$(ls -A "$work/out.d")" = s.png ] || fail "files left: $(ls -A "$work/out.d")"
     ;;
 full_disk_animated_svg)
     mkdir "$work/out.d"
-    ln -s /dev/full "$work/out.d/b.svg.partial"
-    run "$grape" render "$scenes/seed_bezier.json" -o "$work/out.d/b.svg" --frames 20
-    expect_error "$work/status" "$work/err" "cannot write $work/out.d/b.svg: no space left on device"
+    run_full "$grape" render "$scenes/seed_bezier.json" -o "$work/out.d/b.svg" --frames 20
+    expect_error "$work/status" "$work/err" "cannot write $work/out.d/b.svg: file too large"
     nothing_left "$work/out.d"
     ;;
 full_disk_csv)
     mkdir "$work/out.d"
-    ln -s /dev/full "$work/out.d/run.csv.partial"
-    run "$grape" simulate parabola --dt 0.001 --seconds 10 --csv "$work/out.d/run.csv"
-    expect_error "$work/status" "$work/err" "cannot write $work/out.d/run.csv: no space left on device"
+    run_full "$grape" simulate parabola --dt 0.001 --seconds 10 --csv "$work/out.d/run.csv"
+    expect_error "$work/status" "$work/err" "cannot write $work/out.d/run.csv: file too large"
     [ ! -s "$work/out" ] || fail "printed a result although the CSV was not written"
     nothing_left "$work/out.d"
     ;;
@@ -77,7 +88,7 @@ tmpfs)
     head -c 200000 /dev/zero >"$work/disk/filler"  # leaves ~56 KiB
     run "$grape" simulate parabola --dt 0.0001 --seconds 10 --csv "$work/disk/run.csv"
     expect_error "$work/status" "$work/err" "cannot write $work/disk/run.csv: no space left on device"
-    [ ! -e "$work/disk/run.csv" ] && [ ! -e "$work/disk/run.csv.partial" ] || fail "a partial CSV is left"
+    [ "$(ls -A "$work/disk")" = filler ] || fail "a partial CSV is left: $(ls -A "$work/disk")"
     rm "$work/disk/filler"
     run "$grape" render "$scenes/seed_parabola.json" -o "$work/disk/p.png" --frames 1000
     expect_error "$work/status" "$work/err" "render: 1000 frames need about"
@@ -139,7 +150,10 @@ render_to_folder)
     run "$grape" render "$scenes/seed_spiral.json" -o "$work/taken.png"
     expect_error "$work/status" "$work/err" "cannot write $work/taken.png: it is a folder"
     [ -d "$work/taken.png" ] && [ -z "$(ls -A "$work/taken.png")" ] || fail "the folder was changed"
-    [ ! -e "$work/taken.png.partial" ] || fail "a .partial file is left"
+    [ "$(ls -A "$work")" = "err
+out
+status
+taken.png" ] || fail "a temporary is left: $(ls -A "$work")"
     ;;
 demo_out_empty)
     run "$grape" demo --out ""
@@ -154,6 +168,28 @@ demo_out_unwritable)
     echo text >"$work/file"
     run "$grape" demo --out "$work/file/sub"
     expect_error "$work/status" "$work/err" "demo: --out $work/file/sub: cannot create the folder"
+    ;;
+demo_full_disk_new_folder)
+    # A failed demo removes the folders it created for --out (and the files in them).
+    run_full "$grape" demo --out "$work/new/sub"
+    expect_error "$work/status" "$work/err" ": file too large"
+    [ ! -e "$work/new" ] || fail "the demo's new folder is left: $(ls -AR "$work/new")"
+    ;;
+demo_full_disk_keeps_folder)
+    # The disk fills half way through the demo's pictures (a 256 KiB tmpfs; the pictures are
+    # ~470 KB): the folder keeps exactly what it held, the old gallery.png included.
+    if ! mkdir -p "$work/disk" || ! mount -t tmpfs -o size=256k tmpfs "$work/disk" 2>"$work/mount-err"; then
+        echo "mounting a tmpfs is not permitted here ($(cat "$work/mount-err")); demo_full_disk_new_folder covers a failed demo"
+        exit 77
+    fi
+    trap 'umount "$work/disk"' EXIT
+    echo old >"$work/disk/gallery.png"
+    echo mine >"$work/disk/notes.txt"
+    run "$grape" demo --out "$work/disk"
+    expect_error "$work/status" "$work/err" ": no space left on device"
+    [ "$(ls -A "$work/disk")" = "gallery.png
+notes.txt" ] || fail "files left or lost: $(ls -A "$work/disk")"
+    [ "$(cat "$work/disk/gallery.png")" = old ] || fail "the old gallery.png was replaced"
     ;;
 scene_is_folder)
     mkdir "$work/scene.json"
@@ -188,7 +224,10 @@ out_of_memory)
     (ulimit -v 3000000 && exec "$grape" render "$work/big.json" -o "$work/big.png" --force) >"$work/out" 2>"$work/err"
     echo $? >"$work/status"
     expect_error "$work/status" "$work/err" "grape: out of memory while drawing $work/big.png (32768×32768)"
-    [ ! -e "$work/big.png" ] && [ ! -e "$work/big.png.partial" ] || fail "output left"
+    [ "$(ls -A "$work")" = "big.json
+err
+out
+status" ] || fail "output left: $(ls -A "$work")"
     ;;
 *)
     fail "unknown case $case_name"

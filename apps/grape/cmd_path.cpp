@@ -3,6 +3,7 @@
 // table of the seed's paths.
 #include "commands.hpp"
 #include "json_out.hpp"
+#include "path_data.hpp"
 
 #include <grape/error.hpp>
 #include <grape/path.hpp>
@@ -43,13 +44,7 @@ std::string read_all(std::istream& in) {
     return std::move(text).str();
 }
 
-// Where a command's DATA comes from: the argument itself, standard input ("-"), or a file.
-struct DataSource {
-    std::string argument;  // DATA as given (empty data is valid SVG: it draws nothing)
-    bool given = false;    // DATA was on the command line
-    std::string file;      // --data-file ("" when absent, "-" for standard input)
-    bool strict = false;   // --strict
-};
+}  // namespace
 
 std::string read_data(const char* command, const DataSource& source) {
     const std::string who = std::string("path ") + command;
@@ -73,6 +68,12 @@ std::string read_data(const char* command, const DataSource& source) {
     return text;
 }
 
+void add_data_file_option(CLI::App& command, DataSource& source) {
+    command.add_option("--data-file", source.file, "Read DATA from FILE (- for standard input)");
+}
+
+namespace {
+
 // SVG's error rule (the path up to the command holding the first error, with a warning on
 // stderr), or with --strict the error itself (exit status 2).
 ComplexPath read_path(const char* command, const DataSource& source) {
@@ -87,7 +88,7 @@ ComplexPath read_path(const char* command, const DataSource& source) {
 }
 
 void add_data_options(CLI::App& command, DataSource& source) {
-    command.add_option("--data-file", source.file, "Read DATA from FILE (- for standard input)");
+    add_data_file_option(command, source);
     command.add_flag("--strict", source.strict,
                      "Refuse data with a syntax error (by default the path stops before it, as SVG draws it)");
 }

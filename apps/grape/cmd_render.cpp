@@ -167,10 +167,11 @@ void run_render(const RenderOptions& o) {
                              format("%.0f", scene.view.height) + ")";
         Canvas canvas(scene.view.width, scene.view.height);
         draw_scene(canvas, scene, world, player);
-        // A single picture replaces its file only when complete (an old one survives a failure);
-        // a frame is registered before it is written, so an interruption cannot miss it.
-        if (o.frames_given) written.add(file);
+        // A single picture replaces its file only when complete (an old one survives a failure).
+        // A frame is registered once written: one that fails leaves what was at its name (an
+        // interruption while it is written removes its temporary, never the file it would replace).
         canvas.write(file);
+        if (o.frames_given) written.add(file);
         if (f == 0 && frames > 1 && !o.force) {
             // The first frame's size times the frame count, against the free space left.
             const double first = static_cast<double>(std::filesystem::file_size(file, ec));

@@ -1,4 +1,4 @@
-// `grape sample SCENE.json --at T1,T2,...`: where every named animation of a scene stands at
+// `grape sample SCENE.json --at T1,T2,...` (or --at-file FILE): where every named animation of a scene stands at
 // each scene time, as JSON with 17 significant digits (each number reads back as the same
 // double), played as `grape render` plays it: free animations by their own timing, the others
 // by the timelines that drive them. A scene with properties also gets each property's value
@@ -14,6 +14,10 @@
 
 #include "utf8_path.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -27,6 +31,7 @@ namespace {
 struct SampleOptions {
     std::string scene;
     std::vector<std::string> at;
+    std::string at_file;  // "" when absent, "-" for standard input
 };
 
 std::string value_text(const SceneValue& v) {
@@ -39,11 +44,43 @@ std::string value_text(const SceneValue& v) {
 // More times than this is a typo or a script gone wrong: the answer would not fit a terminal.
 constexpr std::size_t max_times = 1'000'000;
 
-void run_sample(const SampleOptions& o) {
+// The times of --at-file: numbers separated by white space (one a line, or several), read
+// up to one past the limit so that a huge file is refused without reading it all.
+std::vector<double> read_times(std::istream& in, const std::string& name) {
     std::vector<double> times;
-    for (const std::string& text : o.at) times.push_back(parse_finite("sample: --at", text));
-    if (times.empty()) throw Error("sample: --at needs at least one time");
+    std::string token;
+    while (in >> token) {
+        if (times.size() == max_times)
+            throw Error("sample: --at-file " + name + ": more than 1000000 times (the most one run takes)");
+        times.push_back(parse_finite("sample: --at-file " + name + ": time " + std::to_string(times.size() + 1), token));
+    }
+    if (in.bad()) throw Error("sample: --at-file " + name + ": cannot be read");
+    return times;
+}
+
+std::vector<double> sample_times(const SampleOptions& o) {
+    if (!o.at.empty() && !o.at_file.empty()) throw Error("sample: give --at or --at-file, not both");
+    if (o.at.empty() && o.at_file.empty()) throw Error("sample: --at T1,T2,... or --at-file FILE is required");
+    std::vector<double> times;
+    if (o.at_file == "-") {
+        times = read_times(std::cin, "-");
+    } else if (!o.at_file.empty()) {
+        const std::filesystem::path file = detail::path_from_utf8(o.at_file);
+        std::error_code ec;
+        if (std::filesystem::is_directory(file, ec)) throw Error("sample: --at-file " + o.at_file + ": is a folder, not a file of times");
+        std::ifstream in(file);
+        if (!in) throw Error("sample: --at-file " + o.at_file + ": cannot be opened (" + std::strerror(errno) + ")");
+        times = read_times(in, o.at_file);
+    } else {
+        for (const std::string& text : o.at) times.push_back(parse_finite("sample: --at", text));
+    }
+    if (times.empty()) throw Error(o.at_file.empty() ? "sample: --at needs at least one time" : "sample: --at-file " + o.at_file + " holds no time");
     if (times.size() > max_times) throw Error("sample: --at takes at most 1000000 times (got " + std::to_string(times.size()) + ")");
+    return times;
+}
+
+void run_sample(const SampleOptions& o) {
+    const std::vector<double> times = sample_times(o);
     const Scene scene = load_scene_file(detail::path_from_utf8(o.scene));
     // The named animations, each name once (a JSON object holds a key once).
     std::vector<std::size_t> named;
@@ -86,9 +123,9 @@ void register_sample_command(CLI::App& app) {
     auto options = std::make_shared<SampleOptions>();
     auto* cmd = app.add_subcommand("sample", "Print where every named animation of a scene is, and its properties' values, at the given scene times (JSON)");
     cmd->add_option("scene", options->scene, "Scene file (JSON, see docs/scene-format.md)")->required();
-    cmd->add_option("--at", options->at, "Scene times in seconds, comma-separated: --at 0,0.5,1.25")
-        ->required()
-        ->delimiter(',');
+    cmd->add_option("--at", options->at, "Scene times in seconds, comma-separated: --at 0,0.5,1.25")->delimiter(',');
+    cmd->add_option("--at-file", options->at_file,
+                    "Read the times from FILE (- for standard input): numbers separated by spaces or lines, at most 1000000");
     cmd->callback([options] { run_sample(*options); });
 }
 

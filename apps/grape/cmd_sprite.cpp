@@ -41,8 +41,22 @@ struct Sequence {
     double duration_ms = 0.0;
 };
 
+// The sheet frame at `step` of the clip's playback, in the player's order (ClipPlayer walks
+// the same periodic sequence: forward, reverse, or a ping-pong of period 2·length − 2).
+std::size_t frame_at(const SpriteClip& c, bool bounce, std::size_t period, std::size_t step) {
+    const std::size_t n = c.length(), k = step % period;
+    switch (c.direction) {
+        case ClipDirection::forward: return c.from + k;
+        case ClipDirection::reverse: return c.from + (n - 1 - k);
+        case ClipDirection::ping_pong: return c.from + (!bounce || k < n ? k : 2 * n - 2 - k);
+        case ClipDirection::ping_pong_reverse: return c.from + (!bounce || k < n ? n - 1 - k : k - n + 1);
+    }
+    return c.from;
+}
+
 Sequence sequence(const SpriteSheet& sheet, std::size_t clip) {
-    // Walked with the player itself, one frame at a time: each frame event is one step.
+    // Counted in frames, not walked in time: a frame may last any positive time (5e-324 ms
+    // included), so the work is the number of frames shown, bounded below.
     const SpriteClip& c = sheet.clips()[clip];
     const bool bounce = (c.direction == ClipDirection::ping_pong || c.direction == ClipDirection::ping_pong_reverse) &&
                         c.length() > 1;
@@ -52,19 +66,11 @@ Sequence sequence(const SpriteSheet& sheet, std::size_t clip) {
                                                       : std::size_t(c.repeat) * c.length());
     if (steps > 1'000'000) throw Error("sprite info: clip '" + c.name + "' plays more than 1,000,000 frames");
     Sequence s;
-    ClipPlayer player(sheet, clip);
-    player.on_event([&](const ClipEvent& e) {
-        if (e.kind == ClipEventKind::frame) s.frames.push_back(e.frame);
-    });
-    s.frames.push_back(player.frame());
-    while (s.frames.size() < steps) {
-        s.duration_ms += sheet.frame(player.frame()).duration_ms;
-        const std::size_t before = s.frames.size();
-        // To the end of the frame shown: the next one starts.
-        player.advance((sheet.frame(player.frame()).duration_ms - player.time_in_frame_ms()) / 1000.0);
-        while (s.frames.size() == before) player.advance(1e-9);  // rounding left it just short
+    s.frames.reserve(steps);
+    for (std::size_t k = 0; k < steps; ++k) {
+        s.frames.push_back(frame_at(c, bounce, period, k));
+        s.duration_ms += sheet.frame(s.frames.back()).duration_ms;
     }
-    s.duration_ms += sheet.frame(s.frames.back()).duration_ms;
     return s;
 }
 

@@ -13,7 +13,8 @@ namespace grape::tool {
 /// Where `grape demo` writes: the summary stream and the output folder.
 struct DemoContext {
     std::ostream& out;
-    std::filesystem::path dir;  ///< created before the sections run
+    std::filesystem::path dir;    ///< where the files go: created before the sections run
+    std::filesystem::path shown;  ///< the folder the files end up in, as messages name it
 };
 
 void register_path_commands(CLI::App& app);

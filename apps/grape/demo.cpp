@@ -20,11 +20,20 @@ void register_demo_command(CLI::App& app) {
         std::error_code ec;
         if (std::filesystem::exists(folder, ec) && !std::filesystem::is_directory(folder, ec))
             throw Error("demo: --out " + *dir + ": it exists and is not a folder");
+        // The outermost folder this run creates, removed again if the run fails.
+        std::filesystem::path created;
+        for (std::filesystem::path p = folder; !p.empty() && !std::filesystem::exists(p, ec); p = p.parent_path()) {
+            created = p;
+            if (p == p.parent_path()) break;
+        }
         std::filesystem::create_directories(folder, ec);
         if (ec)
             throw Error("demo: --out " + *dir + ": cannot create the folder (" +
                         detail::write_failure_reason(ec.default_error_condition().value(), folder) + ")");
-        const DemoContext context{std::cout, folder};
+        // The pictures go to a staging folder inside and move into place only when every
+        // section has succeeded: a failure leaves the folder as it was (or gone, if created).
+        detail::StagingFolder staging(folder, created);
+        const DemoContext context{std::cout, staging.path(), folder};
         demo_paths(context);
         demo_curves(context);
 #ifdef GRAPE_TOOL_DYNAMICS
@@ -33,6 +42,7 @@ void register_demo_command(CLI::App& app) {
 #ifdef GRAPE_TOOL_RENDER
         demo_pictures(context);
 #endif
+        staging.commit();
     });
 }
 

@@ -22,7 +22,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -32,7 +34,8 @@ namespace grape::tool {
 namespace {
 
 struct Written {
-    std::string file;
+    std::string file;        // where it ends up, as printed
+    std::uintmax_t bytes;    // its size, read where it was written (the staging folder)
     std::string what;
     std::string figures;
 };
@@ -50,10 +53,15 @@ Path path_named(const char* name) { return entry(name).path(); }
 
 void demo_pictures(const DemoContext& context) {
     std::vector<Written> written;
+    // A file written into context.dir, listed under the folder it ends up in.
+    const auto note = [&](const std::string& name, std::string what, std::string figures) {
+        std::error_code ec;
+        const std::uintmax_t bytes = std::filesystem::file_size(context.dir / name, ec);
+        written.push_back({(context.shown / name).string(), ec ? 0 : bytes, std::move(what), std::move(figures)});
+    };
     const auto save = [&](const Canvas& canvas, const std::string& name, std::string what, std::string figures = {}) {
-        const auto file = context.dir / name;
-        canvas.write(file);
-        written.push_back({file.string(), std::move(what), std::move(figures)});
+        canvas.write(context.dir / name);
+        note(name, std::move(what), std::move(figures));
     };
     const TextStyle title{.size = 15, .bold = true};
     const TextStyle label{.color = {0.25, 0.25, 0.25}, .size = 10};
@@ -81,8 +89,8 @@ void demo_pictures(const DemoContext& context) {
         save(canvas, "gallery.png", "every path kind", std::to_string(gallery.size()) + " paths");
         canvas.write(context.dir / "gallery.svg");
         canvas.write(context.dir / "gallery.pdf");
-        written.push_back({(context.dir / "gallery.svg").string(), "the same, as SVG", ""});
-        written.push_back({(context.dir / "gallery.pdf").string(), "the same, as PDF", ""});
+        note("gallery.svg", "the same, as SVG", "");
+        note("gallery.pdf", "the same, as PDF", "");
     }
 
     // 2. The seed's spline image: top to bottom linear, cosine, Catmull-Rom through p1, p2, p3.
@@ -232,10 +240,8 @@ void demo_pictures(const DemoContext& context) {
     std::ostream& out = context.out;
     out << "\nPictures (render module)\n";
     for (const Written& w : written) {
-        std::error_code ec;
-        const auto size = std::filesystem::file_size(w.file, ec);
         char line[512];
-        std::snprintf(line, sizeof line, "  %-34s %8.1f KB  %-32s %s\n", w.file.c_str(), ec ? 0.0 : size / 1024.0,
+        std::snprintf(line, sizeof line, "  %-34s %8.1f KB  %-32s %s\n", w.file.c_str(), static_cast<double>(w.bytes) / 1024.0,
                       w.what.c_str(), w.figures.c_str());
         out << line;
     }

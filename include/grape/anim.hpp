@@ -117,7 +117,8 @@ public:
     /// counts all plays and repeat delays, so it runs to duration·(repeat + 1) +
     /// repeat_delay·repeat).
     double time() const noexcept;
-    /// Which play is running: 0 for the first, 1 after the first loop, ...
+    /// Which play is running: 0 for the first, 1 after the first loop, ... (saturating at
+    /// INT32_MAX; time() goes on counting: plays are counted in 64 bits).
     int repetition() const noexcept;
     /// Seconds per play (0 if not alive).
     double duration() const noexcept;

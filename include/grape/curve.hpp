@@ -312,8 +312,8 @@ public:
     /// Back with overshoot s (finite, ≥ 0; 1.70158 undershoots 10 %). In-out uses 1.525·s
     /// per half, out-in s.
     static Curve back(EaseDirection direction, double overshoot = ease::back_overshoot);
-    /// Elastic with amplitude a (finite, ≥ 1) and period p in units of t (finite, > 0);
-    /// a non-positive period picks Penner's default (0.3, or 0.45 for in-out; out-in's
+    /// Elastic with amplitude a (finite, ≥ 1) and period p in units of t (finite, ≥ 1e-15:
+    /// shorter overflows 2π/p); a non-positive period picks Penner's default (0.3, or 0.45 for in-out; out-in's
     /// halves take 0.3).
     static Curve elastic(EaseDirection direction, double amplitude = ease::elastic_amplitude, double period = 0.0);
     /// CSS cubic-bezier(x1, y1, x2, y2): x1, x2 in [0, 1], y1, y2 finite; outside [0, 1]

@@ -309,6 +309,12 @@ public:
     bool tween_reached(std::size_t tween, double t) const noexcept;
 
 private:
+    // timeline_time as the timeline's children see it: for a timeline whose length underflowed
+    // to 0 although it holds something (time scales of 1e300 nested), +inf after its start,
+    // so that they stand at their ends.
+    double driving_time(std::size_t timeline, double t) const noexcept;
+    // The time at scene time t of what timeline `driver` holds at `start` (a free one: t).
+    double driven_time(std::ptrdiff_t driver, double start, double t) const noexcept;
     struct Animation {
         AnimationDef def;
         double duration = 1.0;

@@ -114,12 +114,12 @@ double Animation::time() const noexcept {
     const auto r = record();
     if (!r) return 0.0;
     const double cycle = 1.0 + r.impl->gap_of(r.dense);  // a play and the repeat delay after it
-    return (static_cast<double>(r.cold().play) * cycle + r.hot().phase) * r.cold().duration;
+    return (static_cast<double>(r.cold().play()) * cycle + r.hot().phase) * r.cold().duration;
 }
 
 int Animation::repetition() const noexcept {
     const auto r = record();
-    return r ? static_cast<int>(std::min<std::uint32_t>(r.cold().play, INT32_MAX)) : 0;
+    return r ? static_cast<int>(std::min<std::uint64_t>(r.cold().play(), INT32_MAX)) : 0;
 }
 
 double Animation::duration() const noexcept {

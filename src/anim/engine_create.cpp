@@ -94,7 +94,7 @@ Animation EngineImpl::add(Hot hot, std::uint16_t curve, double duration, const A
     hot.kind = kind_byte(curve_kind(hot), hot.target ? lane_kernel(path_kind_[hot.path]) : LaneKernel::other);
     if (def.reversed) hot.flags |= flag_backward;
     const std::uint32_t plays = def.repeat < 0 ? 0u : static_cast<std::uint32_t>(def.repeat) + 1u;
-    const Cold cold{duration, plays, slot, 0, curve, 0, def.reversed};
+    const Cold cold{duration, Cold::count_of(plays), slot, curve, 0, def.reversed};
     hot.flags = with_more(hot.flags, cold);
     hot_.push_back(hot);
     cold_.push_back(cold);

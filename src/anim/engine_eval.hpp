@@ -93,8 +93,8 @@ inline bool EngineImpl::plain_advance(Hot* hot, Cold* cold, std::size_t i, doubl
     if (phase >= play_end) {
         // A new play that nobody listens for, reached within this tick: handled here.
         Cold& c = cold[i];
-        if ((h.flags & flag_listens) || phase >= next_play_end || (c.plays != 0 && c.play + 1 >= c.plays)) return false;
-        ++c.play;
+        if ((h.flags & flag_listens) || phase >= next_play_end || (c.plays() != 0 && c.play() + 1 >= c.plays())) return false;
+        ++c.count;  // the next play (see Cold::count)
         const NextPlay next = next_play(h, phase);
         phase = next.phase;
         h.flags = with_more(next.flags, c);

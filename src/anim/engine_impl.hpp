@@ -80,21 +80,45 @@ inline LaneKernel lane_kind(const Hot& h) noexcept { return static_cast<LaneKern
 /// Read on loops, completion, curves with parameters and queries: 24 bytes.
 struct Cold {
     double duration;       // seconds per play
-    std::uint32_t plays;   // repeat + 1; 0 plays forever
+    // The play running (from 0) and the number of plays in one word, so that 64-bit play
+    // counts fit the 24 bytes: a record playing forever has the top bit set and its play in
+    // the other 63 bits; a finite one has plays − 1 (= repeat, < 2³¹) in bits 32–62 and its
+    // play (< plays) in the low 32. Either way the next play is ++count.
+    std::uint64_t count;
     std::uint32_t slot;    // the handle slot that refers to this record
-    std::uint32_t play;    // which play is running, from 0 (wraps at 2³², parity kept)
     std::uint16_t curve;   // index into the curve table (curves with parameters)
     // time_scale() = rate·duration moved by this many ulps (rate·duration is up to ~2 ulps
     // off the scale set); scale_in_extra: too far, the scale is in Extra::time_scale
     std::int8_t scale_ulps = 0;
     bool reversed = false;  // AnimationDef::reversed: every play starts backward unless yoyo turns it
+
+    static constexpr std::uint64_t forever = std::uint64_t{1} << 63;
+    // A play count past this (2⁶², reached only by seeking ~10¹⁸ plays ahead) holds there,
+    // keeping its parity (which yoyo reads).
+    static constexpr std::uint64_t most_plays = std::uint64_t{1} << 62;
+    /// The word for `plays` (repeat + 1; 0 plays forever) at play 0.
+    static constexpr std::uint64_t count_of(std::uint32_t plays) noexcept {
+        return plays == 0 ? forever : std::uint64_t{plays - 1} << 32;
+    }
+    /// repeat + 1; 0 plays forever.
+    constexpr std::uint32_t plays() const noexcept {
+        return (count & forever) ? 0u : static_cast<std::uint32_t>(count >> 32) + 1u;
+    }
+    /// Which play is running, from 0.
+    constexpr std::uint64_t play() const noexcept { return (count & forever) ? count & ~forever : count & 0xffffffffu; }
+    /// Sets the play running (< plays() for a finite record).
+    constexpr void set_play(std::uint64_t play) noexcept {
+        if (count & forever) count = forever | (play < most_plays ? play : most_plays | (play & 1u));
+        else count = (count & ~std::uint64_t{0xffffffffu}) | play;
+    }
 };
+static_assert(sizeof(Cold) == 24, "Cold must stay 24 bytes (EngineScale.SixtyFourBytesPerAnimation)");
 
 // flag_more for a record whose Cold play count is `c`: set when the record plays forever or
 // its current play is not its last. Every change of Cold::play sets it again, so that it is
 // never set on a last play (the lean runs begin the next play on its word alone).
 inline std::uint8_t with_more(std::uint8_t flags, const Cold& c) noexcept {
-    return static_cast<std::uint8_t>((c.plays == 0 || c.play + 1 < c.plays) ? flags | flag_more : flags & ~flag_more);
+    return static_cast<std::uint8_t>((c.plays() == 0 || c.play() + 1 < c.plays()) ? flags | flag_more : flags & ~flag_more);
 }
 // The flags after Cold::play or the direction changed: flag_backward as `backward`, flag_more anew.
 inline std::uint8_t play_flags(std::uint8_t flags, bool backward, const Cold& c) noexcept {
@@ -263,7 +287,7 @@ private:
     void advance_slow(std::uint32_t dense, double phase);
     void advance_back(std::uint32_t dense, double phase);
     bool fire_simple(std::uint32_t dense, std::shared_ptr<const std::function<void()>> Extra::*member);
-    void fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes);
+    void fire_events(std::uint32_t dense, std::uint64_t first_play, double loops, bool completes);
     void mark_dead(std::uint32_t dense) noexcept;
     void remove_now(std::uint32_t dense) noexcept;
     void move_record(std::uint32_t from, std::uint32_t to) noexcept;
@@ -401,9 +425,9 @@ inline constexpr double play_end = 1.0 - play_snap;
 
 /// A whole number of plays as the engine's 32-bit play counter advances by it: modulo 2³²,
 /// which keeps the parity yoyo needs (every double from 2⁵³ on, and +inf, counts as even).
-inline std::uint32_t wrap_plays(double whole) noexcept {
-    if (!(whole < 1.8446744073709552e19)) return 0;  // ≥ 2⁶⁴ (multiples of 2³²) and +inf
-    return static_cast<std::uint32_t>(std::fmod(whole, 4294967296.0));
+inline std::uint64_t wrap_plays(double whole) noexcept {
+    if (!(whole < 4611686018427387904.0)) return Cold::most_plays;  // ≥ 2⁶² (even) and +inf: held there
+    return static_cast<std::uint64_t>(whole);
 }
 
 /// Throws grape::Error naming `where` for a bad duration or def.

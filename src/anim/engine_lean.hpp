@@ -115,7 +115,7 @@ public:
     void flush() noexcept {
         for (std::size_t k = 0; k < count_; ++k) {
             Cold& c = cold_[index_[k]];
-            ++c.play;  // wraps at 2³², parity kept
+            ++c.count;  // the next play (see Cold::count)
             hot_[index_[k]].flags = with_more(hot_[index_[k]].flags, c);
         }
         count_ = 0;

@@ -34,9 +34,9 @@ void EngineImpl::seek(std::uint32_t dense, double seconds) noexcept {
     if (!std::isfinite(seconds)) return;
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
-    const PlayState s = play_at_position(seconds / c.duration, static_cast<double>(c.plays),
+    const PlayState s = play_at_position(seconds / c.duration, static_cast<double>(c.plays()),
                                          c.reversed, (h.flags & flag_yoyo) != 0, gap_of(dense));
-    c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
+    c.set_play(s.finished ? c.plays() - 1 : wrap_plays(s.play));
     h.phase = s.phase + s.gap;
     h.flags = play_flags(h.flags, s.backward, c);
     try {

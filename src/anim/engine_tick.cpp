@@ -206,14 +206,14 @@ void EngineImpl::advance_slow(std::uint32_t dense, double phase) {
     const bool starts = h.phase < 0.0 && (h.flags & flag_listens);  // the first play begins now
     double loops = 0.0;
     bool completes = false;
-    const std::uint32_t first_play = c.play;
+    const std::uint64_t first_play = c.play();
     if (phase >= play_end) {
-        const double plays_left = c.plays == 0 ? 0.0 : static_cast<double>(c.plays - c.play);
+        const double plays_left = c.plays() == 0 ? 0.0 : static_cast<double>(c.plays() - c.play());
         const PlayState s = play_at_position(phase, plays_left, (h.flags & flag_backward) != 0, (h.flags & flag_yoyo) != 0,
                                              gap_of(dense));
         loops = s.play;
         completes = s.finished;
-        c.play = completes ? c.plays - 1 : c.play + wrap_plays(s.play);
+        c.set_play(completes ? c.plays() - 1 : c.play() + wrap_plays(s.play));
         phase = s.phase + s.gap;  // inside a repeat delay the phase runs past 1 (clamped when drawn)
         h.flags = play_flags(h.flags, s.backward, c);
     }
@@ -235,10 +235,10 @@ void EngineImpl::advance_back(std::uint32_t dense, double phase) {
         return;
     }
     const double gap = gap_of(dense);
-    const double position = static_cast<double>(c.play) * (1.0 + gap) + phase;  // from the first play's start
-    const bool was_at_start = c.play == 0 && h.phase == 0.0;
+    const double position = static_cast<double>(c.play()) * (1.0 + gap) + phase;  // from the first play's start
+    const bool was_at_start = c.play() == 0 && h.phase == 0.0;
     if (position <= 0.0) {
-        c.play = 0;
+        c.set_play(0);
         h.phase = 0.0;
         h.flags = play_flags(h.flags, c.reversed, c);
         if (was_at_start) return;
@@ -246,9 +246,9 @@ void EngineImpl::advance_back(std::uint32_t dense, double phase) {
         if (h.flags & flag_listens) fire_simple(dense, &Extra::on_reverse_complete);
         return;
     }
-    const PlayState s = play_at_position(position, static_cast<double>(c.plays), c.reversed,
+    const PlayState s = play_at_position(position, static_cast<double>(c.plays()), c.reversed,
                                          (h.flags & flag_yoyo) != 0, gap);
-    c.play = wrap_plays(s.play);
+    c.set_play(wrap_plays(s.play));
     h.phase = s.phase + s.gap;
     h.flags = play_flags(h.flags, s.backward, c);
     write_state(dense);
@@ -261,7 +261,7 @@ bool EngineImpl::fire_simple(std::uint32_t dense, std::shared_ptr<const std::fun
     const auto it = extras_.find(slot);
     if (it == extras_.end() || !(it->second.*member)) return true;
     const std::uint32_t generation = slots_[slot].generation;
-    const std::uint32_t play = cold_[dense].play;
+    const std::uint64_t play = cold_[dense].play();
     const double phase = hot_[dense].phase;
     const auto handler = it->second.*member;
     {
@@ -269,20 +269,20 @@ bool EngineImpl::fire_simple(std::uint32_t dense, std::shared_ptr<const std::fun
         (*handler)();
     }
     const Hot& h = hot_[dense];
-    return slots_[slot].generation == generation && cold_[dense].play == play && h.phase == phase && !(h.flags & flag_dead);
+    return slots_[slot].generation == generation && cold_[dense].play() == play && h.phase == phase && !(h.flags & flag_dead);
 }
 
-void EngineImpl::fire_events(std::uint32_t dense, std::uint32_t first_play, double loops, bool completes) {
+void EngineImpl::fire_events(std::uint32_t dense, std::uint64_t first_play, double loops, bool completes) {
     if (hot_[dense].flags & flag_dead) return;  // a linked target that went during the write
     const std::uint32_t slot = cold_[dense].slot;
     const std::uint32_t generation = slots_[slot].generation;
     // The state every handler should find; a handler that seeks, kills or restarts this
     // animation changes it, and then the remaining events of this update are dropped.
-    const std::uint32_t play = cold_[dense].play;
+    const std::uint64_t play = cold_[dense].play();
     const double phase = hot_[dense].phase;
     auto unchanged = [&] {
         const Hot& h = hot_[dense];
-        return slots_[slot].generation == generation && cold_[dense].play == play && h.phase == phase &&
+        return slots_[slot].generation == generation && cold_[dense].play() == play && h.phase == phase &&
                !(h.flags & flag_dead);
     };
     // Paused by its own loop handler: hold at the start of that play, no further events.

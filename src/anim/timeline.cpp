@@ -195,9 +195,9 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
     TimelineChild c;
     c.slot = a.slot_;
     c.generation = a.generation_;
-    c.p0 = cold.play == 0 && h.phase < 0.0 ? h.phase : 0.0;  // its delay, if it has not begun
+    c.p0 = cold.play() == 0 && h.phase < 0.0 ? h.phase : 0.0;  // its delay, if it has not begun
     c.rate = std::fabs(h.rate);  // a run-time reverse does not carry into the timeline
-    c.plays = cold.plays;
+    c.plays = cold.plays();
     c.gap = engine_.gap_of(dense);
     c.reversed = cold.reversed;
     c.yoyo = (h.flags & flag_yoyo) != 0;
@@ -214,7 +214,7 @@ void TimelineStore::add_animation(std::uint32_t slot, const Animation& a, const 
     Hot& hot = engine_.hot_[dense];
     hot.flags |= flag_paused;  // skipped by the engine's loop until it moves out of it
     pending_driven_.push_back(a.slot_);
-    cold.play = 0;
+    cold.set_play(0);
     hot.phase = 0.0;
     hot.flags = play_flags(hot.flags, c.reversed, cold);
     {

@@ -363,7 +363,7 @@ bool TimelineStore::cross(std::size_t i, double dt) {
         const PlayState s = play_at_position(position, c.plays, c.reversed, c.yoyo, c.gap);
         Hot& h = engine_.hot_[dense];
         Cold& cold = engine_.cold_[dense];
-        cold.play = s.finished ? cold.plays - 1 : wrap_plays(s.play);
+        cold.set_play(s.finished ? cold.plays() - 1 : wrap_plays(s.play));
         h.phase = s.phase < 0.0 ? 0.0 : s.phase + s.gap;
         h.flags = play_flags(h.flags, s.backward, cold);
         engine_.write_state(dense);  // plain: writes the target, runs nothing

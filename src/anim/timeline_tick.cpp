@@ -374,7 +374,7 @@ bool TimelineStore::drive_animation(std::uint32_t slot, std::size_t i, double lo
     Hot& h = engine_.hot_[dense];
     Cold& cold = engine_.cold_[dense];
     if (h.flags & flag_dead) return true;
-    cold.play = s.finished ? cold.plays - 1 : wrap_plays(s.play);
+    cold.set_play(s.finished ? cold.plays() - 1 : wrap_plays(s.play));
     h.phase = s.phase < 0.0 ? 0.0 : s.phase + s.gap;  // inside its own delay it shows its start
     h.flags = play_flags(h.flags, s.backward, cold);
     const std::uint32_t generation = c.generation;

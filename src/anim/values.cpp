@@ -103,8 +103,8 @@ void EngineImpl::hold_at_play(std::uint32_t dense, double play) {
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
     const PlayState s =
-        play_at_position(play, static_cast<double>(c.plays), c.reversed, (h.flags & flag_yoyo) != 0);
-    c.play = s.finished ? c.plays - 1 : wrap_plays(s.play);
+        play_at_position(play, static_cast<double>(c.plays()), c.reversed, (h.flags & flag_yoyo) != 0);
+    c.set_play(s.finished ? c.plays() - 1 : wrap_plays(s.play));
     h.phase = s.phase;
     h.flags = play_flags(h.flags, s.backward, c);
     write_state(dense);

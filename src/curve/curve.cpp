@@ -84,6 +84,9 @@ void check_finite(std::string_view where, std::string_view what, double v) {
         throw Error(std::string(where) + ": " + std::string(what) + " must be finite (got " + number_text(v) + ")");
 }
 
+// The shortest elastic period accepted (in units of t).
+constexpr double min_elastic_period = 1e-15;
+
 double default_period(EaseDirection direction) noexcept {
     return direction == EaseDirection::in_out ? ease::elastic_in_out_period : ease::elastic_period;
 }
@@ -123,6 +126,12 @@ Curve Curve::elastic(EaseDirection direction, double amplitude, double period) {
     if (amplitude < 1.0)
         throw Error("Curve::elastic: amplitude must be >= 1, the distance from start to end (got " +
                     number_text(amplitude) + ")");
+    // The formula divides by the period: below this 2π/p overflows to infinity and every
+    // value is NaN (and a period this short swings 10¹⁵ times in t ∈ [0, 1], which no frame
+    // rate shows). Periods ≤ 0 keep meaning "the default".
+    if (period > 0.0 && period < min_elastic_period)
+        throw Error("Curve::elastic: period must be >= " + number_text(min_elastic_period) + " or <= 0 for the default (got " +
+                    number_text(period) + ")");
     Curve c(EaseFamily::elastic, direction);
     c.p_[0] = amplitude;
     c.p_[1] = period > 0.0 ? period : default_period(direction);

@@ -27,6 +27,7 @@
 #include <climits>
 #include <csignal>
 #include <mutex>
+#include <string>
 #include <system_error>
 #include <utility>
 
@@ -52,9 +53,13 @@ namespace {
 #ifdef _WIN32
 int remove_native(const wchar_t* file) noexcept { return ::_wunlink(file); }
 
-int open_for_writing(const std::filesystem::path& file) noexcept {
-    return ::_wopen(file.c_str(), _O_WRONLY | _O_CREAT | _O_TRUNC | _O_BINARY | _O_NOINHERIT, _S_IREAD | _S_IWRITE);
+// Creates FILE, failing with EEXIST if anything is there (so no other writer's temporary is
+// truncated, and no link is followed).
+int create_new(const std::filesystem::path& file) noexcept {
+    return ::_wopen(file.c_str(), _O_WRONLY | _O_CREAT | _O_EXCL | _O_BINARY | _O_NOINHERIT, _S_IREAD | _S_IWRITE);
 }
+
+unsigned long process_id() noexcept { return ::GetCurrentProcessId(); }
 
 int write_some(int fd, const char* data, std::size_t size) noexcept {
     return ::_write(fd, data, static_cast<unsigned>(size < INT_MAX ? size : INT_MAX));
@@ -104,9 +109,13 @@ void sync_folder(const std::filesystem::path&) noexcept {}  // MOVEFILE_WRITE_TH
 #else
 int remove_native(const char* file) noexcept { return ::unlink(file); }
 
-int open_for_writing(const std::filesystem::path& file) noexcept {
-    return ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+// Creates FILE, failing with EEXIST if anything is there (so no other writer's temporary is
+// truncated, and no symbolic link is followed).
+int create_new(const std::filesystem::path& file) noexcept {
+    return ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
 }
+
+unsigned long process_id() noexcept { return static_cast<unsigned long>(::getpid()); }
 
 ssize_t write_some(int fd, const char* data, std::size_t size) noexcept { return ::write(fd, data, size); }
 
@@ -174,6 +183,14 @@ extern "C" void remove_registered_files(int signal_number) {
 
 constexpr std::size_t buffer_size = 64 * 1024;
 
+// Temporaries this process has named: with the process id, a name no other live writer uses,
+// so concurrent writers of one FILE (processes or threads) never share a temporary.
+std::atomic<unsigned long long> temporaries_named{0};
+
+// A name can still be taken by a temporary a killed process left with a recycled id; a few
+// more tries get past any such leftovers, and more than this means something else is wrong.
+constexpr int temporary_attempts = 100;
+
 }  // namespace
 
 void remove_files_on_interrupt() {
@@ -211,17 +228,24 @@ std::string write_failure_reason(int err, const std::filesystem::path& file) {
 // ----------------------------------------------------------------------------- AtomicFile
 
 AtomicFile::AtomicFile(std::filesystem::path file) : file_(std::move(file)) {
-    temporary_ = file_;
-    temporary_ += ".partial";
     std::error_code ec;
     if (std::filesystem::is_directory(file_, ec)) throw Error("cannot write " + utf8_string(file_) + ": it is a folder");
-    entry_ = register_path(temporary_);  // before the file exists, so no interruption misses it
-    fd_ = open_for_writing(temporary_);
-    if (fd_ < 0) {
-        const int err = errno;
-        unregister(entry_);
+    int err = EEXIST;
+    for (int attempt = 0; attempt < temporary_attempts && err == EEXIST; ++attempt) {
+        temporary_ = file_;
+        temporary_ += ".partial-" + std::to_string(process_id()) + "-" +
+                      std::to_string(temporaries_named.fetch_add(1, std::memory_order_relaxed));
+        entry_ = register_path(temporary_);  // before the file exists, so no interruption misses it
+        fd_ = create_new(temporary_);
+        if (fd_ >= 0) break;
+        err = errno;
+        unregister(entry_);  // not ours: an interruption must not remove it
         entry_ = nullptr;
-        throw Error("cannot write " + utf8_string(file_) + ": " + write_failure_reason(err, file_));
+    }
+    if (fd_ < 0) {
+        throw Error("cannot write " + utf8_string(file_) + ": " +
+                    (err == EEXIST ? std::string("every temporary name tried is taken")
+                                   : write_failure_reason(err, file_)));
     }
     buffer_.reserve(buffer_size);
 }
@@ -306,6 +330,47 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
     AtomicFile out(file);
     out.write(bytes);
     out.commit();
+}
+
+// -------------------------------------------------------------------------- StagingFolder
+
+StagingFolder::StagingFolder(std::filesystem::path folder, std::filesystem::path created)
+    : folder_(std::move(folder)), created_(std::move(created)) {
+    std::error_code ec;
+    for (int attempt = 0; attempt < temporary_attempts; ++attempt) {
+        staging_ = folder_ / (".partial-" + std::to_string(process_id()) + "-" +
+                              std::to_string(temporaries_named.fetch_add(1, std::memory_order_relaxed)));
+        if (std::filesystem::create_directory(staging_, ec)) return;
+        if (ec) break;  // false without an error: the name is taken, try the next
+    }
+    const int err = ec ? ec.default_error_condition().value() : EEXIST;
+    staging_.clear();
+    throw Error("cannot write " + utf8_string(folder_) + ": " +
+                (err == EEXIST ? std::string("every temporary name tried is taken") : write_failure_reason(err, folder_)));
+}
+
+StagingFolder::~StagingFolder() {
+    if (committed_ || staging_.empty()) return;
+    std::error_code ec;
+    std::filesystem::remove_all(staging_, ec);
+    if (created_.empty()) return;
+    // Only empty folders go (remove fails on any other): what was put there meanwhile stays.
+    for (std::filesystem::path p = folder_; !p.empty(); p = p.parent_path()) {
+        if (!std::filesystem::remove(p, ec) || p == created_ || p == p.parent_path()) break;
+    }
+}
+
+void StagingFolder::commit() {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(staging_, ec)) {
+        const std::filesystem::path to = folder_ / entry.path().filename();
+        if (const int err = replace_file(entry.path(), to))
+            throw Error("cannot write " + utf8_string(to) + ": " + write_failure_reason(err, to));
+    }
+    if (ec) throw Error("cannot write " + utf8_string(folder_) + ": " + write_failure_reason(ec.default_error_condition().value(), folder_));
+    std::filesystem::remove(staging_, ec);
+    committed_ = true;
+    sync_folder(folder_);
 }
 
 // ------------------------------------------------------------------------------- RunFiles

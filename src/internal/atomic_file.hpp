@@ -1,8 +1,11 @@
 // Files written in full or not at all, for the render and scene modules and the grape tool
-// (internal: not installed). Bytes go to a sibling temporary FILE.partial; commit() flushes
-// them, fsyncs, and renames the temporary over FILE (on Windows: FlushFileBuffers, then
-// MoveFileExW replacing FILE), so a reader sees the old file or the whole new one. Every failure (a full disk, a missing folder, a folder in the way) throws
-// grape::Error "cannot write FILE: REASON" and leaves neither FILE nor the temporary behind.
+// (internal: not installed). Bytes go to a sibling temporary FILE.partial-PID-N that only this
+// writer uses (created exclusively: O_EXCL, or _O_EXCL on Windows); commit() flushes them,
+// fsyncs, and renames the temporary over FILE (on Windows: FlushFileBuffers, then MoveFileExW
+// replacing FILE), so a reader sees the old file or one writer's whole new one, and of many
+// concurrent writers of FILE the last rename wins. Every failure (a full disk, a missing
+// folder, a folder in the way) throws grape::Error "cannot write FILE: REASON" and leaves
+// neither FILE nor the temporary behind.
 #pragma once
 
 #include <cstddef>
@@ -18,7 +21,7 @@ struct CleanupEntry;
 /// One file being written; destroying it uncommitted removes the temporary.
 class AtomicFile {
 public:
-    /// Opens FILE.partial for writing; throws if FILE is a folder or cannot be created.
+    /// Creates this writer's temporary beside FILE; throws if FILE is a folder or it cannot be created.
     explicit AtomicFile(std::filesystem::path file);
     ~AtomicFile();
     AtomicFile(const AtomicFile&) = delete;
@@ -56,6 +59,32 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
 /// The reason a write to FILE failed with errno ERR, as messages quote it: lower case
 /// ("no space left on device"), or "folder F does not exist" for a missing folder.
 std::string write_failure_reason(int err, const std::filesystem::path& file);
+
+/// A folder's new files made visible together: they are written into a fresh staging folder
+/// inside FOLDER (.partial-PID-N), and commit() moves each over its name in FOLDER. Destroyed
+/// without commit() (the run failed), it removes the staging folder with everything in it,
+/// and then FOLDER and its parents up to CREATED (the outermost folder the run created; empty:
+/// none), each only if empty. So a failed run leaves FOLDER as it was, or gone if it made it.
+class StagingFolder {
+public:
+    /// Creates the staging folder; throws "cannot write FOLDER: REASON".
+    explicit StagingFolder(std::filesystem::path folder, std::filesystem::path created = {});
+    ~StagingFolder();
+    StagingFolder(const StagingFolder&) = delete;
+    StagingFolder& operator=(const StagingFolder&) = delete;
+
+    /// Where to write the files.
+    const std::filesystem::path& path() const noexcept { return staging_; }
+    /// Moves every staged file over its name in FOLDER and removes the staging folder; throws
+    /// "cannot write FILE: REASON" if a move fails (the files not yet moved are removed).
+    void commit();
+
+private:
+    std::filesystem::path folder_;
+    std::filesystem::path staging_;
+    std::filesystem::path created_;
+    bool committed_ = false;
+};
 
 /// Makes SIGINT and SIGTERM remove every file registered here (temporaries of AtomicFiles,
 /// the files of an unfinished RunFiles), then end the process by the same signal. For

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace grape::detail {
 
@@ -145,7 +146,33 @@ SineWaveNode::SineWaveNode(Vec2 a, Vec2 b, double frequency, double amplitude) n
       amplitude(amplitude),
       delta_(b - a),
       normal_(perpendicular(normalized(b - a))),
-      omega_(2.0 * pi * frequency) {}
+      omega_(2.0 * pi * frequency),
+      half_(frequency != 0.0 ? 0.5 / std::abs(frequency) : HUGE_VAL),
+      half_length_(half_ < 1.0 ? from_crest(half_) : 0.0) {}
+
+// The speed √(|Δ|² + (A·ω·cos ωu)²) repeats every half wave, so the length of k half waves
+// is k times one's: the length costs the same at any frequency (integrating every wave took
+// minutes at 10⁶ waves). ∫ of the speed over [0, r], r within one half wave from a crest,
+// split at the quarter where cos ωu = 0 (a kink of the speed when Δ = 0). The target is
+// relative to the piece, so k pieces stay within it of the whole.
+double SineWaveNode::from_crest(double r) const noexcept {
+    auto speed = [this](double u) noexcept { return grape::length(d1(u)); };
+    const double quarter = 0.5 * half_;
+    const double first = std::min(r, quarter);
+    const double tolerance = 1e-15 * std::max(gauss_legendre(speed, 0.0, first), std::numeric_limits<double>::min());
+    double sum = integrate(speed, 0.0, first, tolerance, 40);
+    if (r > quarter) sum += integrate(speed, quarter, r, tolerance, 40);
+    return sum;
+}
+
+double SineWaveNode::length_at(double u) const noexcept {
+    if (!(u > 0.0)) return 0.0;
+    u = std::min(u, 1.0);
+    if (!(half_ < 1.0)) return from_crest(u);  // less than a half wave in all
+    const double k = std::floor(u / half_);
+    const double r = std::clamp(u - k * half_, 0.0, half_);
+    return k * half_length_ + from_crest(r);
+}
 
 Vec2 SineWaveNode::point(double u) const noexcept {
     return a + delta_ * u + normal_ * (amplitude * std::sin(omega_ * u));

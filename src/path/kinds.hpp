@@ -91,13 +91,20 @@ public:
     const Vec2 a, b;
     const double frequency, amplitude;
 
+    double length_at(double u) const noexcept override;
+
 protected:
     void interior_breaks(std::vector<double>& out) const override;
     int samples_per_piece() const noexcept override { return 8; }
+    bool closed_form_length() const noexcept override { return true; }
 
 private:
+    double from_crest(double r) const noexcept;
+
     Vec2 delta_, normal_;
     double omega_;
+    double half_;         // a half wave's span in u, 1/(2|frequency|) (+inf without waves)
+    double half_length_;  // its arc length (0 when half_ ≥ 1)
 };
 
 /// A quadratic Bézier, also used (with the time scale folded in) for projectiles.

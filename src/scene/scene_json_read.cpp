@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace grape::scene_io {
 
@@ -164,12 +165,72 @@ std::size_t particle_index(const json& obj, const std::string& pointer, std::str
 }
 
 
+namespace {
+
+// Follows a SAX parse to the value being read, so that a number too large for a double
+// (1e999) is reported at its JSON pointer, as every other bad value is.
+class PointerTracker final : public nlohmann::json_sax<json> {
+public:
+    std::string pointer;  // of the value the parser refused
+    std::string token;    // its text
+
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return open(false); }
+    bool key(string_t& k) override {
+        frames_.back().key = k;
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(true); }
+    bool end_array() override { return close(); }
+    bool parse_error(std::size_t, const std::string& last_token, const nlohmann::detail::exception&) override {
+        for (const Frame& f : frames_) pointer = f.array ? child(pointer, f.index) : child(pointer, f.key);
+        token = last_token;
+        return false;
+    }
+
+private:
+    struct Frame {
+        bool array = false;
+        std::size_t index = 0;
+        std::string key;
+    };
+    bool value() {
+        if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+        return true;
+    }
+    bool open(bool array) {
+        frames_.push_back({array, 0, {}});
+        return true;
+    }
+    bool close() {
+        frames_.pop_back();
+        return value();
+    }
+    std::vector<Frame> frames_;
+};
+
+}  // namespace
+
 json parse_text(std::string_view text, const std::string& where) {
     try {
         return json::parse(text.begin(), text.end());
     } catch (const json::parse_error& e) {
         throw Error(where + "JSON syntax error at byte " + std::to_string(e.byte) + ": " +
                     std::string(e.what()).substr(std::string(e.what()).find(':') + 2));
+    } catch (const json::out_of_range& e) {
+        // A number past the range of a double: found again, with its place, by a second parse.
+        PointerTracker tracker;
+        json::sax_parse(text.begin(), text.end(), &tracker);
+        if (!tracker.token.empty())
+            throw Error(where + (tracker.pointer.empty() ? "/" : tracker.pointer) + ": number out of range (got " + tracker.token + ")");
+        throw Error(where + "invalid JSON: " + e.what());
     } catch (const json::exception& e) {
         throw Error(where + "invalid JSON: " + e.what());
     }

@@ -365,18 +365,14 @@ SceneTiming::SceneTiming(const Scene& scene) {
     }
 }
 
-namespace {
-
 // The time at scene time t of what timeline `driver` holds at `start` (a free one: t itself).
-double driven_time(const SceneTiming& timing, std::ptrdiff_t driver, double start, double t) noexcept {
+double SceneTiming::driven_time(std::ptrdiff_t driver, double start, double t) const noexcept {
     if (driver < 0) return t;
-    return timing.timeline_time(static_cast<std::size_t>(driver), t) - start;
+    return driving_time(static_cast<std::size_t>(driver), t) - start;
 }
 
-}  // namespace
-
 double SceneTiming::tween_time(std::size_t i, double t) const noexcept {
-    return driven_time(*this, tweens_[i].driver, tweens_[i].start, t);
+    return driven_time(tweens_[i].driver, tweens_[i].start, t);
 }
 
 double SceneTiming::tween_progress(std::size_t i, double t) const noexcept {
@@ -391,11 +387,20 @@ bool SceneTiming::tween_reached(std::size_t i, double t) const noexcept {
 }
 
 double SceneTiming::timeline_time(std::size_t k, double t) const noexcept {
+    return std::min(driving_time(k, t), std::max(timelines_[k].layout.duration, 0.0));
+}
+
+double SceneTiming::driving_time(std::size_t k, double t) const noexcept {
     const Timeline& tl = timelines_[k];
     const std::ptrdiff_t parent = tl.layout.parent;
-    const double in_parent = parent < 0 ? t : timeline_time(static_cast<std::size_t>(parent), t) - tl.layout.start_in_parent;
+    const double in_parent = parent < 0 ? t : driving_time(static_cast<std::size_t>(parent), t) - tl.layout.start_in_parent;
     const double d = tl.layout.duration;
-    if (!(d > 0.0)) return 0.0;  // nothing but labels: always at its start
+    if (!(d > 0.0)) {
+        // Nothing but labels: always at its start. Children whose lengths underflowed to 0
+        // (time scales of 1e300 nested) have happened at any time after its start.
+        const bool holds = std::any_of(tl.layout.index.begin(), tl.layout.index.end(), [](std::ptrdiff_t i) { return i >= 0; });
+        return holds && in_parent * tl.def.time_scale - tl.def.delay > 0.0 ? HUGE_VAL : 0.0;
+    }
     // The engine's timelines' arithmetic (its time at its own scale, less the delay, over the
     // play's length), so that the scene and an engine ticking the same times agree bit for
     // bit: timeline_local_time's −delay/d + t·(scale/d) rounds differently when d is not a
@@ -408,7 +413,7 @@ double SceneTiming::timeline_time(std::size_t k, double t) const noexcept {
 }
 
 double SceneTiming::animation_time(std::size_t i, double t) const noexcept {
-    return driven_time(*this, animations_[i].driver, animations_[i].start, t);
+    return driven_time(animations_[i].driver, animations_[i].start, t);
 }
 
 double SceneTiming::progress(std::size_t i, double t) const noexcept {

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 
 namespace grape {
 
@@ -126,6 +128,10 @@ ordered properties_json(const Scene& scene) {
 
 void read_tweens(const json& v, Scene& scene) {
     if (!v.is_array()) fail("/tweens", "expected an array, got " + type_of(v));
+    // Hashed: one lookup per tween, not Scene::find_property's scan of every property.
+    std::unordered_map<std::string_view, std::size_t> properties;
+    properties.reserve(scene.properties.size());
+    for (std::size_t k = 0; k < scene.properties.size(); ++k) properties.emplace(scene.properties[k].name, k);
     for (std::size_t i = 0; i < v.size(); ++i) {
         const std::string p = child("/tweens", i);
         const json& o = object(v[i], p, {"name", "property", "from", "to", "by", "duration", "curve", "delay", "repeat",
@@ -133,9 +139,9 @@ void read_tweens(const json& v, Scene& scene) {
         SceneTween tw;
         tw.name = name_field(o, p, nullptr);
         tw.property = string_value(required(o, p, "property"), child(p, "property"));
-        const std::ptrdiff_t k = scene.find_property(tw.property);
-        if (k < 0) fail(child(p, "property"), "no property named \"" + tw.property + "\" in /properties");
-        const SceneProperty& prop = scene.properties[static_cast<std::size_t>(k)];
+        const auto found = properties.find(tw.property);
+        if (found == properties.end()) fail(child(p, "property"), "no property named \"" + tw.property + "\" in /properties");
+        const SceneProperty& prop = scene.properties[found->second];
         const bool has_from = o.contains("from"), has_to = o.contains("to"), has_by = o.contains("by");
         if (has_to && has_by) fail(p, "\"to\" and \"by\" both given (a tween goes to a value or by an amount)");
         if (!has_to && !has_by) fail(p, "missing field \"to\" or \"by\"");
