@@ -5,13 +5,7 @@
 #include "utf8_path.hpp"
 
 #ifdef _WIN32
-#ifndef NOMINMAX
-#define NOMINMAX
-#endif
-#ifndef WIN32_LEAN_AND_MEAN
-#define WIN32_LEAN_AND_MEAN
-#endif
-#include <windows.h>
+#include "windows.hpp"
 #include <fcntl.h>
 #include <io.h>
 #include <sys/stat.h>
