@@ -1,8 +1,12 @@
 // Path queries: ns per closest-point query on a 100-segment SVG path (cubic, quadratic, arc and
 // line segments), exact (closest_point, and closest_point_from for a dragged point) against
-// what engines do instead: bake the path into N points evenly in u and project onto that
-// polyline (Godot's Curve2D.get_closest_point works on its baked points). In the same run, the
-// baked answers' distance error against the exact one, worst and median over the queries.
+// what engines do instead: bake the path into points and project onto that polyline. Three
+// peers: the plain projection loop (hypot and a division per segment), the loop a careful
+// engineer writes (squared distances over arrays of the segments' starts, directions and
+// reciprocal squared lengths made at bake time, one square root per query), and Godot's way
+// (Curve2D bakes at equal arc length, 5 px apart by default, and get_closest_point scans every
+// baked segment), with the careful loop. In the same run, each peer's distance error against
+// the exact answer, worst and median over the queries.
 //
 //   build-bench/bench/bench_path_query --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <grape/path.hpp>
@@ -62,11 +66,26 @@ const std::vector<Vec2>& drag() {
     return q;
 }
 
+// Points every `spacing` of arc length (and the end), as Godot's Curve2D bakes them.
+std::vector<Vec2> bake_by_length(double spacing) {
+    const grape::Path arc = svg().reparametrized();
+    const double length = svg().length();
+    const auto n = static_cast<int>(std::ceil(length / spacing));
+    std::vector<Vec2> out;
+    for (int i = 0; i <= n; ++i) out.push_back(arc.point(std::min(1.0, i * spacing / length)));
+    return out;
+}
+
+std::vector<Vec2> bake_by_u(int n) {
+    std::vector<Vec2> out;
+    for (int i = 0; i <= n; ++i) out.push_back(svg().point(static_cast<double>(i) / n));
+    return out;
+}
+
 struct Baked {
     std::vector<Vec2> points;
-    explicit Baked(int n) {
-        for (int i = 0; i <= n; ++i) points.push_back(svg().point(static_cast<double>(i) / n));
-    }
+    explicit Baked(int n) : points(bake_by_u(n)) {}
+    std::size_t segments() const { return points.size() - 1; }
     double distance(Vec2 q) const {
         double best = std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i + 1 < points.size(); ++i) {
@@ -78,6 +97,47 @@ struct Baked {
         return best;
     }
 };
+
+// The careful scan: the segments as arrays (start, direction, 1/|direction|², 0 for a repeated
+// point), so the loop is multiplies, adds and a clamp the compiler can vectorize; the squared
+// distance is compared and one square root taken at the end.
+struct BakedArrays {
+    std::vector<double> x, y, dx, dy, inv;
+    std::size_t segments() const { return x.size(); }
+    explicit BakedArrays(const std::vector<Vec2>& p) {
+        for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+            const Vec2 d = p[i + 1] - p[i];
+            const double l2 = grape::length_squared(d);
+            x.push_back(p[i].x);
+            y.push_back(p[i].y);
+            dx.push_back(d.x);
+            dy.push_back(d.y);
+            inv.push_back(l2 > 0.0 ? 1.0 / l2 : 0.0);
+        }
+    }
+    double distance(Vec2 q) const {
+        double best = std::numeric_limits<double>::infinity();
+        const std::size_t n = x.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const double qx = q.x - x[i], qy = q.y - y[i];
+            const double t = std::clamp((qx * dx[i] + qy * dy[i]) * inv[i], 0.0, 1.0);
+            const double ex = qx - t * dx[i], ey = qy - t * dy[i];
+            best = std::min(best, ex * ex + ey * ey);
+        }
+        return std::sqrt(best);
+    }
+};
+
+// The worst and median distance error of a peer over the queries, as counters.
+template <class Table>
+void error_counters(benchmark::State& state, const Table& table) {
+    std::vector<double> error;
+    for (const Vec2 p : queries()) error.push_back(table.distance(p) - grape::closest_point(svg(), p).distance);
+    std::sort(error.begin(), error.end());
+    state.counters["max_err_px"] = std::max(std::abs(error.front()), std::abs(error.back()));
+    state.counters["median_err_px"] = error[error.size() / 2];
+    state.counters["segments"] = static_cast<double>(table.segments());
+}
 
 void exact(benchmark::State& state) {
     const auto& q = queries();
@@ -105,19 +165,34 @@ void exact_cold_dragged(benchmark::State& state) {
 void baked(benchmark::State& state) {
     const Baked table(static_cast<int>(state.range(0)));
     const auto& q = queries();
-    std::vector<double> error;
-    for (const Vec2 p : q) error.push_back(table.distance(p) - grape::closest_point(svg(), p).distance);
-    std::sort(error.begin(), error.end());
     std::size_t i = 0;
     for (auto _ : state) benchmark::DoNotOptimize(table.distance(q[i++ & 1023]));
-    state.counters["max_err_px"] = std::max(std::abs(error.front()), std::abs(error.back()));
-    state.counters["median_err_px"] = error[error.size() / 2];
+    error_counters(state, table);
+}
+
+void baked_careful(benchmark::State& state) {
+    const BakedArrays table(bake_by_u(static_cast<int>(state.range(0))));
+    const auto& q = queries();
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(table.distance(q[i++ & 1023]));
+    error_counters(state, table);
+}
+
+// Godot's default bake interval, 5 px (Curve2D.bake_interval), and a finer 1 px.
+void godot_bake(benchmark::State& state) {
+    const BakedArrays table(bake_by_length(static_cast<double>(state.range(0))));
+    const auto& q = queries();
+    std::size_t i = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(table.distance(q[i++ & 1023]));
+    error_counters(state, table);
 }
 
 }  // namespace
 
 BENCHMARK(exact);
 BENCHMARK(baked)->Arg(1000)->Arg(10000);
+BENCHMARK(baked_careful)->Arg(1000)->Arg(10000);
+BENCHMARK(godot_bake)->Arg(5)->Arg(1);
 BENCHMARK(exact_dragged);
 BENCHMARK(exact_cold_dragged);
 BENCHMARK_MAIN();
