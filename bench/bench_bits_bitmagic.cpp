@@ -2,6 +2,7 @@
 #include "bench_bits_bitmagic.hpp"
 
 #include <bm.h>
+#include <bmalgo.h>
 
 #include <benchmark/benchmark.h>
 
@@ -21,6 +22,20 @@ std::unique_ptr<BV> build(std::size_t bits, const std::vector<std::uint32_t>& se
     return bv;
 }
 
+// The visitor bm::for_each_bit calls: bits by blocks of offsets, runs of ones as ranges.
+struct SumVisitor {
+    using size_type = BV::size_type;
+    std::size_t sum = 0;
+    int add_bits(size_type offset, const unsigned char* bits, unsigned size) {
+        for (unsigned i = 0; i < size; ++i) sum += offset + bits[i];
+        return 0;
+    }
+    int add_range(size_type offset, size_type size) {
+        sum += size * offset + size * (size - 1) / 2;
+        return 0;
+    }
+};
+
 }  // namespace
 
 void register_rows(const Patterns& p) {
@@ -38,6 +53,23 @@ void register_rows(const Patterns& p) {
             std::size_t sum = 0;
             for (BV::enumerator en = g_sparse->first(); en.valid(); ++en) sum += *en;
             benchmark::DoNotOptimize(sum);
+        }
+    });
+    reg("sparse iterate/BitMagic for_each_bit", [](benchmark::State& s) {
+        for (auto _ : s) {
+            SumVisitor sum;
+            bm::for_each_bit(*g_sparse, sum);
+            benchmark::DoNotOptimize(sum.sum);
+        }
+    });
+    reg("sparse toggle + count/BitMagic bvector", [](benchmark::State& s) {
+        BV& v = *g_sparse;
+        bm::id_t i = 0;
+        for (auto _ : s) {
+            i = (i + 1'000'003) % v.size();
+            v.flip(i);
+            benchmark::DoNotOptimize(v.count());
+            v.flip(i);
         }
     });
     reg("dense &=/BitMagic bvector", [](benchmark::State& s) {

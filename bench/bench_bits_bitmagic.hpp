@@ -17,7 +17,8 @@ struct Patterns {
 };
 
 /// Builds the bm::bvector<> copies (optimize()d, as BitMagic recommends) and registers the
-/// rows "sparse count/BitMagic", "sparse iterate/BitMagic" and "dense &=/BitMagic".
+/// rows "sparse count", "sparse toggle + count", "sparse iterate" (enumerator and
+/// for_each_bit visitor), "dense &=" and "dense &= + count" for BitMagic.
 void register_rows(const Patterns& patterns);
 /// Heap bytes of the sparse vector (bvector::calc_stat's memory_used).
 std::size_t sparse_memory_bytes();
