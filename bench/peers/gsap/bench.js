@@ -6,11 +6,14 @@
 //   motion       MotionPathPlugin along "M from L to" (GSAP measures paths by arc length)
 //   motion-cubic MotionPathPlugin along the same cubic Bézier as bench_anim's (b)/(c)
 //   timelines    bench_timeline's timelines of 10 sequential tweens (see runTimelines)
-// Reports CPU ns per tween update and heap bytes per tween (after gc).
-// Usage: node --expose-gc bench.js [mode...] [--n 1000,100000,1000000]
+// Reports ns per tween update (timing.js: wall time after a collection and a warm-up of at
+// least 1 s; the median and min–max of 7 rounds, process CPU time's median beside) and heap
+// bytes per tween (after gc).
+// Usage: node --expose-gc bench.js [mode...] [--n 1000,100000,1000000] [--rounds 7]
 'use strict';
 const { gsap } = require('gsap');
 const { MotionPathPlugin } = require('gsap/MotionPathPlugin');
+const { measure, format } = require('./timing.js');
 
 MotionPathPlugin.headless = true;  // no DOM in Node
 gsap.registerPlugin(MotionPathPlugin);
@@ -19,9 +22,11 @@ gsap.ticker.lagSmoothing(0);
 
 const args = process.argv.slice(2);
 let sizes = [1000, 100000, 1000000];
+let rounds = 7;
 const modes = [];
 for (let i = 0; i < args.length; ++i) {
   if (args[i] === '--n') sizes = args[++i].split(',').map(Number);
+  else if (args[i] === '--rounds') rounds = Number(args[++i]);
   else modes.push(args[i]);
 }
 if (modes.length === 0) modes.push('tween', 'motion', 'motion-cubic');
@@ -47,6 +52,7 @@ function cubicPath(s) {
 }
 
 const frame = 1 / 60;
+const framesFor = (n) => Math.max(10, Math.min(2000, Math.round(3e7 / n)));
 let clock = 0;
 
 function run(mode, n) {
@@ -67,22 +73,19 @@ function run(mode, n) {
   }
   global.gc();
   const bytes = (process.memoryUsage().heapUsed - before) / n;
-  for (let k = 0; k < 3; ++k) { clock += frame; gsap.updateRoot(clock); }  // warm-up
-  const frames = Math.max(10, Math.min(2000, Math.round(3e7 / n)));
-  const t0 = process.cpuUsage();
-  for (let k = 0; k < frames; ++k) { clock += frame; gsap.updateRoot(clock); }
-  const t1 = process.cpuUsage(t0);
-  const ns = ((t1.user + t1.system) * 1000) / (frames * n);
+  const step = () => { clock += frame; gsap.updateRoot(clock); };
+  const t = measure([{ name: mode, step, frames: framesFor(n), per: n }], rounds)[mode];
   if (!Number.isFinite(targets[n - 1].x)) throw new Error('no motion');
-  console.log(`gsap_${mode.padEnd(13)} N=${String(n).padStart(8)}  ns/update ${ns.toFixed(1).padStart(8)}  bytes/tween ${bytes.toFixed(0).padStart(6)}`);
+  console.log(`gsap_${mode.padEnd(13)} N=${String(n).padStart(8)}  ${format(t)}  bytes/tween ${bytes.toFixed(0).padStart(6)}`);
   gsap.globalTimeline.clear();  // drop this run's tweens at once (killing 1e6 one by one crawls)
 }
 
 // bench_timeline's workload: N tweens as N/10 timelines (repeat -1) of 10 sequential x/y
 // tweens, each played once per timeline play, power2.inOut, 1 + 2·(i mod 1000)/1000 s.
-// Reports CPU ns per live update (one active tween per timeline) and per tween held.
+// Reports ns per live update (one active tween per timeline) and per tween held.
 function runTimelines(n) {
   const segs = segments(1024);
+  global.gc();
   const timelines = [];
   const targets = new Array(n);
   for (let t = 0; t < n / 10; ++t) {
@@ -96,14 +99,11 @@ function runTimelines(n) {
     }
     timelines.push(tl);
   }
-  for (let k = 0; k < 3; ++k) { clock += frame; gsap.updateRoot(clock); }  // warm-up
-  const frames = Math.max(10, Math.min(2000, Math.round(3e7 / n)));
-  const t0 = process.cpuUsage();
-  for (let k = 0; k < frames; ++k) { clock += frame; gsap.updateRoot(clock); }
-  const t1 = process.cpuUsage(t0);
-  const ns = ((t1.user + t1.system) * 1000) / frames;
+  // Per live update: one active tween per timeline.
+  const step = () => { clock += frame; gsap.updateRoot(clock); };
+  const t = measure([{ name: 'timelines', step, frames: framesFor(n), per: n / 10 }], rounds).timelines;
   if (!Number.isFinite(targets[n - 1].x)) throw new Error('no motion');
-  console.log(`gsap_timelines  N=${String(n).padStart(8)}  ns/live update ${(ns / (n / 10)).toFixed(1).padStart(8)}  ns/tween held ${(ns / n).toFixed(1).padStart(7)}`);
+  console.log(`gsap_timelines  N=${String(n).padStart(8)}  live updates: ${format(t)}  ns/tween held ${(t.wall.median / 10).toFixed(1).padStart(7)}`);
   gsap.globalTimeline.clear();
 }
 

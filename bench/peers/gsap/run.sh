@@ -6,6 +6,6 @@ set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 scratch=${GSAP_SCRATCH:-${TMPDIR:-/tmp}/grape-gsap-peer}
 mkdir -p "$scratch"
-cp "$here/package.json" "$here/bench.js" "$scratch/"
+cp "$here/package.json" "$here/bench.js" "$here/timing.js" "$scratch/"
 (cd "$scratch" && npm install --no-audit --no-fund --loglevel=error >/dev/null)
 exec node --expose-gc --max-old-space-size=12288 "$scratch/bench.js" "$@"

@@ -6,16 +6,19 @@
 //                grape: CubicBezierPath (u), positions read back from one Float64Array
 //   arc-length   GSAP: MotionPathPlugin along the same "M C" path (it moves by measured length)
 //                grape: the Bézier reparametrized() (constant speed)
-// Reports CPU ns per tween update (grape's includes reading every x and y back), bytes per
+// Reports ns per tween update (grape's includes reading every x and y back; timing.js: wall
+// time after a collection and a warm-up of at least 1 s, median and min–max of 7 rounds
+// interleaved between the two, CPU time's median beside), bytes per
 // tween (GSAP: JS heap after gc; grape: the engine's storage, its position slot and handle),
 // and the worst position error over 1000 sampled tweens against the exact point: the Bézier
 // at u = eased progress (by-u) or at arc length progress·L found by grape's Newton solve on
 // the quadrature length, to ~1e-15 (arc-length).
-// Usage: node --expose-gc wasm.js [--n 100000,1000000] [--modes by-u,arc-length]
+// Usage: node --expose-gc wasm.js [--n 100000,1000000] [--modes by-u,arc-length] [--rounds 7]
 'use strict';
 const { gsap } = require('gsap');
 const { MotionPathPlugin } = require('gsap/MotionPathPlugin');
 const loadGrape = require('grape-wasm');
+const { measure, format } = require('./timing.js');
 
 MotionPathPlugin.headless = true;
 gsap.registerPlugin(MotionPathPlugin);
@@ -25,9 +28,11 @@ gsap.ticker.lagSmoothing(0);
 const args = process.argv.slice(2);
 let sizes = [100000, 1000000];
 let modes = ['by-u', 'arc-length'];
+let rounds = 7;
 for (let i = 0; i < args.length; ++i) {
   if (args[i] === '--n') sizes = args[++i].split(',').map(Number);
   else if (args[i] === '--modes') modes = args[++i].split(',');
+  else if (args[i] === '--rounds') rounds = Number(args[++i]);
 }
 
 function segments(count) {  // bench.js's generator
@@ -49,10 +54,10 @@ function bezier(c, u) {
 const duration = (i) => 1 + 2 * (i % 1000) / 1000;
 const frame = 1 / 60;
 const framesFor = (n) => Math.max(10, Math.min(2000, Math.round(3e7 / n)));
-const cpu = (f) => { const t0 = process.cpuUsage(); f(); const t = process.cpuUsage(t0); return (t.user + t.system) * 1000; };
 
 let clock = 0;
-function runGsap(mode, n, segs, exact) {
+// GSAP's tweens: the step of one frame, then the worst error and the clean-up.
+function setUpGsap(mode, n, segs, exact) {
   global.gc();
   const before = process.memoryUsage().heapUsed;
   const targets = new Array(n), tweens = new Array(n);
@@ -73,19 +78,21 @@ function runGsap(mode, n, segs, exact) {
   }
   global.gc();
   const bytes = (process.memoryUsage().heapUsed - before) / n;
-  for (let k = 0; k < 3; ++k) { clock += frame; gsap.updateRoot(clock); }
-  const frames = framesFor(n);
-  const ns = cpu(() => { for (let k = 0; k < frames; ++k) { clock += frame; gsap.updateRoot(clock); } }) / (frames * n);
-  let worst = 0;
-  for (let i = 0; i < n; i += Math.ceil(n / 1000)) {
-    const p = exact(i % 1024, tweens[i].ratio);  // ratio: the eased progress of the current play
-    worst = Math.max(worst, Math.hypot(targets[i].x - p.x, targets[i].y - p.y));
-  }
-  gsap.globalTimeline.clear();
-  return { ns, bytes, worst };
+  const step = () => { clock += frame; gsap.updateRoot(clock); };
+  const finish = () => {
+    let worst = 0;
+    for (let i = 0; i < n; i += Math.ceil(n / 1000)) {
+      const p = exact(i % 1024, tweens[i].ratio);  // ratio: the eased progress of the current play
+      worst = Math.max(worst, Math.hypot(targets[i].x - p.x, targets[i].y - p.y));
+    }
+    gsap.globalTimeline.clear();
+    return worst;
+  };
+  return { bytes, step, finish };
 }
 
-function runGrape(g, mode, n, paths, exact) {
+// grape.wasm's engine, the same way.
+function setUpGrape(g, n, paths, exact) {
   const engine = new g.Engine(n);
   const options = { curve: 'quad-in-out', repeat: -1, yoyo: true };
   for (let i = 0; i < n; ++i) engine.add(paths[i % 1024], duration(i), options);
@@ -99,20 +106,20 @@ function runGrape(g, mode, n, paths, exact) {
     for (let k = 0, m = xy.length; k < m; ++k) sum += xy[k];
     sink += sum;
   };
-  for (let k = 0; k < 3; ++k) step();
-  const frames = framesFor(n);
-  const ns = cpu(() => { for (let k = 0; k < frames; ++k) step(); }) / (frames * n);
-  if (!Number.isFinite(sink)) throw new Error('no motion');
-  let worst = 0;
-  const xy = engine.positions();
-  for (let i = 0; i < n; i += Math.ceil(n / 1000)) {
-    const a = engine.animation(i);
-    const p = exact(i % 1024, a.progress());
-    a.delete();
-    worst = Math.max(worst, Math.hypot(xy[2 * i] - p.x, xy[2 * i + 1] - p.y));
-  }
-  engine.delete();
-  return { ns, bytes, worst };
+  const finish = () => {
+    if (!Number.isFinite(sink)) throw new Error('no motion');
+    let worst = 0;
+    const xy = engine.positions();
+    for (let i = 0; i < n; i += Math.ceil(n / 1000)) {
+      const a = engine.animation(i);
+      const p = exact(i % 1024, a.progress());
+      a.delete();
+      worst = Math.max(worst, Math.hypot(xy[2 * i] - p.x, xy[2 * i + 1] - p.y));
+    }
+    engine.delete();
+    return worst;
+  };
+  return { bytes, step, finish };
 }
 
 loadGrape().then((g) => {
@@ -129,11 +136,14 @@ loadGrape().then((g) => {
   };
   for (const n of sizes) {
     for (const mode of modes) {
-      // Interleaved: GSAP, then grape, for each size and mode.
-      const a = runGsap(mode, n, segs, exact[mode]);
-      console.log(`gsap_${mode.padEnd(11)} N=${String(n).padStart(8)}  ns/update ${a.ns.toFixed(1).padStart(8)}  bytes/tween ${a.bytes.toFixed(0).padStart(6)}  worst error ${a.worst.toExponential(2)} px`);
-      const b = runGrape(g, mode, n, mode === 'by-u' ? byU : even, exact[mode]);
-      console.log(`wasm_${mode.padEnd(11)} N=${String(n).padStart(8)}  ns/update ${b.ns.toFixed(1).padStart(8)}  bytes/tween ${b.bytes.toFixed(0).padStart(6)}  worst error ${b.worst.toExponential(2)} px`);
+      const a = setUpGsap(mode, n, segs, exact[mode]);
+      const b = setUpGrape(g, n, mode === 'by-u' ? byU : even, exact[mode]);
+      const frames = framesFor(n);
+      const t = measure([{ name: 'gsap', step: a.step, frames, per: n }, { name: 'wasm', step: b.step, frames, per: n }], rounds);
+      const worstA = a.finish(), worstB = b.finish();
+      console.log(`gsap_${mode.padEnd(11)} N=${String(n).padStart(8)}  ${format(t.gsap)}  bytes/tween ${a.bytes.toFixed(0).padStart(6)}  worst error ${worstA.toExponential(2)} px`);
+      console.log(`wasm_${mode.padEnd(11)} N=${String(n).padStart(8)}  ${format(t.wasm)}  bytes/tween ${b.bytes.toFixed(0).padStart(6)}  worst error ${worstB.toExponential(2)} px`);
+      console.log(`  gsap / wasm (wall medians) ${(t.gsap.wall.median / t.wasm.wall.median).toFixed(2)}`);
     }
   }
 });

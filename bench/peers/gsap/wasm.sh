@@ -9,6 +9,6 @@ web=$(cd "$here/../../../web" && pwd)
 [ -f "$web/dist/grape-node.wasm" ] || { echo "wasm.sh: build grape.wasm first (scripts/build-web)" >&2; exit 1; }
 scratch=${GSAP_SCRATCH:-${TMPDIR:-/tmp}/grape-gsap-wasm}
 mkdir -p "$scratch"
-cp "$here/package.json" "$here/wasm.js" "$scratch/"
+cp "$here/package.json" "$here/wasm.js" "$here/timing.js" "$scratch/"
 (cd "$scratch" && npm install --no-audit --no-fund --loglevel=error "$web" >/dev/null && npm install --no-audit --no-fund --loglevel=error >/dev/null)
 exec node --expose-gc --max-old-space-size=12288 "$scratch/wasm.js" "$@"
