@@ -1,0 +1,22 @@
+# cmake -DVERSION=x.y.z -DCHANGELOG=CHANGELOG.md -DPACKAGE_JSON=web/package.json -P version_check.cmake
+# The project's version is the changelog's latest: its first "## [x.y.z]" section, or before the
+# first release the version its Unreleased section names in bold. web/package.json says the same.
+file(READ "${CHANGELOG}" changelog)
+string(REGEX MATCH "\n## \\[([0-9]+\\.[0-9]+\\.[0-9]+)\\]" released "${changelog}")
+if(released)
+  set(latest "${CMAKE_MATCH_1}")
+else()
+  string(REGEX MATCH "\n## \\[Unreleased\\][^#]*\\*\\*([0-9]+\\.[0-9]+\\.[0-9]+)\\*\\*" named "${changelog}")
+  if(NOT named)
+    message(FATAL_ERROR "${CHANGELOG}: no \"## [x.y.z]\" section, and its Unreleased section names no **x.y.z**")
+  endif()
+  set(latest "${CMAKE_MATCH_1}")
+endif()
+if(NOT latest VERSION_EQUAL VERSION)
+  message(FATAL_ERROR "project(VERSION) is ${VERSION}, the changelog's latest version ${latest}")
+endif()
+file(READ "${PACKAGE_JSON}" package)
+string(REGEX MATCH "\"version\": *\"([^\"]*)\"" found "${package}")
+if(NOT CMAKE_MATCH_1 STREQUAL VERSION)
+  message(FATAL_ERROR "${PACKAGE_JSON} has version \"${CMAKE_MATCH_1}\", project(VERSION) ${VERSION}")
+endif()
