@@ -9,10 +9,15 @@ Each ```cpp (or ```js) block is preceded by one marker comment:
                                                 (C++: -fsyntax-only with warnings as errors;
                                                 JavaScript: node --check)
 
+With --images DIR it checks the links instead: every local link of the pages names a file
+that exists, and every picture a guide page shows as images/NAME is in DIR (where
+scripts/docs-images wrote them).
+
 A block without a marker, a marker naming a missing file or lines past its end, a block that
 differs from its file, or one that does not compile fails the check, with the reason.
 
   doc_snippets.py --root SRC --cxx C++ [--include DIR]... [--node NODE] (FILE.md | FOLDER)...
+  doc_snippets.py --root SRC --images DIR (FILE.md | FOLDER)...
 """
 import argparse
 import difflib
@@ -96,10 +101,30 @@ def check_compile(args, where, lang, body):
     return None
 
 
+LINK = re.compile(r"\[[^\]]*\]\(([^)\s]+)\)")
+
+
+def check_links(root, name, text, images):
+    """Local links of one page that lead nowhere (code blocks and spans left out)."""
+    prose = re.sub(r"`[^`\n]*`", "", re.sub(r"```.*?```", "", text, flags=re.S))
+    shown, failures = os.path.relpath(name, root), []
+    for m in LINK.finditer(prose):
+        target = m.group(1).partition("#")[0]
+        if not target or re.match(r"^[a-z]+:", target):
+            continue
+        if target.startswith("images/") and os.path.basename(os.path.dirname(name)) == "guide":
+            if not os.path.isfile(os.path.join(images, target[len("images/"):])):
+                failures.append(f"{shown}: {target} is not among the pictures in {images}")
+        elif not os.path.exists(os.path.join(os.path.dirname(name), target)):
+            failures.append(f"{shown}: the link {target} leads nowhere")
+    return failures
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--root", required=True)
-    parser.add_argument("--cxx", required=True)
+    parser.add_argument("--cxx")
+    parser.add_argument("--images")
     parser.add_argument("--include", action="append", default=[])
     parser.add_argument("--node")
     parser.add_argument("files", nargs="+")
@@ -111,6 +136,18 @@ def main():
             names += sorted(os.path.join(name, n) for n in os.listdir(name) if n.endswith(".md"))
         else:
             names.append(name)
+    if args.images:
+        failures = []
+        for name in names:
+            with open(name, encoding="utf-8") as f:
+                failures += check_links(args.root, name, f.read(), args.images)
+        for failure in failures:
+            print(failure, file=sys.stderr)
+        print(f"{len(names)} pages' links checked, {len(failures)} lead nowhere")
+        return 1 if failures else 0
+    if not args.cxx:
+        parser.error("--cxx is required to check code blocks")
+
     failures, jobs, counts = [], [], {"example": 0, "compile": 0}
     for name in names:
         with open(name, encoding="utf-8") as f:
