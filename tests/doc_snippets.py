@@ -16,13 +16,14 @@ scripts/docs-images wrote them).
 A block without a marker, a marker naming a missing file or lines past its end, a block that
 differs from its file, or one that does not compile fails the check, with the reason.
 
-  doc_snippets.py --root SRC --cxx C++ [--include DIR]... [--node NODE] (FILE.md | FOLDER)...
+  doc_snippets.py --root SRC --cxx C++ [--flags FLAGS] [--include DIR]... [--node NODE] (FILE.md | FOLDER)...
   doc_snippets.py --root SRC --images DIR (FILE.md | FOLDER)...
 """
 import argparse
 import difflib
 import os
 import re
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -88,7 +89,7 @@ def check_compile(args, where, lang, body):
         with open(source, "w", encoding="utf-8") as f:
             f.write("\n".join(body) + "\n")
         if lang == "cpp":
-            command = [args.cxx, "-std=c++20", "-fsyntax-only", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
+            command = [args.cxx, *shlex.split(args.flags), "-std=c++20", "-fsyntax-only", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
             command += [f"-I{d}" for d in args.include] + [source]
         elif args.node:
             command = [args.node, "--check", source]
@@ -126,6 +127,7 @@ def main():
     parser.add_argument("--cxx")
     parser.add_argument("--images")
     parser.add_argument("--include", action="append", default=[])
+    parser.add_argument("--flags", default="", help="the build's compiler flags, as one string")
     parser.add_argument("--node")
     parser.add_argument("files", nargs="+")
     args = parser.parse_args()
