@@ -10,7 +10,7 @@ Each ```cpp (or ```js) block is preceded by one marker comment:
                                                 JavaScript: node --check)
 
 With --images DIR it checks the links instead: every local link of the pages names a file
-that exists, and every picture a guide page shows as images/NAME is in DIR (where
+that exists (a page, not a heading in it: GitHub and Doxygen name headings differently), and every picture a guide page shows as images/NAME is in DIR (where
 scripts/docs-images wrote them).
 
 A block without a marker, a marker naming a missing file or lines past its end, a block that
@@ -110,8 +110,11 @@ def check_links(root, name, text, images):
     prose = re.sub(r"`[^`\n]*`", "", re.sub(r"```.*?```", "", text, flags=re.S))
     shown, failures = os.path.relpath(name, root), []
     for m in LINK.finditer(prose):
-        target = m.group(1).partition("#")[0]
+        target, _, anchor = m.group(1).partition("#")
         if not target or re.match(r"^[a-z]+:", target):
+            continue
+        if anchor and target.endswith(".md"):  # GitHub and Doxygen name headings differently
+            failures.append(f"{shown}: the link {m.group(1)} names a heading; link the page")
             continue
         if target.startswith("images/") and os.path.basename(os.path.dirname(name)) == "guide":
             if not os.path.isfile(os.path.join(images, target[len("images/"):])):
