@@ -36,7 +36,7 @@ std::string lower_extension(const std::filesystem::path& p) {
     return e;
 }
 
-// The work `grape render` takes on without --force (stated in --help and the README).
+// The work `grape render` takes on without --force (stated in --help and docs/guide/limits-and-errors.md).
 constexpr double memory_budget = 1024.0 * 1024.0 * 1024.0;  // bytes of raster per picture
 constexpr int max_frames = 100000;
 constexpr double max_drawn_length = 1e6;  // output units of path drawn per picture (~1000 view perimeters)

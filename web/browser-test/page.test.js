@@ -3,7 +3,7 @@
 //  - a scripted drag moves a Bézier control point and the marker follows the new shape;
 //  - 10 simulated seconds of the parabola give the figures `grape simulate parabola` prints;
 //  - the chain at 200 particles: the page's own frame-time counter, reported;
-//  - a screenshot for the README.
+//  - a screenshot for the guide (docs/images/web-playground.png).
 // Environment: CHROMIUM (default: chromium on PATH), GRAPE_TOOL (the native tool),
 // GRAPE_WEB_SHOTS (folder for screenshots, default build-web/browser-check).
 'use strict';
@@ -157,7 +157,7 @@ test('the playground in chromium', { timeout: 180000 }, async (t) => {
       await page.evaluate(() => playground.stop());
     });
 
-    await t.test('screenshot for the README', async () => {
+    await t.test('screenshot for the guide', async () => {
       await page.evaluate(() => {
         playground.paths.select("the seed's complex path");
         playground.paths.pause(1.3);
