@@ -193,6 +193,19 @@ void BM_grape_reparam_cubic_spread(benchmark::State& s) {
     grape_engine(s, BenchPathKind::reparametrized_cubic_bezier, "grape_reparam_cubic_spread", 1000.37);
 }
 
+// Arc length where the tables are large: random cubics and 8-segment SVG paths, by u and by
+// arc length, phases spread.
+void BM_grape_random_cubic_spread(benchmark::State& s) {
+    grape_engine(s, BenchPathKind::random_cubic_bezier, "grape_random_cubic_spread", 1000.37);
+}
+void BM_grape_reparam_random_cubic_spread(benchmark::State& s) {
+    grape_engine(s, BenchPathKind::reparametrized_random_cubic_bezier, "grape_reparam_random_cubic_spread", 1000.37);
+}
+void BM_grape_svg_spread(benchmark::State& s) { grape_engine(s, BenchPathKind::svg, "grape_svg_spread", 1000.37); }
+void BM_grape_reparam_svg_spread(benchmark::State& s) {
+    grape_engine(s, BenchPathKind::reparametrized_svg, "grape_reparam_svg_spread", 1000.37);
+}
+
 // tweeny: each tween owns its two start and two end floats; integer duration in ms
 // (during(1000·d)), stepped by the fraction of its duration, yoyo by hand (tweeny 3 has no
 // loops): the sign flips at either end.
@@ -407,6 +420,10 @@ BENCHMARK(BM_grape_cubic)->Apply(sizes);
 BENCHMARK(BM_grape_reparam_cubic)->Apply(sizes);
 BENCHMARK(BM_grape_cubic_spread)->Apply(sizes);
 BENCHMARK(BM_grape_reparam_cubic_spread)->Apply(sizes);
+BENCHMARK(BM_grape_random_cubic_spread)->Apply(sizes);
+BENCHMARK(BM_grape_reparam_random_cubic_spread)->Apply(sizes);
+BENCHMARK(BM_grape_svg_spread)->Apply(sizes);
+BENCHMARK(BM_grape_reparam_svg_spread)->Apply(sizes);
 BENCHMARK(BM_tweeny_linear)->Apply(sizes);
 BENCHMARK(BM_tweeny_quad)->Apply(sizes);
 BENCHMARK(BM_grape_color)->Apply(sizes);
@@ -440,7 +457,9 @@ int main(int argc, char** argv) {
         const auto fl = results.find(key("floor", n));
         const auto tf = results.find(key("traffic_floor", n));
         for (const char* name : {"floor", "traffic_floor", "grape_linear", "grape_cubic", "grape_reparam_cubic", "grape_cubic_spread",
-                                 "grape_reparam_cubic_spread", "tweeny_linear", "tweeny_quad", "grape_color",
+                                 "grape_reparam_cubic_spread", "grape_random_cubic_spread",
+                                 "grape_reparam_random_cubic_spread", "grape_svg_spread", "grape_reparam_svg_spread",
+                                 "tweeny_linear", "tweeny_quad", "grape_color",
                                  "grape_color_oklab", "grape_user_type", "grape_typed_double",
                                  "grape_property_double", "wall_one_pass", "wall_two_phase_1", "wall_parallel_2",
                                  "wall_frame_one_pass", "wall_frame_parallel_2"}) {
@@ -456,15 +475,25 @@ int main(int argc, char** argv) {
     // the ratios (the two were interleaved when run with --benchmark_enable_random_interleaving).
     std::printf("\narc-length / plain cubic (ns ratio; median [min, max] over repetitions)\n");
     for (std::int64_t n : {1000, 100000, 1000000}) {
-        for (const char* tag : {"", "_spread"}) {
-            const auto a = results.find(key((std::string("grape_reparam_cubic") + tag).c_str(), n));
-            const auto b = results.find(key((std::string("grape_cubic") + tag).c_str(), n));
+        for (const char* tag : {"", "_spread", "random_spread", "svg_spread"}) {
+            const std::string t = tag;
+            // "random_spread": random cubics against the plain cubic of the same random shapes;
+            // "svg_spread": SVG paths by arc length against the same paths by u.
+            const std::string by_length = t == "random_spread" ? "grape_reparam_random_cubic_spread"
+                                          : t == "svg_spread"   ? "grape_reparam_svg_spread"
+                                                                : "grape_reparam_cubic" + t;
+            const std::string by_u = t == "random_spread" ? "grape_random_cubic_spread"
+                                     : t == "svg_spread"   ? "grape_svg_spread"
+                                                           : "grape_cubic" + t;
+            const auto a = results.find(key(by_length.c_str(), n));
+            const auto b = results.find(key(by_u.c_str(), n));
             if (a == results.end() || b == results.end()) continue;
             std::vector<double> r;
             for (std::size_t i = 0; i < std::min(a->second.ns_per_update.size(), b->second.ns_per_update.size()); ++i)
                 r.push_back(a->second.ns_per_update[i] / b->second.ns_per_update[i]);
             std::sort(r.begin(), r.end());
-            std::printf("%-8s N=%-8lld %6.2f [%.2f, %.2f]  (%.2f / %.2f ns)\n", *tag ? "spread" : "phase 0",
+            std::printf("%-14s N=%-8lld %6.2f [%.2f, %.2f]  (%.2f / %.2f ns)\n",
+                        t.empty() ? "phase 0" : t == "_spread" ? "spread" : tag,
                         static_cast<long long>(n), r[r.size() / 2], r.front(), r.back(), a->second.median(),
                         b->second.median());
         }

@@ -19,6 +19,10 @@ std::string_view to_string(BenchPathKind kind) noexcept {
         case BenchPathKind::linear: return "linear";
         case BenchPathKind::cubic_bezier: return "cubic_bezier";
         case BenchPathKind::reparametrized_cubic_bezier: return "reparametrized_cubic_bezier";
+        case BenchPathKind::random_cubic_bezier: return "random_cubic_bezier";
+        case BenchPathKind::reparametrized_random_cubic_bezier: return "reparametrized_random_cubic_bezier";
+        case BenchPathKind::svg: return "svg";
+        case BenchPathKind::reparametrized_svg: return "reparametrized_svg";
     }
     return "unknown";
 }
@@ -37,9 +41,23 @@ std::vector<BenchSegment> bench_segments(std::size_t count, std::uint64_t seed) 
 std::vector<Path> bench_paths(BenchPathKind kind, std::span<const BenchSegment> segments) {
     std::vector<Path> paths;
     paths.reserve(segments.size());
-    for (const BenchSegment& s : segments) {
+    const std::size_t n = segments.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const BenchSegment& s = segments[i];
         if (kind == BenchPathKind::linear) {
             paths.push_back(LinearPath(s.from, s.to));
+            continue;
+        }
+        if (kind == BenchPathKind::random_cubic_bezier || kind == BenchPathKind::reparametrized_random_cubic_bezier) {
+            // The controls are the next segment's ends: anywhere in the box.
+            const BenchSegment& next = segments[(i + 1) % n];
+            paths.push_back(CubicBezierPath(s.from, next.from, next.to, s.to,
+                                            kind == BenchPathKind::reparametrized_random_cubic_bezier));
+            continue;
+        }
+        if (kind == BenchPathKind::svg || kind == BenchPathKind::reparametrized_svg) {
+            const Path path = parse_svg_path(segments_svg(8, 1000 + i));
+            paths.push_back(kind == BenchPathKind::reparametrized_svg ? path.reparametrized() : path);
             continue;
         }
         // Controls at a third and two thirds of the chord, pushed to either side, so the

@@ -25,10 +25,21 @@ Animation seed_spiral_animation(Engine& engine, Sprite& view, const AnimationDef
 /// The seed's complex path (spiral, then three segments, cues 0, 0.25, 0.5, 0.6) for 4 s.
 Animation seed_complex_animation(Engine& engine, Sprite& view, const AnimationDef& def = {});
 
-/// The benchmark's path kinds: (a) linear, (b) cubic Bézier, (c) cubic Bézier by arc length.
-enum class BenchPathKind { linear, cubic_bezier, reparametrized_cubic_bezier };
+/// The benchmark's path kinds: (a) linear, (b) cubic Bézier, (c) cubic Bézier by arc length;
+/// then cubics with all four points random in the box (loops, cusps and near-cusps: arc-length
+/// tables of up to thousands of pieces), and SVG path data of 8 segments (C Q A L, as
+/// segments_svg), each by u and by arc length.
+enum class BenchPathKind {
+    linear,
+    cubic_bezier,
+    reparametrized_cubic_bezier,
+    random_cubic_bezier,
+    reparametrized_random_cubic_bezier,
+    svg,
+    reparametrized_svg
+};
 
-/// "linear", "cubic_bezier", "reparametrized_cubic_bezier".
+/// The enumerator's name, e.g. "reparametrized_cubic_bezier".
 std::string_view to_string(BenchPathKind kind) noexcept;
 
 /// A segment of the benchmark: where path i starts and ends (random in a 1000 × 1000 box,
