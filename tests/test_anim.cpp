@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -645,6 +646,54 @@ TEST(EngineHandlers, KillingThousandsInsideOneTick) {
 }
 
 // --- scale ------------------------------------------------------------------------------------
+
+// The counter sees every form of new the code under test can reach: plain, array, nothrow and
+// the aligned ones that alignas(64) records (the engine's path table, the line allocator's
+// vectors, the parallel tick's slice counters) go through. The pointers escape into `sink`,
+// so no new-expression below may be elided.
+void* volatile sink = nullptr;
+
+TEST(CountAllocations, SeesEveryFormOfNew) {
+    struct alignas(64) Wide {
+        double x[8];
+    };
+    const long before = g_allocations.load();
+    int* i = new int(1);
+    sink = i;
+    delete i;
+    int* is = new int[3];
+    sink = is;
+    delete[] is;
+    int* n = new (std::nothrow) int(1);
+    sink = n;
+    delete n;
+    int* ns = new (std::nothrow) int[3];
+    sink = ns;
+    delete[] ns;
+    EXPECT_EQ(g_allocations.load() - before, 4);
+    Wide* w = new Wide;
+    sink = w;
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(w) % 64, 0u);
+    delete w;
+    Wide* ws = new Wide[3];
+    sink = ws;
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(ws) % 64, 0u);
+    delete[] ws;
+    Wide* wn = new (std::nothrow) Wide;
+    sink = wn;
+    delete wn;
+    Wide* wns = new (std::nothrow) Wide[3];
+    sink = wns;
+    delete[] wns;
+    EXPECT_EQ(g_allocations.load() - before, 8);
+    {
+        std::vector<Wide> v(5);  // std::allocator: ::operator new(bytes, std::align_val_t{64})
+        sink = v.data();
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % 64, 0u);
+    }
+    EXPECT_EQ(g_allocations.load() - before, 9);
+    sink = nullptr;
+}
 
 TEST(EngineScale, NoAllocationPerTick) {
     Engine engine;
