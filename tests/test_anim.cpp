@@ -536,7 +536,7 @@ TEST(EngineHandlers, KillSelfKillOthersAndCreateDuringATick) {
     for (int i = 0; i < n; ++i)
         anims[i] = engine.create_animation(line, i % 2 ? 0.05 : 1e9, {.repeat = -1},
                                            [&updates, i](Vec2, double) { ++updates[i]; });
-    // Animation 10 kills itself, one earlier (3) and one later (40) on its first loop and
+    // Animation 11 kills itself, one earlier (3) and one later (41) on its first loop and
     // creates a new one.
     Animation created;
     anims[11].on_loop([&](int) {
@@ -546,22 +546,33 @@ TEST(EngineHandlers, KillSelfKillOthersAndCreateDuringATick) {
         created = engine.create_2d_animation(targets[n], line, 1.0);
     });
     std::vector<int> before(n);
+    std::vector<bool> was_alive(n, true);
+    int kills = 0;
     for (int tick = 0; tick < 10; ++tick) {
         before = updates;
+        for (int i = 0; i < n; ++i) was_alive[i] = anims[i].alive();
         const bool new_one_alive = created.alive();
         engine.tick(0.02);
         for (int i = 0; i < n; ++i) {
-            const bool killed = !anims[i].alive();
             const int delta = updates[i] - before[i];
-            // Alive ones update exactly once per tick; killed ones at most once (the tick
-            // that killed them, if they came first) and never after.
-            if (!killed) EXPECT_EQ(delta, 1) << "animation " << i << " tick " << tick;
-            else EXPECT_LE(delta, 1);
+            // Alive ones update exactly once per tick. In the tick of the kill (the third:
+            // 11 loops at 0.06 s), 3 had advanced before 11's handler ran and 11 was in its
+            // own update: one each; 41, which the tick had not reached, none (anim.hpp: a
+            // change to an animation the tick has not reached applies before its update).
+            // After that tick, none.
+            int expected = anims[i].alive() ? 1 : 0;
+            if (was_alive[i] && !anims[i].alive()) {
+                ++kills;
+                EXPECT_EQ(tick, 2) << "animation " << i;
+                expected = i <= 11 ? 1 : 0;
+            }
+            EXPECT_EQ(delta, expected) << "animation " << i << " tick " << tick;
         }
         if (created.alive() && !new_one_alive) {
             EXPECT_EQ(targets[n].x, 0.0);  // written at creation, first advanced next tick
         }
     }
+    EXPECT_EQ(kills, 3);
     EXPECT_FALSE(anims[3].alive());
     EXPECT_FALSE(anims[11].alive());
     EXPECT_FALSE(anims[41].alive());
