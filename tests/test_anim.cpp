@@ -8,6 +8,8 @@
 #include "seed_animations.hpp"
 #include "seed_paths.hpp"
 
+#include "anim/engine_impl.hpp"  // the test hook for generations
+
 #include "count_allocations.hpp"
 #include "error_text.hpp"
 #include "seeds.hpp"
@@ -414,6 +416,41 @@ TEST(Engine, HandlesGoInertAndStayInert) {
     EXPECT_NEAR(q.x, 1.0, 1e-15);
     EXPECT_FALSE(Animation().alive());
     Animation().kill();  // a default handle is inert too
+}
+
+// Generations never wrap: a slot whose generation reaches 2³² − 1 is retired instead of reused,
+// so a handle from any earlier life of it stays inert for good. The hook sets one slot's
+// generation to the last but one, where the next kill takes it to the last: without the
+// retirement the slot's next life would have that generation, the kill after it would wrap it
+// to 0, and the slot's first handle (generation 0) would name its third life.
+TEST(Engine, AStaleHandleStaysInertWhereItsSlotsGenerationWouldWrap) {
+    using grape::detail::EngineImpl;
+    Engine engine;
+    const grape::LinearPath line({0, 0}, {1, 0});
+    Point a, b, c;
+    const Animation first = engine.create_2d_animation(a, line, 1.0);
+    const std::uint32_t slot = EngineImpl::slot_for_test(first);
+    const Animation late = EngineImpl::with_generation_for_test(first, grape::detail::last_generation - 1);
+    EXPECT_FALSE(first.alive());  // a different generation: the first handle is stale already
+    EXPECT_TRUE(late.alive());
+    late.kill();  // generation 2³² − 1: the slot retires
+    EXPECT_FALSE(late.alive());
+    for (int round = 0; round < 3; ++round) {
+        const Animation next = engine.create_2d_animation(b, line, 1.0);
+        EXPECT_NE(EngineImpl::slot_for_test(next), slot) << round;
+        EXPECT_FALSE(first.alive()) << round;  // would name the slot's life after the wrap
+        next.kill();
+    }
+    const Animation kept = engine.create_2d_animation(c, line, 1.0);
+    EXPECT_NE(EngineImpl::slot_for_test(kept), slot);
+    EXPECT_FALSE(first.alive());
+    EXPECT_FALSE(late.alive());
+    first.kill();  // inert: kills nothing
+    first.seek(0.5);
+    EXPECT_TRUE(kept.alive());
+    engine.tick(0.25);
+    EXPECT_EQ(c.x, 0.25);
+    EXPECT_EQ(engine.size(), 1u);
 }
 
 TEST(Engine, PauseResumeAndTimeScale) {

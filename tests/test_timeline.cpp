@@ -4,6 +4,7 @@
 #include <grape/error.hpp>
 #include <grape/timeline.hpp>
 
+#include "anim/timeline_impl.hpp"  // the test hook for generations
 #include "error_text.hpp"
 #include "seeds.hpp"
 
@@ -896,6 +897,33 @@ TEST(Timeline, GrowingNestedTimelineKeepsTheOrderOfEnds) {
     EXPECT_EQ(events, (std::vector<std::string>{"early", "sibling", "inner"}));
     inner.add(engine.create_animation(unit_line, 0.25), 0.0);  // inside its length: no change
     EXPECT_EQ(parent.duration(), 1.5);
+}
+
+// Timeline generations never wrap either: a slot at the last generation is retired, so the
+// first handle of a slot stays inert after 2³² lives of it (the hook skips all but the last).
+// Without the retirement the slot's next two lives would take generations 2³² − 1 and 0, and
+// the first handle (generation 0) would name the second of them.
+TEST(Timeline, AStaleHandleStaysInertWhereItsSlotsGenerationWouldWrap) {
+    using grape::detail::TimelineStore;
+    Engine engine;
+    const Timeline first = engine.create_timeline();
+    const Timeline late = TimelineStore::with_generation_for_test(first, grape::detail::last_generation - 1);
+    EXPECT_FALSE(first.alive());
+    EXPECT_TRUE(late.alive());
+    late.kill();  // generation 2³² − 1: retired
+    for (int round = 0; round < 3; ++round) {
+        Timeline next = engine.create_timeline();
+        next.gap(1.0);
+        EXPECT_FALSE(first.alive()) << round;
+        EXPECT_FALSE(late.alive()) << round;
+        next.kill();
+    }
+    Timeline kept = engine.create_timeline();
+    kept.gap(2.0);
+    first.kill();  // inert: kills nothing
+    EXPECT_TRUE(kept.alive());
+    EXPECT_EQ(first.duration(), 0.0);
+    EXPECT_EQ(kept.duration(), 2.0);
 }
 
 // --- equal times ---------------------------------------------------------------------------------
