@@ -9,6 +9,7 @@
 #include <grape/color.hpp>
 
 #include "seed_animations.hpp"
+#include "heap_hooks.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -31,23 +32,17 @@
 #include <vector>
 
 // Live heap bytes, to measure bytes per animation the same way for every contender.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 namespace {
 std::atomic<long long> live_bytes{0};
 }
-// Counts what malloc really hands out (malloc_usable_size), so both sides of new/delete agree.
-void* operator new(std::size_t size) {
-    void* p = std::malloc(size == 0 ? 1 : size);
-    if (!p) throw std::bad_alloc();
-    live_bytes.fetch_add(static_cast<long long>(malloc_usable_size(p)), std::memory_order_relaxed);
-    return p;
+// Counts what malloc really hands out (malloc_usable_size), so both sides of new/delete agree;
+// every form of new is counted (the engine's alignas(64) storage goes through the aligned ones).
+void heap_hooks::on_alloc(void* block, std::size_t) noexcept {
+    live_bytes.fetch_add(static_cast<long long>(malloc_usable_size(block)), std::memory_order_relaxed);
 }
-void operator delete(void* p) noexcept {
-    if (!p) return;
-    live_bytes.fetch_sub(static_cast<long long>(malloc_usable_size(p)), std::memory_order_relaxed);
-    std::free(p);
+void heap_hooks::on_free(void* block) noexcept {
+    live_bytes.fetch_sub(static_cast<long long>(malloc_usable_size(block)), std::memory_order_relaxed);
 }
-void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
 
 namespace {
 

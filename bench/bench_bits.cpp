@@ -32,27 +32,14 @@
 #if GRAPE_BENCH_BITMAGIC
 #include "bench_bits_bitmagic.hpp"
 #endif
+#include "heap_hooks.hpp"
 
 // ---- heap accounting for the memory table: every operator new in this program is counted ----
 namespace {
 std::size_t g_heap_bytes = 0;
 }
-void* operator new(std::size_t n) {
-    g_heap_bytes += n;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-// GCC's -O3 inlines the standard allocator's new/delete pair into these and, seeing malloc
-// meet a delete, warns that they do not match; here both sides are replaced, so they do.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+void heap_hooks::on_alloc(void*, std::size_t n) noexcept { g_heap_bytes += n; }
+void heap_hooks::on_free(void*) noexcept {}
 
 namespace {
 

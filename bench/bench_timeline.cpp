@@ -17,6 +17,7 @@
 #include <grape/timeline.hpp>
 
 #include "seed_animations.hpp"
+#include "heap_hooks.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -31,18 +32,12 @@
 #include <string>
 #include <vector>
 
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 namespace {
 std::atomic<long long> allocations{0};
 }
-void* operator new(std::size_t size) {
-    allocations.fetch_add(1, std::memory_order_relaxed);
-    void* p = std::malloc(size == 0 ? 1 : size);
-    if (!p) throw std::bad_alloc();
-    return p;
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+// Every form of new is counted (aligned, array and nothrow ones included).
+void heap_hooks::on_alloc(void*, std::size_t) noexcept { allocations.fetch_add(1, std::memory_order_relaxed); }
+void heap_hooks::on_free(void*) noexcept {}
 
 namespace {
 

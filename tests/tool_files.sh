@@ -85,6 +85,7 @@ tmpfs)
         exit 77
     fi
     trap 'umount "$work/disk"' EXIT
+    echo "mounted a 256 KiB tmpfs at $work/disk: a real full disk ($(df -k "$work/disk" | awk 'NR == 2 { print $4 }') KiB free)"
     head -c 200000 /dev/zero >"$work/disk/filler"  # leaves ~56 KiB
     run "$grape" simulate parabola --dt 0.0001 --seconds 10 --csv "$work/disk/run.csv"
     expect_error "$work/status" "$work/err" "cannot write $work/disk/run.csv: no space left on device"
@@ -183,6 +184,7 @@ demo_full_disk_keeps_folder)
         exit 77
     fi
     trap 'umount "$work/disk"' EXIT
+    echo "mounted a 256 KiB tmpfs at $work/disk: a real full disk"
     echo old >"$work/disk/gallery.png"
     echo mine >"$work/disk/notes.txt"
     run "$grape" demo --out "$work/disk"

@@ -12,13 +12,18 @@
 //   anim.on_complete([] { /* done */ });
 //   engine.tick(1.0 / 60.0);
 //
-// Time is exact: ticking any dt sequence that sums to T lands where seek gives the same
-// time (to rounding), repeats and yoyo included, and where `play_at` (the one timing model,
-// a pure function also used by scenes and timelines: anim_timing.hpp) puts it. One large dt fires the loop events it
-// crosses in order, up to `max_loop_events` per animation per tick (then one event for the
-// last play, counting the skipped ones). A play counts as finished within 1e-9 of its length
-// (in plays), so 60 ticks of 1/60 s end a 1 s play on the 60th tick although the sum falls
-// short by an ulp. Arc-length (reparametrized) linear and cubic Bézier paths are evaluated
+// Time: an animation keeps the phase of its current play (in plays) and each tick adds
+// dt·time_scale/duration to it, so ticking a dt sequence that sums to T lands where seek(T)
+// and `play_at` (the one timing model, a pure function also used by scenes and timelines:
+// anim_timing.hpp) put it up to the rounding of those additions: about an ulp of the phase
+// per tick, not bit for bit (the tests hold tick and seek within 1e-12 on a unit-sized path
+// over up to 300 ticks, repeats, yoyo, delays and time scales included). Ends of plays go by
+// one snap rule, the same for tick and seek: a play counts as finished within play_snap
+// (1e-9) of its length, in plays, so 60 ticks of 1/60 s end a 1 s play on the 60th tick
+// although the sum falls short by an ulp, and any time within 1e-9 plays before an end is
+// that end. One large dt fires the loop events it crosses in order, up to `max_loop_events`
+// per animation per tick (then one event for the last play, counting the skipped ones).
+// Arc-length (reparametrized) linear and cubic Bézier paths are evaluated
 // from a table the path module builds once per shared path, within 2e-10·length of
 // Path::point.
 //

@@ -126,11 +126,16 @@ inline std::uint8_t play_flags(std::uint8_t flags, bool backward, const Cold& c)
 }
 
 /// A handle slot: 8 bytes. `dense` is the record index while alive; free slots chain
-/// through it with the high bit set.
+/// through it with the high bit set. `generation` counts the slot's lives and never wraps: a
+/// slot whose generation reaches last_generation is retired (never reused), so a handle's
+/// generation names one life of its slot for good and a stale handle stays inert. That costs
+/// 8 bytes per 2³² − 1 lives of one slot, against 64-bit generations in every handle, slot and
+/// timeline child.
 struct Slot {
     std::uint32_t dense;
     std::uint32_t generation;
 };
+inline constexpr std::uint32_t last_generation = UINT32_MAX;
 
 /// The handlers and targets only some animations have.
 struct Extra {
@@ -266,6 +271,12 @@ public:
     /// Before a handle reads or changes a driven record: its timeline writes out the state its
     /// fast tick keeps aside (`leave`: and takes the general path next tick).
     void touch_driven(std::uint32_t slot, bool leave) noexcept;
+
+    /// Test only (tests/test_anim.cpp): sets a live animation's slot generation, so that a
+    /// test reaches the last generations without 2³² reuses; returns the handle that now names
+    /// it (a default handle if `a` is stale). And a handle's slot.
+    GRAPE_ANIM_API static Animation with_generation_for_test(const Animation& a, std::uint32_t generation) noexcept;
+    GRAPE_ANIM_API static std::uint32_t slot_for_test(const Animation& a) noexcept;
 
 private:
     friend class TimelineStore;

@@ -78,6 +78,20 @@ inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::si
     return true;
 }
 
+// Records k, k + 1, ... of the batch of m at i advanced one at a time (arc_advance) while they
+// belong to the run; how many of the batch are advanced then.
+template <CurveKind K, bool F>
+inline std::size_t arc_advance_batch(Hot* hot, const ArcFast* arcs, const Cold* cold, std::size_t i, std::size_t k,
+                                     std::size_t m, std::size_t n, double dt, ArcLengthTable::Piece* piece,
+                                     NewPlays& plays) noexcept {
+    if (i + m + hot_ahead <= n) {
+        while (k < m && arc_advance<K, F, true>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
+    } else {
+        while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
+    }
+    return k;
+}
+
 // The same on arc-length paths, strictly inside them (the ends are Path::point's exact end
 // points, which plain_write gives), in batches of 32 as plain_run has them: every record of
 // a batch is advanced and its table piece found and asked for before any is written, so
@@ -94,12 +108,7 @@ inline std::size_t arc_run(Hot* hot, const LeanTables& t, std::size_t i, std::si
     ArcLengthTable::Piece piece[batch];
     while (i < n) {
         const std::size_t m = std::min(batch, n - i);
-        std::size_t k = 0;
-        if (i + m + hot_ahead <= n) {
-            while (k < m && arc_advance<K, F, true>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
-        } else {
-            while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
-        }
+        const std::size_t k = arc_advance_batch<K, F>(hot, arcs, cold, i, 0, m, n, dt, piece, plays);
         for (std::size_t j = 0; j < k; ++j) {
             const Hot& h = hot[i + j];
             Vec2 p;
@@ -165,10 +174,8 @@ GRAPE_AVX2 GRAPE_FLATTEN std::size_t arc_run_lanes(Hot* hot, const LeanTables& t
                                                piece + k);
                 for (std::size_t j = 0; j < 4; ++j) ArcLengthTable::prefetch_piece(piece[k + j].c);
             }
-            while (k < m && arc_advance<K, F, true>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
-        } else {
-            while (k < m && arc_advance<K, F, false>(hot, arcs, cold, i + k, n, dt, piece[k], plays)) ++k;
         }
+        k = arc_advance_batch<K, F>(hot, arcs, cold, i, k, m, n, dt, piece, plays);
         std::size_t j = 0;
         using T = std::conditional_t<F, float, double>;
         for (; j + 2 <= k; j += 2) {

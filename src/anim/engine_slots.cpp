@@ -18,6 +18,15 @@ const Hot* EngineImpl::find(std::uint32_t slot, std::uint32_t generation) const 
     return &hot_[s.dense];
 }
 
+Animation EngineImpl::with_generation_for_test(const Animation& a, std::uint32_t generation) noexcept {
+    const LiveRecord r = a.record();
+    if (!r) return {};
+    r.impl->slots_[a.slot_].generation = generation;
+    return Animation(a.engine_, a.slot_, generation);
+}
+
+std::uint32_t EngineImpl::slot_for_test(const Animation& a) noexcept { return a.slot_; }
+
 const Extra* EngineImpl::extra(std::uint32_t slot) const noexcept {
     const auto it = extras_.find(slot);
     return it == extras_.end() ? nullptr : &it->second;
@@ -81,8 +90,12 @@ void EngineImpl::remove_now(std::uint32_t dense) noexcept {
     release_path(hot_[dense].path);
     release_curve(cold_[dense].curve);
     extras_.erase(slot);
-    slots_[slot].dense = free_bit | (free_slot_ & ~free_bit);
-    free_slot_ = slot;
+    if (slots_[slot].generation == last_generation) {
+        slots_[slot].dense = UINT32_MAX;  // retired: free (the high bit), on no chain, never reused
+    } else {
+        slots_[slot].dense = free_bit | (free_slot_ & ~free_bit);
+        free_slot_ = slot;
+    }
     const auto last = static_cast<std::uint32_t>(hot_.size() - 1);
     if (dense < driven_begin_) {  // the last ticked record fills the hole, the last record its place
         const std::uint32_t edge = driven_begin_ - 1;

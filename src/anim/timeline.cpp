@@ -323,6 +323,14 @@ void TimelineStore::kill_rec(std::uint32_t slot) noexcept {
     }
 }
 
+Timeline TimelineStore::with_generation_for_test(const Timeline& t, std::uint32_t generation) noexcept {
+    if (!t.engine_) return {};
+    TimelineRec* r = t.engine_->impl_->timelines().find(t.slot_, t.generation_);
+    if (!r) return {};
+    r->generation = generation;
+    return Timeline(t.engine_, t.slot_, generation);
+}
+
 void TimelineStore::kill(std::uint32_t slot) noexcept {
     kill_rec(slot);
     if (!engine_.ticking_ && engine_.depth_ == 0) engine_.finish_dispatch();
@@ -336,7 +344,8 @@ void TimelineStore::finish() noexcept {
     if (depth_ > 0) return;
     for (const std::uint32_t s : dead_slots_) {
         recycle(*recs_[s]);
-        free_.push_back(s);  // capacity reserved at creation
+        // At the last generation the slot is retired (engine_impl.hpp, Slot): never reused.
+        if (recs_[s]->generation != last_generation) free_.push_back(s);  // capacity reserved at creation
     }
     dead_slots_.clear();
     dead_ = 0;

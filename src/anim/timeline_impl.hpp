@@ -160,6 +160,9 @@ public:
     Timeline create(Engine* owner, const TimelineDef& def);
     /// Sets one of `t`'s void() handlers (empty: none); nothing for a dead handle.
     static void set_handler(const Timeline& t, Handler TimelineRec::*member, std::function<void()> handler);
+    /// Test only (tests/test_timeline.cpp): as EngineImpl::with_generation_for_test, for a
+    /// live timeline (a slot whose generation reaches last_generation is retired here too).
+    GRAPE_ANIM_API static Timeline with_generation_for_test(const Timeline& t, std::uint32_t generation) noexcept;
     TimelineRec* find(std::uint32_t slot, std::uint32_t generation) noexcept;
 
     void add_animation(std::uint32_t slot, const Animation& a, const TimelinePosition& at);
