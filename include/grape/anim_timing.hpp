@@ -6,6 +6,9 @@
 #include <grape/curve.hpp>
 #include <grape/export_anim.hpp>
 
+/// \addtogroup anim
+/// @{
+
 namespace grape {
 
 /// How an animation plays; fill with designated initializers:
@@ -92,3 +95,5 @@ GRAPE_ANIM_API double progress_at(const AnimationDef& def, double duration, doub
 GRAPE_ANIM_API double end_time(const AnimationDef& def, double duration) noexcept;
 
 }  // namespace grape
+
+/// @}

@@ -12,6 +12,9 @@
 #include <functional>
 #include <vector>
 
+/// \addtogroup dynamics
+/// @{
+
 namespace grape {
 
 // ---------------------------------------------------------------------------------------
@@ -78,7 +81,7 @@ public:
     /// Advances by dt seconds (> 0, finite; throws grape::Error otherwise).
     StepStats step(double dt);
 
-    double time() const noexcept { return time_; }
+    double time() const noexcept { return time_; }  ///< seconds simulated so far
     /// The parameter u on the whole path.
     double u() const noexcept;
     /// du/dt on the whole path.
@@ -118,3 +121,5 @@ private:
 };
 
 }  // namespace grape
+
+/// @}

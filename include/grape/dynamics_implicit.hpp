@@ -10,6 +10,9 @@
 
 #include <functional>
 
+/// \addtogroup dynamics
+/// @{
+
 namespace grape {
 
 // ---------------------------------------------------------------------------------------
@@ -50,3 +53,5 @@ private:
 };
 
 }  // namespace grape
+
+/// @}

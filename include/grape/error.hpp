@@ -16,6 +16,9 @@
 #define GRAPE_VISIBLE_TYPE __attribute__((visibility("default")))
 #endif
 
+/// \addtogroup core
+/// @{
+
 namespace grape {
 
 /// Thrown by constructors and parsers for invalid input. The message names the offending
@@ -34,3 +37,5 @@ GRAPE_MATH_API std::string number_text(double value);
 }  // namespace detail
 
 }  // namespace grape
+
+/// @}

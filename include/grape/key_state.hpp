@@ -11,6 +11,9 @@
 #include <type_traits>
 #include <vector>
 
+/// \addtogroup bits
+/// @{
+
 namespace grape {
 
 /// A type usable as a key code: any integer type but bool, or any enumeration (plain enums
@@ -191,3 +194,5 @@ private:
 };
 
 }  // namespace grape
+
+/// @}

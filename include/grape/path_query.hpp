@@ -11,6 +11,9 @@
 
 #include <string>
 
+/// \addtogroup path_query
+/// @{
+
 namespace grape {
 
 /// The nearest point of a path to a query point.
@@ -112,3 +115,5 @@ struct FitPathDef {
 GRAPE_PATH_API ComplexPath fit_path(std::span<const Vec2> points, const FitPathDef& def = {});
 
 }  // namespace grape
+
+/// @}

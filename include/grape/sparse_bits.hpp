@@ -24,6 +24,9 @@
 #include <utility>
 #include <vector>
 
+/// \addtogroup bits
+/// @{
+
 namespace grape {
 
 /// A fixed-size bit vector for sparse or clustered bits; bit i lives in block i / 65,536.
@@ -31,7 +34,7 @@ namespace grape {
 /// grape::Error when their sizes differ.
 class GRAPE_BITS_API SparseBitVector {
 public:
-    using Word = std::uint64_t;
+    using Word = std::uint64_t;  ///< a word of a bitmap block, bit 0 lowest
     /// Bits per block.
     static constexpr std::size_t block_bits = 65536;
     /// Set bits a block may hold as an array; one more makes it a bitmap.
@@ -175,3 +178,5 @@ private:
 };
 
 }  // namespace grape
+
+/// @}

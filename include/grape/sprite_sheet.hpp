@@ -21,6 +21,9 @@
 #include <string_view>
 #include <vector>
 
+/// \addtogroup sprite
+/// @{
+
 namespace grape {
 
 /// How a clip runs through its frames: Aseprite's tag directions.
@@ -269,3 +272,5 @@ inline void ClipPlayer::advance(double dt) {
 }
 
 }  // namespace grape
+
+/// @}

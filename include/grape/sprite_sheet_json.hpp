@@ -16,6 +16,9 @@
 #include <string>
 #include <string_view>
 
+/// \addtogroup scene
+/// @{
+
 namespace grape {
 
 /// How a sheet's JSON lists its frames: Aseprite's `--format json-hash` / `json-array`,
@@ -40,3 +43,5 @@ GRAPE_SCENE_API std::filesystem::path sprite_sheet_image_path(const SpriteSheet&
 GRAPE_SCENE_API std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout);
 
 }  // namespace grape
+
+/// @}

@@ -33,6 +33,9 @@
 #include <utility>
 #include <vector>
 
+/// \addtogroup stagger
+/// @{
+
 namespace grape {
 
 /// Where the stagger begins.
@@ -63,11 +66,11 @@ struct StaggerGrid {
 struct StaggerDef {
     std::optional<double> each{};  ///< seconds between neighbours (see the rule above); finite
     std::optional<double> amount{};  ///< seconds from the first start to the last; finite
-    StaggerFrom from = StaggerFrom::start;
+    StaggerFrom from = StaggerFrom::start;  ///< which item starts first
     std::size_t index = 0;         ///< the item that starts first, for from = index (< count)
     std::uint64_t seed = 0;        ///< the order for from = random
     StaggerGrid grid{};            ///< 2-D distances on a grid
-    StaggerAxis axis = StaggerAxis::both;
+    StaggerAxis axis = StaggerAxis::both;  ///< which distance orders a grid's items
     Curve curve{};                 ///< distributes the offsets over the spread (GSAP's stagger ease)
 };
 
@@ -92,3 +95,5 @@ auto stagger(std::size_t count, const StaggerDef& def, Make&& make)
 }
 
 }  // namespace grape
+
+/// @}
