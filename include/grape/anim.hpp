@@ -60,10 +60,10 @@
 #include <type_traits>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup anim
 /// @{
-
-namespace grape {
 
 class Engine;
 class Timeline;
@@ -480,6 +480,6 @@ Animation Engine::create_property_animation(T& target, std::initializer_list<Mem
                                      duration, def);
 }
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -6,10 +6,10 @@
 #include <grape/curve.hpp>
 #include <grape/export_anim.hpp>
 
+namespace grape {
+
 /// \addtogroup anim
 /// @{
-
-namespace grape {
 
 /// How an animation plays; fill with designated initializers:
 /// `{.curve = Curve::quad_in_out(), .repeat = -1, .yoyo = true}`.
@@ -94,6 +94,6 @@ GRAPE_ANIM_API double progress_at(const AnimationDef& def, double duration, doub
 /// repeat_delay·(plays − 1)) / time_scale; +inf for endless animations or time_scale 0.
 GRAPE_ANIM_API double end_time(const AnimationDef& def, double duration) noexcept;
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

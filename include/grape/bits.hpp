@@ -35,10 +35,10 @@
 #include <utility>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup bits
 /// @{
-
-namespace grape {
 
 /// A resizable sequence of bits packed into 64-bit words; bit i lives in word i/64 at bit i%64.
 /// Element access is noexcept and checked by assert in debug builds; at() is always checked.
@@ -433,6 +433,8 @@ inline BitVector::OwnedSetBits BitVector::set_bits() const&& { return OwnedSetBi
 GRAPE_BITS_API std::ostream& operator<<(std::ostream& out, const BitVector& bits);
 
 
+/// @}
+
 }  // namespace grape
 
 /// Hashes a BitVector by its size and bits, so it can key unordered containers.
@@ -444,5 +446,3 @@ struct std::hash<grape::BitVector> {
 // PairBits and KeyState are built on BitVector; this header keeps offering them.
 #include <grape/key_state.hpp>
 #include <grape/pair_bits.hpp>
-
-/// @}

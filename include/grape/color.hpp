@@ -14,10 +14,10 @@
 #include <string>
 #include <string_view>
 
+namespace grape {
+
 /// \addtogroup value
 /// @{
-
-namespace grape {
 
 /// An RGBA colour: r, g, b sRGB-encoded (the numbers of CSS, image files and most engines'
 /// tints), each 1 at full intensity; a is coverage (0 transparent, 1 opaque). Interpolation
@@ -106,6 +106,6 @@ GRAPE_ANIM_API std::string to_hex(const Color& c);
 /// up to three decimals.
 GRAPE_ANIM_API std::string to_css(const Color& c);
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -36,10 +36,10 @@
 #include <emmintrin.h>
 #endif
 
+namespace grape {
+
 /// \addtogroup curve
 /// @{
-
-namespace grape {
 
 namespace detail {
 /// x < edge ? a : b by integer masks (pick_below on targets without SSE2, such as wasm);
@@ -583,6 +583,6 @@ inline double Curve::operator()(double t) const noexcept {
     }
 }
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -12,10 +12,10 @@
 #include <functional>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup dynamics
 /// @{
-
-namespace grape {
 
 // ---------------------------------------------------------------------------------------
 // Generalized coordinates: a bead on a parametric curve
@@ -120,6 +120,6 @@ private:
     Stepper stepper_{};
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

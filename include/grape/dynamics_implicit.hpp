@@ -10,10 +10,10 @@
 
 #include <functional>
 
+namespace grape {
+
 /// \addtogroup dynamics
 /// @{
-
-namespace grape {
 
 // ---------------------------------------------------------------------------------------
 // Implicit curves C(x, y) = 0
@@ -52,6 +52,6 @@ private:
     std::function<ImplicitSample(Vec2)> evaluate_{};
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

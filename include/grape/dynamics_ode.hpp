@@ -11,10 +11,10 @@
 #include <string_view>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup dynamics
 /// @{
-
-namespace grape {
 
 // ---------------------------------------------------------------------------------------
 // Integrators: one interface, state (q, q̇) and derivative (q̇, q̈)
@@ -127,6 +127,6 @@ private:
     std::vector<double> buffer_{};
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

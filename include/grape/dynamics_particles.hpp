@@ -20,10 +20,10 @@
 #include <string_view>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup dynamics
 /// @{
-
-namespace grape {
 
 // ---------------------------------------------------------------------------------------
 // The particle system
@@ -323,6 +323,6 @@ private:
     std::unique_ptr<detail::ParticleState> state_;  // model, state and solver (src/dynamics/particle_state.hpp)
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

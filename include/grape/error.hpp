@@ -16,10 +16,10 @@
 #define GRAPE_VISIBLE_TYPE __attribute__((visibility("default")))
 #endif
 
+namespace grape {
+
 /// \addtogroup core
 /// @{
-
-namespace grape {
 
 /// Thrown by constructors and parsers for invalid input. The message names the offending
 /// argument (or the character offset / JSON pointer for parsers) and the reason.
@@ -36,6 +36,6 @@ namespace detail {
 GRAPE_MATH_API std::string number_text(double value);
 }  // namespace detail
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

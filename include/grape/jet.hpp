@@ -5,10 +5,10 @@
 
 #include <cmath>
 
+namespace grape {
+
 /// \addtogroup math
 /// @{
-
-namespace grape {
 
 // ---------------------------------------------------------------------------------------
 // Forward-mode automatic differentiation in two variables (value, gradient, Hessian)
@@ -105,6 +105,6 @@ inline Jet2 pow(const Jet2& a, double n) noexcept {
     return detail::chain(a, p2 * a.v * a.v, n * p2 * a.v, n * (n - 1.0) * p2);
 }
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -11,10 +11,10 @@
 #include <type_traits>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup bits
 /// @{
-
-namespace grape {
 
 /// A type usable as a key code: any integer type but bool, or any enumeration (plain enums
 /// such as SDL_Scancode, integer typedefs such as SDL_Keycode, scoped `enum class` keys).
@@ -193,6 +193,6 @@ private:
     std::vector<Held> held_;                  // the keys down, in the order they were pressed
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

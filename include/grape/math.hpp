@@ -9,10 +9,10 @@
 #include <limits>
 #include <utility>
 
+namespace grape {
+
 /// \addtogroup math
 /// @{
-
-namespace grape {
 
 /// π to double precision.
 inline constexpr double pi = 3.141592653589793238462643383279502884;
@@ -210,6 +210,6 @@ Root find_root(FD&& fd, double lo, double hi, double guess, double tolerance = 1
     return {x, max_iterations, false};
 }
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

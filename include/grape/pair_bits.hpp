@@ -9,10 +9,10 @@
 
 #include <cstddef>
 
+namespace grape {
+
 /// \addtogroup bits
 /// @{
-
-namespace grape {
 
 /// One bit per unordered pair {i, j} of n objects: n(n−1)/2 bits, with the pair at
 /// index i(2n − i − 3)/2 + j − 1 for i < j (Ericson, Real-Time Collision Detection).
@@ -124,6 +124,6 @@ private:
     BitVector bits_;
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

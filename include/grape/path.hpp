@@ -34,10 +34,10 @@
 #include <variant>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup path
 /// @{
-
-namespace grape {
 
 namespace detail {
 class PathNode;  // the shape behind a Path, private to the path module
@@ -484,6 +484,6 @@ private:
     std::vector<double> keys_;
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -11,10 +11,10 @@
 
 #include <string>
 
+namespace grape {
+
 /// \addtogroup path_query
 /// @{
-
-namespace grape {
 
 /// The nearest point of a path to a query point.
 struct ClosestPoint {
@@ -114,6 +114,6 @@ struct FitPathDef {
 /// that is not finite or a bad tolerance or angle.
 GRAPE_PATH_API ComplexPath fit_path(std::span<const Vec2> points, const FitPathDef& def = {});
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

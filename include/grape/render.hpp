@@ -26,10 +26,10 @@
 #include <string_view>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup render
 /// @{
-
-namespace grape {
 
 // Colours are grape::Color (grape/color.hpp): straight (not premultiplied) sRGB-encoded
 // components in [0, 1] and opacity a, the one definition the anim engine's tweens use too.
@@ -336,6 +336,6 @@ struct PlotSeries {
 GRAPE_RENDER_API void draw_plot(Canvas& canvas, const Rect& area, std::span<const PlotSeries> series,
                                 std::string_view title = {});
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

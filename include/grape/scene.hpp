@@ -32,10 +32,10 @@
 #include <variant>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup scene
 /// @{
-
-namespace grape {
 
 /// A curve with a name, listed in the scene's "curves" and referred to by animations.
 struct NamedCurve {
@@ -374,6 +374,6 @@ GRAPE_SCENE_API ParticleSystem make_particle_system(const SceneSimulation& simul
 /// C(p) of a conic constraint: A·x² + B·x·y + C·y² + D·x + E·y + F.
 GRAPE_SCENE_API double conic_value(const SceneConstraint& constraint, Vec2 p) noexcept;
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -22,10 +22,10 @@
 #include <cstddef>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup scene
 /// @{
-
-namespace grape {
 
 /// The value between a and b at curve progress u as the property mixes them: lerp for
 /// numbers and Vec2, AngleLerp (or its degrees form) for angles, grape::mix in the property's
@@ -67,6 +67,6 @@ private:
     SceneTiming timing_;
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

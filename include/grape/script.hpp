@@ -71,10 +71,10 @@
 #include <type_traits>
 #include <utility>
 
+namespace grape {
+
 /// \addtogroup script
 /// @{
-
-namespace grape {
 
 class Script;
 
@@ -367,6 +367,6 @@ ScriptPromise::HandleAwaiter<std::remove_cvref_t<H>> ScriptPromise::await_transf
 
 }  // namespace detail
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

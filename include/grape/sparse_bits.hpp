@@ -24,10 +24,10 @@
 #include <utility>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup bits
 /// @{
-
-namespace grape {
 
 /// A fixed-size bit vector for sparse or clustered bits; bit i lives in block i / 65,536.
 /// Element access is checked by assert in debug builds; combining two vectors throws
@@ -177,6 +177,6 @@ private:
     SparseBitVector bits_;
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -30,10 +30,10 @@
 #include <string_view>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup sprite
 /// @{
-
-namespace grape {
 
 /// Anything with frames: a tile sheet, a list of images, a 3-D model's key poses.
 class Playable {
@@ -292,9 +292,9 @@ private:
     std::size_t frame_ = 0;
 };
 
+/// @}
+
 }  // namespace grape
 
 // Sprite sheets and their clip player are built on these frames; this header keeps offering them.
 #include <grape/sprite_sheet.hpp>
-
-/// @}

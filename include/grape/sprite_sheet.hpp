@@ -21,10 +21,10 @@
 #include <string_view>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup sprite
 /// @{
-
-namespace grape {
 
 /// How a clip runs through its frames: Aseprite's tag directions.
 enum class ClipDirection : std::uint8_t {
@@ -271,6 +271,6 @@ inline void ClipPlayer::advance(double dt) {
     if (delta != 0.0) advance_across(delta);
 }
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

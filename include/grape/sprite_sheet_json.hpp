@@ -16,10 +16,10 @@
 #include <string>
 #include <string_view>
 
+namespace grape {
+
 /// \addtogroup scene
 /// @{
-
-namespace grape {
 
 /// How a sheet's JSON lists its frames: Aseprite's `--format json-hash` / `json-array`,
 /// TexturePacker's "JSON (Hash)" / "JSON (Array)".
@@ -42,6 +42,6 @@ GRAPE_SCENE_API std::filesystem::path sprite_sheet_image_path(const SpriteSheet&
 /// title is written counting that sprite's frames, and must lie within them (grape::Error).
 GRAPE_SCENE_API std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout);
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

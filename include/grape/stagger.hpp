@@ -33,10 +33,10 @@
 #include <utility>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup stagger
 /// @{
-
-namespace grape {
 
 /// Where the stagger begins.
 enum class StaggerFrom : std::uint8_t {
@@ -94,6 +94,6 @@ auto stagger(std::size_t count, const StaggerDef& def, Make&& make)
     return made;
 }
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -28,10 +28,10 @@
 #include <utility>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup value
 /// @{
-
-namespace grape {
 
 namespace detail {
 /// Where a linked target is now (nullptr: gone). The engine owns one per linked animation.
@@ -196,6 +196,6 @@ concept wrapped_target = requires { typename TargetForm<Form>::object_type; } &&
 
 }  // namespace detail
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

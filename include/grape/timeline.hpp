@@ -67,10 +67,10 @@
 #include <string>
 #include <string_view>
 
+namespace grape {
+
 /// \addtogroup timeline
 /// @{
-
-namespace grape {
 
 /// How a timeline plays; fill with designated initializers: `{.repeat = -1, .yoyo = true}`.
 struct TimelineDef {
@@ -189,6 +189,6 @@ private:
     std::uint32_t generation_ = 0;
 };
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -19,10 +19,10 @@
 #include <utility>
 #include <vector>
 
+namespace grape {
+
 /// \addtogroup timeline
 /// @{
-
-namespace grape {
 
 /// Where a child goes in a timeline (GSAP's position parameter).
 struct TimelinePosition {
@@ -81,6 +81,6 @@ GRAPE_ANIM_API TimelineLayout layout_timeline(std::span<const TimelineEntry> ent
 /// the last play: the end of the play just finished (0 for a backward play). 0 for duration 0.
 GRAPE_ANIM_API double timeline_local_time(const AnimationDef& def, double duration, double t) noexcept;
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape

@@ -22,10 +22,10 @@
 #include <type_traits>
 #include <utility>
 
+namespace grape {
+
 /// \addtogroup value
 /// @{
-
-namespace grape {
 
 namespace detail {
 // Unqualified, so both grape's overloads and V's own (by ADL) are found.
@@ -209,6 +209,6 @@ Tween<V> by(V amount) {
     return Tween<V>(V{}, std::move(amount), ValueMode::relative);
 }
 
-}  // namespace grape
-
 /// @}
+
+}  // namespace grape
