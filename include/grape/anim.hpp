@@ -67,6 +67,9 @@
 
 namespace grape {
 
+/// \addtogroup anim
+/// @{
+
 class Engine;
 class Timeline;
 struct TimelineDef;
@@ -74,10 +77,12 @@ struct TimelineDef;
 /// A member of T that a property animation drives: a `double T::*` or a `float T::*`.
 template <class T>
 struct Member {
+    /// A `double` member.
     Member(double T::*m) noexcept : d(m) {}  // NOLINT: implicit on purpose, {&T::a, &T::b}
+    /// A `float` member.
     Member(float T::*m) noexcept : f(m) {}   // NOLINT
-    double T::*d = nullptr;
-    float T::*f = nullptr;
+    double T::*d = nullptr;  ///< the double member, or null
+    float T::*f = nullptr;  ///< the float member, or null
 };
 
 namespace detail {
@@ -103,10 +108,10 @@ public:
 
     /// Waiting for its delay, playing or paused (false once completed or killed).
     bool alive() const noexcept;
-    explicit operator bool() const noexcept { return alive(); }
+    explicit operator bool() const noexcept { return alive(); }  ///< alive()
     /// Still inside its delay: nothing has been written to the target yet.
     bool waiting() const noexcept;
-    bool paused() const noexcept;
+    bool paused() const noexcept;  ///< alive and held by pause()
 
     /// The current 2-D position; while waiting, where the first play starts (the path's start,
     /// or its end for a reversed animation); {0, 0} if not alive, N-D or typed.
@@ -178,6 +183,7 @@ public:
     /// reverse(), or in a timeline running backwards).
     void on_reverse_complete(std::function<void()> handler) const;
 
+    /// The same animation (the same slot and generation in the same engine).
     friend bool operator==(const Animation&, const Animation&) noexcept = default;
 
 private:
@@ -324,6 +330,8 @@ public:
 
     /// A new timeline, empty and at its start (see timeline.hpp; include it to call these).
     Timeline create_timeline();
+    /// A new timeline that plays as `def` says; throws grape::Error for a negative or non-finite
+    /// delay, repeat delay or time scale, or a repeat below −1.
     Timeline create_timeline(const TimelineDef& def);
 
     /// Calls `listener(dt)` at the end of every tick; returns an id for remove_tick_listener.
@@ -476,5 +484,7 @@ Animation Engine::create_property_animation(T& target, std::initializer_list<Mem
                                             std::span<const double>(to.begin(), to.size())),
                                      duration, def);
 }
+
+/// @}
 
 }  // namespace grape

@@ -8,6 +8,9 @@
 
 namespace grape {
 
+/// \addtogroup anim
+/// @{
+
 /// How an animation plays; fill with designated initializers:
 /// `{.curve = Curve::quad_in_out(), .repeat = -1, .yoyo = true}`.
 struct AnimationDef {
@@ -90,5 +93,7 @@ GRAPE_ANIM_API double progress_at(const AnimationDef& def, double duration, doub
 /// Engine seconds from creation until the last play ends: (delay + duration·plays +
 /// repeat_delay·(plays − 1)) / time_scale; +inf for endless animations or time_scale 0.
 GRAPE_ANIM_API double end_time(const AnimationDef& def, double duration) noexcept;
+
+/// @}
 
 }  // namespace grape

@@ -37,12 +37,15 @@
 
 namespace grape {
 
+/// \addtogroup bits
+/// @{
+
 /// A resizable sequence of bits packed into 64-bit words; bit i lives in word i/64 at bit i%64.
 /// Element access is noexcept and checked by assert in debug builds; at() is always checked.
 /// Operations combining two vectors throw grape::Error when their sizes differ.
 class GRAPE_BITS_API BitVector {
 public:
-    using Word = std::uint64_t;
+    using Word = std::uint64_t;  ///< a storage word: bits i·64 to i·64 + 63, bit 0 lowest
     /// Bits per storage word.
     static constexpr std::size_t word_bits = 64;
     /// Returned by find_first()/find_next() when there is no further set bit.
@@ -51,10 +54,10 @@ public:
     /// Iterates the indices of the set bits in increasing order (a countr_zero walk).
     class SetBitIterator {
     public:
-        using iterator_concept = std::forward_iterator_tag;
-        using iterator_category = std::forward_iterator_tag;
-        using value_type = std::size_t;
-        using difference_type = std::ptrdiff_t;
+        using iterator_concept = std::forward_iterator_tag;  ///< a forward iterator
+        using iterator_category = std::forward_iterator_tag;  ///< a forward iterator
+        using value_type = std::size_t;  ///< the index of a set bit
+        using difference_type = std::ptrdiff_t;  ///< as iterators need
 
         SetBitIterator() noexcept = default;
         /// Index of the current set bit.
@@ -103,8 +106,8 @@ public:
     /// The set bits of a vector that outlives the range: `for (std::size_t i : bits.set_bits())`.
     class SetBits {
     public:
-        SetBitIterator begin() const noexcept { return {words_, words_ + word_count_}; }
-        std::default_sentinel_t end() const noexcept { return {}; }
+        SetBitIterator begin() const noexcept { return {words_, words_ + word_count_}; }  ///< the lowest set bit
+        std::default_sentinel_t end() const noexcept { return {}; }  ///< past the highest set bit
 
     private:
         friend class BitVector;
@@ -119,7 +122,7 @@ public:
     /// Valid while the vector lives and is not resized.
     class Reference {
     public:
-        Reference(const Reference&) noexcept = default;
+        Reference(const Reference&) noexcept = default;  ///< refers to the same bit
         /// The bit's value.
         operator bool() const noexcept { return (*word_ & mask_) != 0; }
         /// The bit's value, inverted.
@@ -161,8 +164,8 @@ public:
 
     /// An empty vector (size 0).
     BitVector() noexcept = default;
-    BitVector(const BitVector&) = default;
-    BitVector& operator=(const BitVector&) = default;
+    BitVector(const BitVector&) = default;  ///< a copy of the bits
+    BitVector& operator=(const BitVector&) = default;  ///< copies the bits and the size
     /// Takes the bits over; `other` is left empty (size 0).
     BitVector(BitVector&& other) noexcept : words_(std::move(other.words_)), size_(std::exchange(other.size_, 0)) {
         other.words_.clear();
@@ -296,8 +299,8 @@ public:
     BitVector& operator<<=(std::size_t n) noexcept;
     /// Moves every bit down by n (bit i goes to i − n): bits [0, n) are lost, the top n become 0.
     BitVector& operator>>=(std::size_t n) noexcept;
-    friend BitVector operator<<(BitVector a, std::size_t n) noexcept { return a <<= n; }
-    friend BitVector operator>>(BitVector a, std::size_t n) noexcept { return a >>= n; }
+    friend BitVector operator<<(BitVector a, std::size_t n) noexcept { return a <<= n; }  ///< a copy of `a` moved up by n
+    friend BitVector operator>>(BitVector a, std::size_t n) noexcept { return a >>= n; }  ///< a copy of `a` moved down by n
 
     /// Appends a bit (amortized constant time).
     void push_back(bool value) {
@@ -331,9 +334,9 @@ public:
     BitVector& subtract(const BitVector& other);
     /// A copy with every bit inverted (bits past size() stay zero).
     BitVector operator~() const;
-    friend BitVector operator&(BitVector a, const BitVector& b) { return a &= b; }
-    friend BitVector operator|(BitVector a, const BitVector& b) { return a |= b; }
-    friend BitVector operator^(BitVector a, const BitVector& b) { return a ^= b; }
+    friend BitVector operator&(BitVector a, const BitVector& b) { return a &= b; }  ///< bitwise and; throws grape::Error when sizes differ
+    friend BitVector operator|(BitVector a, const BitVector& b) { return a |= b; }  ///< bitwise or; throws grape::Error when sizes differ
+    friend BitVector operator^(BitVector a, const BitVector& b) { return a ^= b; }  ///< bitwise exclusive or; throws grape::Error when sizes differ
 
     /// Number of set bits.
     std::size_t count() const noexcept;
@@ -407,13 +410,15 @@ private:
     std::size_t size_ = 0;
 };
 
+/// The set bits of a temporary vector, which the range holds (from `std::move(bits).set_bits()`).
 class BitVector::OwnedSetBits {
 public:
+    /// The lowest set bit.
     SetBitIterator begin() const noexcept {
         const Word* words = bits_.words_.data();
         return {words, words + bits_.words_.size()};
     }
-    std::default_sentinel_t end() const noexcept { return {}; }
+    std::default_sentinel_t end() const noexcept { return {}; }  ///< past the highest set bit
 
 private:
     friend class BitVector;
@@ -428,12 +433,14 @@ inline BitVector::OwnedSetBits BitVector::set_bits() const&& { return OwnedSetBi
 GRAPE_BITS_API std::ostream& operator<<(std::ostream& out, const BitVector& bits);
 
 
+/// @}
+
 }  // namespace grape
 
 /// Hashes a BitVector by its size and bits, so it can key unordered containers.
 template <>
 struct std::hash<grape::BitVector> {
-    std::size_t operator()(const grape::BitVector& bits) const noexcept { return bits.hash(); }
+    std::size_t operator()(const grape::BitVector& bits) const noexcept { return bits.hash(); }  ///< BitVector::hash()
 };
 
 // PairBits and KeyState are built on BitVector; this header keeps offering them.

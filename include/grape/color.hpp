@@ -16,15 +16,18 @@
 
 namespace grape {
 
+/// \addtogroup value
+/// @{
+
 /// An RGBA colour: r, g, b sRGB-encoded (the numbers of CSS, image files and most engines'
 /// tints), each 1 at full intensity; a is coverage (0 transparent, 1 opaque). Interpolation
 /// and extrapolation may leave [0, 1]; to_hex and to_css clamp.
 struct Color {
-    double r = 0.0;
-    double g = 0.0;
-    double b = 0.0;
-    double a = 1.0;
-    friend constexpr bool operator==(const Color&, const Color&) noexcept = default;
+    double r = 0.0;  ///< red, sRGB-encoded
+    double g = 0.0;  ///< green, sRGB-encoded
+    double b = 0.0;  ///< blue, sRGB-encoded
+    double a = 1.0;  ///< alpha: 0 transparent, 1 opaque
+    friend constexpr bool operator==(const Color&, const Color&) noexcept = default;  ///< all four components equal (exact)
 };
 
 /// Where colours are mixed.
@@ -41,9 +44,9 @@ GRAPE_ANIM_API double linear_to_srgb(double linear) noexcept;
 
 /// A colour in OKLab: L lightness (0 black, 1 white), a green–red, b blue–yellow.
 struct Oklab {
-    double L = 0.0;
-    double a = 0.0;
-    double b = 0.0;
+    double L = 0.0;  ///< lightness: 0 black, 1 white
+    double a = 0.0;  ///< green (negative) to red (positive)
+    double b = 0.0;  ///< blue (negative) to yellow (positive)
 };
 /// The colour's r, g, b in OKLab (alpha dropped).
 GRAPE_ANIM_API Oklab to_oklab(const Color& c) noexcept;
@@ -56,8 +59,8 @@ GRAPE_ANIM_API Color from_oklab(const Oklab& lab, double alpha = 1.0) noexcept;
 class GRAPE_ANIM_API ColorMix {
 public:
     ColorMix() noexcept = default;
-    ColorMix(const Color& a, const Color& b, ColorSpace space) noexcept;
-    Color operator()(double t) const noexcept;
+    ColorMix(const Color& a, const Color& b, ColorSpace space) noexcept;  ///< converts `a` and `b` into `space` once
+    Color operator()(double t) const noexcept;  ///< mix(a, b, t, space)
 
 private:
     Color a_, b_;
@@ -75,15 +78,16 @@ inline Color lerp(const Color& a, const Color& b, double t) noexcept { return mi
 
 /// An interpolator for Engine::animate that mixes in a chosen space.
 struct ColorLerp {
-    ColorSpace space = ColorSpace::oklab;
-    Color operator()(const Color& a, const Color& b, double t) const noexcept { return mix(a, b, t, space); }
-    ColorMix prepare(const Color& a, const Color& b) const noexcept { return ColorMix(a, b, space); }
+    ColorSpace space = ColorSpace::oklab;  ///< where to mix (OKLab by default)
+    Color operator()(const Color& a, const Color& b, double t) const noexcept { return mix(a, b, t, space); }  ///< mix(a, b, t, space)
+    ColorMix prepare(const Color& a, const Color& b) const noexcept { return ColorMix(a, b, space); }  ///< the ends converted once, for animations
 };
 
 /// Colours animate in linear light, their ends converted once.
 template <>
 struct Interpolate<Color> {
-    static Color lerp(const Color& a, const Color& b, double t) noexcept { return mix(a, b, t); }
+    static Color lerp(const Color& a, const Color& b, double t) noexcept { return mix(a, b, t); }  ///< mix(a, b, t) in linear light
+    /// The ends converted to linear light once.
     static ColorMix prepare(const Color& a, const Color& b) noexcept {
         return ColorMix(a, b, ColorSpace::linear_srgb);
     }
@@ -101,5 +105,7 @@ GRAPE_ANIM_API std::string to_hex(const Color& c);
 /// `rgb(r, g, b)` with integers 0–255, or `rgba(r, g, b, a)` when alpha is below 1, a with
 /// up to three decimals.
 GRAPE_ANIM_API std::string to_css(const Color& c);
+
+/// @}
 
 }  // namespace grape

@@ -38,6 +38,9 @@
 
 namespace grape {
 
+/// \addtogroup curve
+/// @{
+
 namespace detail {
 /// x < edge ? a : b by integer masks (pick_below on targets without SSE2, such as wasm);
 /// memcpy, not std::bit_cast: some C++20 libraries (emscripten 3.1.6's) lack it.
@@ -74,36 +77,49 @@ inline constexpr double elastic_amplitude = 1.0;       ///< Penner's elastic a (
 inline constexpr double elastic_period = 0.3;          ///< elastic p for in and out, in units of t
 inline constexpr double elastic_in_out_period = 0.45;  ///< elastic p for in-out (0.3 · 1.5)
 
+/// x itself: no easing.
 inline double linear(double x) noexcept { return x; }
 
+/// Quadratic in: x².
 inline double quad_in(double x) noexcept { return x * x; }
+/// Quadratic out: 1 − (1 − x)².
 inline double quad_out(double x) noexcept { const double y = 1.0 - x; return 1.0 - y * y; }
+/// Quadratic in-out: quad in to ½, then quad out.
 inline double quad_in_out(double x) noexcept {
     const double y = 2.0 - 2.0 * x;
     return detail::pick_below(x, 0.5, 2.0 * x * x, 1.0 - 0.5 * y * y);
 }
 
+/// Cubic in: x³.
 inline double cubic_in(double x) noexcept { return x * x * x; }
+/// Cubic out: 1 − (1 − x)³.
 inline double cubic_out(double x) noexcept { const double y = 1.0 - x; return 1.0 - y * y * y; }
+/// Cubic in-out: cubic in to ½, then cubic out.
 inline double cubic_in_out(double x) noexcept {
     const double y = 2.0 - 2.0 * x;
     return detail::pick_below(x, 0.5, 4.0 * x * x * x, 1.0 - 0.5 * y * y * y);
 }
 
+/// Quartic in: x⁴.
 inline double quart_in(double x) noexcept { const double x2 = x * x; return x2 * x2; }
+/// Quartic out: 1 − (1 − x)⁴.
 inline double quart_out(double x) noexcept { const double y = (1.0 - x) * (1.0 - x); return 1.0 - y * y; }
+/// Quartic in-out: quartic in to ½, then quartic out.
 inline double quart_in_out(double x) noexcept {
     const double x2 = x * x;
     const double y = (2.0 - 2.0 * x) * (2.0 - 2.0 * x);
     return detail::pick_below(x, 0.5, 8.0 * x2 * x2, 1.0 - 0.5 * y * y);
 }
 
+/// Quintic in: x⁵.
 inline double quint_in(double x) noexcept { const double x2 = x * x; return x2 * x2 * x; }
+/// Quintic out: 1 − (1 − x)⁵.
 inline double quint_out(double x) noexcept {
     const double y = 1.0 - x;
     const double y2 = y * y;
     return 1.0 - y2 * y2 * y;
 }
+/// Quintic in-out: quintic in to ½, then quintic out.
 inline double quint_in_out(double x) noexcept {
     const double x2 = x * x;
     const double y = 2.0 - 2.0 * x;
@@ -112,26 +128,35 @@ inline double quint_in_out(double x) noexcept {
 }
 
 // cos(π/2) is 6e-17, not 0: the ends are pinned so that 1 → 1 holds exactly.
+/// Sine in: 1 − cos(πx/2), exactly 1 at x = 1.
 inline double sine_in(double x) noexcept { return x == 1.0 ? 1.0 : 1.0 - std::cos(x * 1.5707963267948966); }
+/// Sine out: sin(πx/2), exactly 1 at x = 1.
 inline double sine_out(double x) noexcept { return x == 1.0 ? 1.0 : std::sin(x * 1.5707963267948966); }
 /// Written as the join of in and out (equal to −(cos πx − 1)/2) so that ½ → ½ exactly.
 inline double sine_in_out(double x) noexcept { return x < 0.5 ? 0.5 * sine_in(2.0 * x) : 0.5 + 0.5 * sine_out(2.0 * x - 1.0); }
 
 // Penner's guards make the ends exact; they leave a 2⁻¹⁰ step right next to the guarded end.
+/// Exponential in: 2^(10x − 10), exactly 0 at x = 0.
 inline double expo_in(double x) noexcept { return x == 0.0 ? 0.0 : std::exp2(10.0 * x - 10.0); }
+/// Exponential out: 1 − 2^(−10x), exactly 1 at x = 1.
 inline double expo_out(double x) noexcept { return x == 1.0 ? 1.0 : 1.0 - std::exp2(-10.0 * x); }
+/// Exponential in-out: expo in to ½, then expo out.
 inline double expo_in_out(double x) noexcept {
     if (x == 0.0 || x == 1.0) return x;
     return x < 0.5 ? 0.5 * std::exp2(20.0 * x - 10.0) : 1.0 - 0.5 * std::exp2(10.0 - 20.0 * x);
 }
 
 // Outside [−1, 1] of the square root argument the curve holds its end value instead of NaN.
+/// Circular in: 1 − √(1 − x²) (holds 1 where the root's argument is negative).
 inline double circ_in(double x) noexcept { const double r = 1.0 - x * x; return 1.0 - (r > 0.0 ? std::sqrt(r) : 0.0); }
+/// Circular out: √(1 − (1 − x)²) (holds 0 where the root's argument is negative).
 inline double circ_out(double x) noexcept { const double y = 1.0 - x; const double r = 1.0 - y * y; return r > 0.0 ? std::sqrt(r) : 0.0; }
+/// Circular in-out: circ in to ½, then circ out.
 inline double circ_in_out(double x) noexcept { return x < 0.5 ? 0.5 * circ_in(2.0 * x) : 0.5 + 0.5 * circ_out(2.0 * x - 1.0); }
 
 /// Back in with overshoot s: (s + 1)x³ − s·x², written x²(x + s(x − 1)) so that 1 → 1 exactly.
 inline double back_in(double x, double s = back_overshoot) noexcept { return x * x * (x + s * (x - 1.0)); }
+/// Back out with overshoot s: the mirror of back_in, 1 − back_in(1 − x, s).
 inline double back_out(double x, double s = back_overshoot) noexcept { return 1.0 - back_in(1.0 - x, s); }
 /// Penner's in-out scales the overshoot by 1.525 so each half also dips about 10 %.
 inline double back_in_out(double x, double s = back_overshoot) noexcept {
@@ -152,6 +177,7 @@ inline double elastic_in(double x, double a = elastic_amplitude, double p = elas
 inline double elastic_out(double x, double a = elastic_amplitude, double p = elastic_period) noexcept {
     return 1.0 - elastic_in(1.0 - x, a, p);
 }
+/// Elastic in-out: elastic in to ½, then elastic out (Penner's period 0.45 by default).
 inline double elastic_in_out(double x, double a = elastic_amplitude, double p = elastic_in_out_period) noexcept {
     return x < 0.5 ? 0.5 * elastic_in(2.0 * x, a, p) : 0.5 + 0.5 * elastic_out(2.0 * x - 1.0, a, p);
 }
@@ -167,7 +193,9 @@ inline double bounce_out(double x) noexcept {
     x -= 2.625 / d;
     return n * x * x + 0.984375;
 }
+/// Bounce in: the mirror of bounce_out, 1 − bounce_out(1 − x).
 inline double bounce_in(double x) noexcept { return 1.0 - bounce_out(1.0 - x); }
+/// Bounce in-out: bounce in to ½, then bounce out.
 inline double bounce_in_out(double x) noexcept {
     return x < 0.5 ? 0.5 - 0.5 * bounce_out(1.0 - 2.0 * x) : 0.5 + 0.5 * bounce_out(2.0 * x - 1.0);
 }
@@ -175,19 +203,29 @@ inline double bounce_in_out(double x) noexcept {
 // Out-in: the out curve to ½, then the in curve (Robert Penner's family as Tweener and
 // Flash's transitions wrote it): fast at both ends, slow through the middle. 0 → 0, ½ → ½
 // and 1 → 1 exactly. Back and elastic keep their in/out constants (no 1.525 or 0.45).
+/// Quadratic out-in: quad out to ½, then quad in.
 inline double quad_out_in(double x) noexcept { return detail::pick_below(x, 0.5, 0.5 * quad_out(2.0 * x), 0.5 + 0.5 * quad_in(2.0 * x - 1.0)); }
+/// Cubic out-in: cubic out to ½, then cubic in.
 inline double cubic_out_in(double x) noexcept { return detail::pick_below(x, 0.5, 0.5 * cubic_out(2.0 * x), 0.5 + 0.5 * cubic_in(2.0 * x - 1.0)); }
+/// Quartic out-in: quartic out to ½, then quartic in.
 inline double quart_out_in(double x) noexcept { return detail::pick_below(x, 0.5, 0.5 * quart_out(2.0 * x), 0.5 + 0.5 * quart_in(2.0 * x - 1.0)); }
+/// Quintic out-in: quintic out to ½, then quintic in.
 inline double quint_out_in(double x) noexcept { return detail::pick_below(x, 0.5, 0.5 * quint_out(2.0 * x), 0.5 + 0.5 * quint_in(2.0 * x - 1.0)); }
+/// Sine out-in: sine out to ½, then sine in.
 inline double sine_out_in(double x) noexcept { return x < 0.5 ? 0.5 * sine_out(2.0 * x) : 0.5 + 0.5 * sine_in(2.0 * x - 1.0); }
+/// Exponential out-in: expo out to ½, then expo in.
 inline double expo_out_in(double x) noexcept { return x < 0.5 ? 0.5 * expo_out(2.0 * x) : 0.5 + 0.5 * expo_in(2.0 * x - 1.0); }
+/// Circular out-in: circ out to ½, then circ in.
 inline double circ_out_in(double x) noexcept { return x < 0.5 ? 0.5 * circ_out(2.0 * x) : 0.5 + 0.5 * circ_in(2.0 * x - 1.0); }
+/// Back out-in with overshoot s (not scaled by 1.525): back out to ½, then back in.
 inline double back_out_in(double x, double s = back_overshoot) noexcept {
     return x < 0.5 ? 0.5 * back_out(2.0 * x, s) : 0.5 + 0.5 * back_in(2.0 * x - 1.0, s);
 }
+/// Elastic out-in: elastic out to ½, then elastic in (period 0.3 by default).
 inline double elastic_out_in(double x, double a = elastic_amplitude, double p = elastic_period) noexcept {
     return x < 0.5 ? 0.5 * elastic_out(2.0 * x, a, p) : 0.5 + 0.5 * elastic_in(2.0 * x - 1.0, a, p);
 }
+/// Bounce out-in: bounce out to ½, then bounce in.
 inline double bounce_out_in(double x) noexcept { return x < 0.5 ? 0.5 * bounce_out(2.0 * x) : 0.5 + 0.5 * bounce_in(2.0 * x - 1.0); }
 
 }  // namespace ease
@@ -266,47 +304,87 @@ public:
     /// A factory for every named Penner curve (curve_names(): "quad-in" is quad_in()), canonical
     /// constants.
     static Curve linear() noexcept { return Curve(); }
+    /// ease::quad_in as a Curve.
     static Curve quad_in() noexcept { return {EaseFamily::quad, EaseDirection::in}; }
+    /// ease::quad_out as a Curve.
     static Curve quad_out() noexcept { return {EaseFamily::quad, EaseDirection::out}; }
+    /// ease::quad_in_out as a Curve.
     static Curve quad_in_out() noexcept { return {EaseFamily::quad, EaseDirection::in_out}; }
+    /// ease::cubic_in as a Curve.
     static Curve cubic_in() noexcept { return {EaseFamily::cubic, EaseDirection::in}; }
+    /// ease::cubic_out as a Curve.
     static Curve cubic_out() noexcept { return {EaseFamily::cubic, EaseDirection::out}; }
+    /// ease::cubic_in_out as a Curve.
     static Curve cubic_in_out() noexcept { return {EaseFamily::cubic, EaseDirection::in_out}; }
+    /// ease::quart_in as a Curve.
     static Curve quart_in() noexcept { return {EaseFamily::quart, EaseDirection::in}; }
+    /// ease::quart_out as a Curve.
     static Curve quart_out() noexcept { return {EaseFamily::quart, EaseDirection::out}; }
+    /// ease::quart_in_out as a Curve.
     static Curve quart_in_out() noexcept { return {EaseFamily::quart, EaseDirection::in_out}; }
+    /// ease::quint_in as a Curve.
     static Curve quint_in() noexcept { return {EaseFamily::quint, EaseDirection::in}; }
+    /// ease::quint_out as a Curve.
     static Curve quint_out() noexcept { return {EaseFamily::quint, EaseDirection::out}; }
+    /// ease::quint_in_out as a Curve.
     static Curve quint_in_out() noexcept { return {EaseFamily::quint, EaseDirection::in_out}; }
+    /// ease::sine_in as a Curve.
     static Curve sine_in() noexcept { return {EaseFamily::sine, EaseDirection::in}; }
+    /// ease::sine_out as a Curve.
     static Curve sine_out() noexcept { return {EaseFamily::sine, EaseDirection::out}; }
+    /// ease::sine_in_out as a Curve.
     static Curve sine_in_out() noexcept { return {EaseFamily::sine, EaseDirection::in_out}; }
+    /// ease::expo_in as a Curve.
     static Curve expo_in() noexcept { return {EaseFamily::expo, EaseDirection::in}; }
+    /// ease::expo_out as a Curve.
     static Curve expo_out() noexcept { return {EaseFamily::expo, EaseDirection::out}; }
+    /// ease::expo_in_out as a Curve.
     static Curve expo_in_out() noexcept { return {EaseFamily::expo, EaseDirection::in_out}; }
+    /// ease::circ_in as a Curve.
     static Curve circ_in() noexcept { return {EaseFamily::circ, EaseDirection::in}; }
+    /// ease::circ_out as a Curve.
     static Curve circ_out() noexcept { return {EaseFamily::circ, EaseDirection::out}; }
+    /// ease::circ_in_out as a Curve.
     static Curve circ_in_out() noexcept { return {EaseFamily::circ, EaseDirection::in_out}; }
+    /// ease::back_in as a Curve.
     static Curve back_in() noexcept { return {EaseFamily::back, EaseDirection::in}; }
+    /// ease::back_out as a Curve.
     static Curve back_out() noexcept { return {EaseFamily::back, EaseDirection::out}; }
+    /// ease::back_in_out as a Curve.
     static Curve back_in_out() noexcept { return {EaseFamily::back, EaseDirection::in_out}; }
+    /// ease::elastic_in as a Curve.
     static Curve elastic_in() noexcept { return {EaseFamily::elastic, EaseDirection::in}; }
+    /// ease::elastic_out as a Curve.
     static Curve elastic_out() noexcept { return {EaseFamily::elastic, EaseDirection::out}; }
+    /// ease::elastic_in_out as a Curve.
     static Curve elastic_in_out() noexcept { return {EaseFamily::elastic, EaseDirection::in_out}; }
+    /// ease::bounce_in as a Curve.
     static Curve bounce_in() noexcept { return {EaseFamily::bounce, EaseDirection::in}; }
+    /// ease::bounce_out as a Curve.
     static Curve bounce_out() noexcept { return {EaseFamily::bounce, EaseDirection::out}; }
+    /// ease::bounce_in_out as a Curve.
     static Curve bounce_in_out() noexcept { return {EaseFamily::bounce, EaseDirection::in_out}; }
     /// Out-in of a family: out to ½, then in (canonical constants).
     static Curve out_in(EaseFamily family) noexcept { return {family, EaseDirection::out_in}; }
+    /// ease::quad_out_in as a Curve.
     static Curve quad_out_in() noexcept { return out_in(EaseFamily::quad); }
+    /// ease::cubic_out_in as a Curve.
     static Curve cubic_out_in() noexcept { return out_in(EaseFamily::cubic); }
+    /// ease::quart_out_in as a Curve.
     static Curve quart_out_in() noexcept { return out_in(EaseFamily::quart); }
+    /// ease::quint_out_in as a Curve.
     static Curve quint_out_in() noexcept { return out_in(EaseFamily::quint); }
+    /// ease::sine_out_in as a Curve.
     static Curve sine_out_in() noexcept { return out_in(EaseFamily::sine); }
+    /// ease::expo_out_in as a Curve.
     static Curve expo_out_in() noexcept { return out_in(EaseFamily::expo); }
+    /// ease::circ_out_in as a Curve.
     static Curve circ_out_in() noexcept { return out_in(EaseFamily::circ); }
+    /// ease::back_out_in as a Curve.
     static Curve back_out_in() noexcept { return out_in(EaseFamily::back); }
+    /// ease::elastic_out_in as a Curve.
     static Curve elastic_out_in() noexcept { return out_in(EaseFamily::elastic); }
+    /// ease::bounce_out_in as a Curve.
     static Curve bounce_out_in() noexcept { return out_in(EaseFamily::bounce); }
 
     /// Back with overshoot s (finite, ≥ 0; 1.70158 undershoots 10 %). In-out uses 1.525·s
@@ -381,6 +459,7 @@ public:
     const void* identity() const noexcept { return data_.get(); }
     /// The knots of a monotone curve (empty otherwise).
     std::span<const double> knots_x() const noexcept;
+    /// The knots' y, one per knots_x() (empty unless monotone).
     std::span<const double> knots_y() const noexcept;
 
     /// Same kind and numbers (monotone curves: the same points; svg: the same segments;
@@ -503,5 +582,7 @@ inline double Curve::operator()(double t) const noexcept {
         default: return detail::ease_formula(kind_, t);
     }
 }
+
+/// @}
 
 }  // namespace grape

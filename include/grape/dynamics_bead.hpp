@@ -14,6 +14,9 @@
 
 namespace grape {
 
+/// \addtogroup dynamics
+/// @{
+
 // ---------------------------------------------------------------------------------------
 // Generalized coordinates: a bead on a parametric curve
 // ---------------------------------------------------------------------------------------
@@ -78,7 +81,7 @@ public:
     /// Advances by dt seconds (> 0, finite; throws grape::Error otherwise).
     StepStats step(double dt);
 
-    double time() const noexcept { return time_; }
+    double time() const noexcept { return time_; }  ///< seconds simulated so far
     /// The parameter u on the whole path.
     double u() const noexcept;
     /// du/dt on the whole path.
@@ -116,5 +119,7 @@ private:
     std::function<Vec2(double, Vec2, Vec2)> force_{};
     Stepper stepper_{};
 };
+
+/// @}
 
 }  // namespace grape

@@ -12,6 +12,9 @@
 
 namespace grape {
 
+/// \addtogroup dynamics
+/// @{
+
 // ---------------------------------------------------------------------------------------
 // Implicit curves C(x, y) = 0
 // ---------------------------------------------------------------------------------------
@@ -48,5 +51,7 @@ public:
 private:
     std::function<ImplicitSample(Vec2)> evaluate_{};
 };
+
+/// @}
 
 }  // namespace grape

@@ -13,6 +13,9 @@
 
 namespace grape {
 
+/// \addtogroup dynamics
+/// @{
+
 // ---------------------------------------------------------------------------------------
 // Integrators: one interface, state (q, q̇) and derivative (q̇, q̈)
 // ---------------------------------------------------------------------------------------
@@ -108,12 +111,14 @@ constexpr SolveStatus worse(SolveStatus a, SolveStatus b) noexcept {
 /// buffers (allocated when the system size first grows), so steps do not allocate.
 class GRAPE_DYNAMICS_API Stepper {
 public:
+    /// Throws grape::Error if rk45's tolerance is negative or not finite, its min_step is not
+    /// positive and finite, or its max_substeps is below 1.
     explicit Stepper(Integrator integrator = Integrator::rk4, Rk45Def rk45 = {});
     /// Advances (q, v) from t to t + dt in place. rk45 takes as many sub-steps as its
     /// tolerance needs and remembers its last step size. dt must be positive.
     StepStats step(SecondOrderSystem& system, double t, std::span<double> q, std::span<double> v, double dt);
-    Integrator integrator() const noexcept { return integrator_; }
-    const Rk45Def& rk45() const noexcept { return rk45_; }
+    Integrator integrator() const noexcept { return integrator_; }  ///< the integrator it steps with
+    const Rk45Def& rk45() const noexcept { return rk45_; }  ///< rk45's settings
 
 private:
     Integrator integrator_{};
@@ -121,5 +126,7 @@ private:
     double rk45_step_ = 0.0;  // last accepted rk45 step, 0 before the first
     std::vector<double> buffer_{};
 };
+
+/// @}
 
 }  // namespace grape

@@ -22,20 +22,23 @@
 
 namespace grape {
 
+/// \addtogroup dynamics
+/// @{
+
 // ---------------------------------------------------------------------------------------
 // The particle system
 // ---------------------------------------------------------------------------------------
 
 /// A particle's handle: its index in creation order (particles are never removed).
 struct ParticleId {
-    std::uint32_t index = 0;
-    friend constexpr bool operator==(ParticleId, ParticleId) noexcept = default;
+    std::uint32_t index = 0;  ///< creation order, from 0
+    friend constexpr bool operator==(ParticleId, ParticleId) noexcept = default;  ///< the same particle
 };
 
 /// A constraint's handle: its index in creation order (constraints are never removed).
 struct ConstraintId {
-    std::uint32_t index = 0;
-    friend constexpr bool operator==(ConstraintId, ConstraintId) noexcept = default;
+    std::uint32_t index = 0;  ///< creation order, from 0
+    friend constexpr bool operator==(ConstraintId, ConstraintId) noexcept = default;  ///< the same constraint
 };
 
 /// A new particle.
@@ -174,8 +177,8 @@ struct UserConstraintOutput {
 /// A user constraint: one scalar C over `particles`. `evaluate` gets their positions and
 /// velocities (same order) and must fill an output consistent with C (Ċ = J·v).
 struct UserConstraint {
-    std::vector<ParticleId> particles{};
-    std::function<void(std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out)> evaluate;
+    std::vector<ParticleId> particles{};  ///< the particles C depends on (at least one)
+    std::function<void(std::span<const Vec2> x, std::span<const Vec2> v, UserConstraintOutput& out)> evaluate;  ///< fills `out` from positions and velocities
 };
 
 namespace detail {
@@ -192,8 +195,8 @@ public:
     /// tolerance or iteration counts).
     explicit ParticleSystem(ParticleSystemDef def = {});
     ~ParticleSystem();
-    ParticleSystem(ParticleSystem&&) noexcept;
-    ParticleSystem& operator=(ParticleSystem&&) noexcept;
+    ParticleSystem(ParticleSystem&&) noexcept;  ///< takes the particles over; the moved-from system may only be destroyed or assigned to
+    ParticleSystem& operator=(ParticleSystem&&) noexcept;  ///< as the move constructor
 
     // -- particles --
     /// Adds a particle. Throws grape::Error if position or velocity is not finite or the mass
@@ -203,9 +206,9 @@ public:
     std::size_t size() const noexcept;
     /// Positions, velocities, inverse masses (0 = pinned) and the forces of the last evaluation.
     std::span<const Vec2> positions() const noexcept;
-    std::span<const Vec2> velocities() const noexcept;
-    std::span<const double> inverse_masses() const noexcept;
-    std::span<const Vec2> forces() const noexcept;
+    std::span<const Vec2> velocities() const noexcept;  ///< units per second, particle order
+    std::span<const double> inverse_masses() const noexcept;  ///< 1/kg, 0 = pinned
+    std::span<const Vec2> forces() const noexcept;  ///< applied forces at the last evaluation
     /// Constraint force Jᵀλ on each particle at the last evaluation.
     std::span<const Vec2> constraint_forces() const noexcept;
     Vec2 position(ParticleId id) const;  ///< throws grape::Error for an unknown id
@@ -213,6 +216,8 @@ public:
     double mass(ParticleId id) const;    ///< +infinity when pinned
     /// Moves a particle (no drift control is applied until the next step).
     void set_position(ParticleId id, Vec2 position);
+    /// Sets a particle's velocity (pinned particles keep zero). Throws grape::Error for an unknown
+    /// id or a velocity that is not finite.
     void set_velocity(ParticleId id, Vec2 velocity);
     /// Adds a force held for the next step, then cleared (as the seed's exertForce).
     void exert_force(ParticleId id, Vec2 force);
@@ -261,7 +266,7 @@ public:
     std::size_t constraint_count() const noexcept;
 
     // -- settings --
-    const ParticleSystemDef& def() const noexcept;
+    const ParticleSystemDef& def() const noexcept;  ///< the settings in force
     /// Changes the drift control (validated as in the constructor).
     void set_drift(const DriftDef& drift);
     /// Changes the sub-step rule (validated as in the constructor).
@@ -317,5 +322,7 @@ private:
     void refuse_degenerate_rows();  // throws for a violated row with ∇C = 0 (rows evaluated)
     std::unique_ptr<detail::ParticleState> state_;  // model, state and solver (src/dynamics/particle_state.hpp)
 };
+
+/// @}
 
 }  // namespace grape

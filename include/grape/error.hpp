@@ -18,6 +18,9 @@
 
 namespace grape {
 
+/// \addtogroup core
+/// @{
+
 /// Thrown by constructors and parsers for invalid input. The message names the offending
 /// argument (or the character offset / JSON pointer for parsers) and the reason.
 /// Evaluation on valid objects never throws.
@@ -32,5 +35,7 @@ namespace detail {
 /// write a double with every standard library grape supports.
 GRAPE_MATH_API std::string number_text(double value);
 }  // namespace detail
+
+/// @}
 
 }  // namespace grape

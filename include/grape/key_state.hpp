@@ -13,6 +13,9 @@
 
 namespace grape {
 
+/// \addtogroup bits
+/// @{
+
 /// A type usable as a key code: any integer type but bool, or any enumeration (plain enums
 /// such as SDL_Scancode, integer typedefs such as SDL_Keycode, scoped `enum class` keys).
 template <class K>
@@ -189,5 +192,7 @@ private:
     std::vector<std::size_t> repeat_counts_;  // parallel to repeated_list_
     std::vector<Held> held_;                  // the keys down, in the order they were pressed
 };
+
+/// @}
 
 }  // namespace grape

@@ -11,26 +11,30 @@
 
 namespace grape {
 
+/// \addtogroup math
+/// @{
+
+/// π to double precision.
 inline constexpr double pi = 3.141592653589793238462643383279502884;
 
 /// A 2-D vector or point in world units (screen convention: y points down).
 struct Vec2 {
-    double x = 0.0;
-    double y = 0.0;
+    double x = 0.0;  ///< world units, to the right
+    double y = 0.0;  ///< world units, down
 
-    constexpr Vec2& operator+=(Vec2 o) noexcept { x += o.x; y += o.y; return *this; }
-    constexpr Vec2& operator-=(Vec2 o) noexcept { x -= o.x; y -= o.y; return *this; }
-    constexpr Vec2& operator*=(double s) noexcept { x *= s; y *= s; return *this; }
-    constexpr Vec2& operator/=(double s) noexcept { x /= s; y /= s; return *this; }
-    friend constexpr bool operator==(Vec2, Vec2) noexcept = default;
+    constexpr Vec2& operator+=(Vec2 o) noexcept { x += o.x; y += o.y; return *this; }  ///< adds o componentwise
+    constexpr Vec2& operator-=(Vec2 o) noexcept { x -= o.x; y -= o.y; return *this; }  ///< subtracts o componentwise
+    constexpr Vec2& operator*=(double s) noexcept { x *= s; y *= s; return *this; }  ///< scales both components by s
+    constexpr Vec2& operator/=(double s) noexcept { x /= s; y /= s; return *this; }  ///< divides both components by s
+    friend constexpr bool operator==(Vec2, Vec2) noexcept = default;  ///< both components equal (exact)
 };
 
-constexpr Vec2 operator+(Vec2 a, Vec2 b) noexcept { return {a.x + b.x, a.y + b.y}; }
-constexpr Vec2 operator-(Vec2 a, Vec2 b) noexcept { return {a.x - b.x, a.y - b.y}; }
-constexpr Vec2 operator-(Vec2 a) noexcept { return {-a.x, -a.y}; }
-constexpr Vec2 operator*(Vec2 a, double s) noexcept { return {a.x * s, a.y * s}; }
-constexpr Vec2 operator*(double s, Vec2 a) noexcept { return {a.x * s, a.y * s}; }
-constexpr Vec2 operator/(Vec2 a, double s) noexcept { return {a.x / s, a.y / s}; }
+constexpr Vec2 operator+(Vec2 a, Vec2 b) noexcept { return {a.x + b.x, a.y + b.y}; }  ///< componentwise sum
+constexpr Vec2 operator-(Vec2 a, Vec2 b) noexcept { return {a.x - b.x, a.y - b.y}; }  ///< componentwise difference
+constexpr Vec2 operator-(Vec2 a) noexcept { return {-a.x, -a.y}; }  ///< both components negated
+constexpr Vec2 operator*(Vec2 a, double s) noexcept { return {a.x * s, a.y * s}; }  ///< a scaled by s
+constexpr Vec2 operator*(double s, Vec2 a) noexcept { return {a.x * s, a.y * s}; }  ///< a scaled by s
+constexpr Vec2 operator/(Vec2 a, double s) noexcept { return {a.x / s, a.y / s}; }  ///< a divided by s
 
 /// Dot product.
 constexpr double dot(Vec2 a, Vec2 b) noexcept { return a.x * b.x + a.y * b.y; }
@@ -63,8 +67,8 @@ inline bool is_finite(Vec2 a) noexcept { return std::isfinite(a.x) && std::isfin
 
 /// An axis-aligned box; `min` ≤ `max` componentwise once anything has been added.
 struct Bounds {
-    Vec2 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    Vec2 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    Vec2 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};  ///< the smallest x and y (+∞ while empty)
+    Vec2 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};  ///< the largest x and y (−∞ while empty)
 
     /// Grows the box to hold p.
     constexpr void add(Vec2 p) noexcept {
@@ -78,7 +82,7 @@ struct Bounds {
         return p.x >= min.x - tolerance && p.x <= max.x + tolerance && p.y >= min.y - tolerance &&
                p.y <= max.y + tolerance;
     }
-    constexpr Vec2 size() const noexcept { return max - min; }
+    constexpr Vec2 size() const noexcept { return max - min; }  ///< max − min: width and height
 };
 
 namespace detail {
@@ -205,5 +209,7 @@ Root find_root(FD&& fd, double lo, double hi, double guess, double tolerance = 1
     }
     return {x, max_iterations, false};
 }
+
+/// @}
 
 }  // namespace grape

@@ -11,6 +11,9 @@
 
 namespace grape {
 
+/// \addtogroup bits
+/// @{
+
 /// One bit per unordered pair {i, j} of n objects: n(n−1)/2 bits, with the pair at
 /// index i(2n − i − 3)/2 + j − 1 for i < j (Ericson, Real-Time Collision Detection).
 /// Typical use: test each pair of colliding objects once per frame.
@@ -45,10 +48,10 @@ public:
     /// row so each step is O(1) amortized (no square root per pair).
     class SetPairIterator {
     public:
-        using iterator_concept = std::forward_iterator_tag;
-        using iterator_category = std::forward_iterator_tag;
-        using value_type = std::pair<std::size_t, std::size_t>;
-        using difference_type = std::ptrdiff_t;
+        using iterator_concept = std::forward_iterator_tag;  ///< a forward iterator
+        using iterator_category = std::forward_iterator_tag;  ///< a forward iterator
+        using value_type = std::pair<std::size_t, std::size_t>;  ///< a set pair (i, j), i < j
+        using difference_type = std::ptrdiff_t;  ///< as iterators need
 
         SetPairIterator() noexcept = default;
         /// The current pair (i, j), i < j.
@@ -94,8 +97,8 @@ public:
     /// The set pairs as a range: `for (auto [i, j] : pairs.set_pairs())`.
     class SetPairs {
     public:
-        SetPairIterator begin() const noexcept { return {bits_->set_bits().begin(), n_}; }
-        std::default_sentinel_t end() const noexcept { return {}; }
+        SetPairIterator begin() const noexcept { return {bits_->set_bits().begin(), n_}; }  ///< the first set pair
+        std::default_sentinel_t end() const noexcept { return {}; }  ///< past the last set pair
 
     private:
         friend class PairBits;
@@ -120,5 +123,7 @@ private:
     std::size_t n_;
     BitVector bits_;
 };
+
+/// @}
 
 }  // namespace grape

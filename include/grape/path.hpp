@@ -36,6 +36,9 @@
 
 namespace grape {
 
+/// \addtogroup path
+/// @{
+
 namespace detail {
 class PathNode;  // the shape behind a Path, private to the path module
 }
@@ -117,7 +120,9 @@ public:
     friend bool operator==(const Path& a, const Path& b) noexcept { return a.node_ == b.node_; }
 
 protected:
+    /// Wraps a built shape; for the path kinds' constructors.
     explicit Path(std::shared_ptr<const detail::PathNode> node) noexcept;
+    /// The shared, immutable shape.
     std::shared_ptr<const detail::PathNode> node_;
 };
 
@@ -187,6 +192,7 @@ public:
 /// seed's flag did; control() still gives the control points.
 class GRAPE_PATH_API QuadraticBezierPath : public Path {
 public:
+    /// Throws grape::Error if a point is not finite or the coefficients overflow a double.
     QuadraticBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, bool reparametrize = false);
     /// Control point i in 0..2.
     Vec2 control(std::size_t i) const noexcept;
@@ -195,6 +201,7 @@ public:
 /// Cubic Bézier through p0 and p3 with control points p1 and p2; `reparametrize` as above.
 class GRAPE_PATH_API CubicBezierPath : public Path {
 public:
+    /// Throws grape::Error if a point is not finite or the coefficients overflow a double.
     CubicBezierPath(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, bool reparametrize = false);
     /// Control point i in 0..3.
     Vec2 control(std::size_t i) const noexcept;
@@ -206,6 +213,7 @@ class GRAPE_PATH_API LinearSplinePath : public Path {
 public:
     explicit LinearSplinePath(std::span<const Vec2> points);  ///< n ≥ 2 finite points
     explicit LinearSplinePath(std::span<const double> xy);    ///< x0, y0, x1, y1, ...
+    /// x0, y0, x1, y1, ... written in place.
     LinearSplinePath(std::initializer_list<double> xy) : LinearSplinePath(std::span<const double>(xy)) {}
     std::span<const Vec2> points() const noexcept;  ///< the points passed through
 };
@@ -215,6 +223,7 @@ class GRAPE_PATH_API CosineSplinePath : public Path {
 public:
     explicit CosineSplinePath(std::span<const Vec2> points);  ///< n ≥ 2 finite points
     explicit CosineSplinePath(std::span<const double> xy);    ///< x0, y0, x1, y1, ...
+    /// x0, y0, x1, y1, ... written in place.
     CosineSplinePath(std::initializer_list<double> xy) : CosineSplinePath(std::span<const double>(xy)) {}
     std::span<const Vec2> points() const noexcept;  ///< the points passed through
 };
@@ -225,6 +234,7 @@ class GRAPE_PATH_API HermiteSplinePath : public Path {
 public:
     HermiteSplinePath(std::span<const Vec2> points, std::span<const Vec2> tangents);  ///< one tangent per point
     HermiteSplinePath(std::span<const double> xy, std::span<const double> tangent_xy);  ///< as flat pairs
+    /// Points and tangents as flat pairs written in place.
     HermiteSplinePath(std::initializer_list<double> xy, std::initializer_list<double> tangent_xy)
         : HermiteSplinePath(std::span<const double>(xy), std::span<const double>(tangent_xy)) {}
     std::span<const Vec2> points() const noexcept;  ///< the points passed through
@@ -241,8 +251,11 @@ enum class CatmullRom { uniform, centripetal, chordal };
 /// spacing 1 there.
 class GRAPE_PATH_API CatmullRomSplinePath : public Path {
 public:
+    /// n ≥ 2 finite points; throws grape::Error otherwise or for a `type` out of the enum.
     explicit CatmullRomSplinePath(std::span<const Vec2> points, CatmullRom type = CatmullRom::uniform);
+    /// x0, y0, x1, y1, ... (an odd count is an error).
     explicit CatmullRomSplinePath(std::span<const double> xy, CatmullRom type = CatmullRom::uniform);
+    /// x0, y0, x1, y1, ... written in place.
     CatmullRomSplinePath(std::initializer_list<double> xy, CatmullRom type = CatmullRom::uniform)
         : CatmullRomSplinePath(std::span<const double>(xy), type) {}
     std::span<const Vec2> points() const noexcept;  ///< the points passed through
@@ -288,77 +301,77 @@ struct LinearSpec {
 };
 /// CirclePath's parameters (angles in radians).
 struct CircleSpec {
-    Vec2 center;
-    double radius = 1.0;
-    double start_angle = 0.0;
-    double end_angle = 2.0 * pi;
+    Vec2 center;                  ///< world units
+    double radius = 1.0;          ///< world units
+    double start_angle = 0.0;     ///< angle at u = 0
+    double end_angle = 2.0 * pi;  ///< angle at u = 1
 };
 /// EllipticalArcPath's parameters (angles in radians).
 struct EllipticalArcSpec {
-    Vec2 center;
-    double rx = 1.0;
-    double ry = 1.0;
-    double rotation = 0.0;
-    double start_angle = 0.0;
-    double end_angle = 2.0 * pi;
+    Vec2 center;                  ///< world units
+    double rx = 1.0;              ///< radius along the ellipse's own x axis
+    double ry = 1.0;              ///< radius along the ellipse's own y axis
+    double rotation = 0.0;        ///< of the ellipse's x axis from the world's
+    double start_angle = 0.0;     ///< parametric angle at u = 0
+    double end_angle = 2.0 * pi;  ///< parametric angle at u = 1
 };
 /// SpiralPath's parameters (angles in radians).
 struct SpiralSpec {
-    Vec2 center;
-    double start_radius = 0.0;
-    double end_radius = 1.0;
-    double start_angle = 0.0;
-    double end_angle = 2.0 * pi;
+    Vec2 center;                  ///< world units
+    double start_radius = 0.0;    ///< radius at u = 0
+    double end_radius = 1.0;      ///< radius at u = 1
+    double start_angle = 0.0;     ///< angle at u = 0
+    double end_angle = 2.0 * pi;  ///< angle at u = 1
 };
 /// SineWavePath's parameters.
 struct SineWaveSpec {
-    Vec2 start;
-    Vec2 end;
+    Vec2 start;              ///< point at u = 0
+    Vec2 end;                ///< point at u = 1
     double frequency = 1.0;  ///< full waves along the segment
     double amplitude = 0.0;  ///< world units
 };
 /// QuadraticBezierPath's control points p0, p1, p2 (as a Bézier, not reparametrized).
 struct QuadraticBezierSpec {
-    std::array<Vec2, 3> control;
+    std::array<Vec2, 3> control;  ///< p0, p1, p2
 };
 /// CubicBezierPath's control points p0..p3 (as a Bézier, not reparametrized).
 struct CubicBezierSpec {
-    std::array<Vec2, 4> control;
+    std::array<Vec2, 4> control;  ///< p0, p1, p2, p3
 };
 /// LinearSplinePath's points.
 struct LinearSplineSpec {
-    std::vector<Vec2> points;
+    std::vector<Vec2> points;  ///< n ≥ 2
 };
 /// CosineSplinePath's points.
 struct CosineSplineSpec {
-    std::vector<Vec2> points;
+    std::vector<Vec2> points;  ///< n ≥ 2
 };
 /// HermiteSplinePath's points and tangents (one per point).
 struct HermiteSplineSpec {
-    std::vector<Vec2> points;
-    std::vector<Vec2> tangents;
+    std::vector<Vec2> points;    ///< n ≥ 2
+    std::vector<Vec2> tangents;  ///< one per point
 };
 /// CatmullRomSplinePath's points and knot spacing.
 struct CatmullRomSplineSpec {
-    std::vector<Vec2> points;
-    CatmullRom type = CatmullRom::uniform;
+    std::vector<Vec2> points;               ///< n ≥ 2
+    CatmullRom type = CatmullRom::uniform;  ///< knot spacing
 };
 /// PhysicsPath's parameters.
 struct PhysicsSpec {
     Vec2 position;      ///< world units
     Vec2 velocity;      ///< units per second
     Vec2 acceleration;  ///< units per second²
-    double seconds = 1.0;
+    double seconds = 1.0;  ///< time at u = 1 (> 0)
 };
 /// ComplexPath's parts and cues (the parts are paths: describe them in turn).
 struct ComplexSpec {
-    std::vector<Path> parts;
-    std::vector<double> cues;
+    std::vector<Path> parts;   ///< played one after another
+    std::vector<double> cues;  ///< one per part, as ComplexPath takes them
 };
 /// The arc-length reparametrization of `source` (Path::reparametrized()); a Bézier built
 /// with `reparametrize` is one of these around the plain Bézier.
 struct ReparametrizedSpec {
-    Path source;
+    Path source;  ///< the path reparametrized
 };
 
 /// Every kind with its parameters. The alternatives come in PathKind's order, so
@@ -432,10 +445,10 @@ GRAPE_PATH_API SvgPathParse parse_svg_path_prefix(std::string_view data);
 class GRAPE_PATH_API Path1D {
 public:
     Path1D(double from, double to);  ///< both finite
-    double value(double u) const noexcept { return from_ + (to_ - from_) * u; }
-    double d1(double) const noexcept { return to_ - from_; }
-    double from() const noexcept { return from_; }
-    double to() const noexcept { return to_; }
+    double value(double u) const noexcept { return from_ + (to_ - from_) * u; }  ///< from + (to − from)·u
+    double d1(double) const noexcept { return to_ - from_; }  ///< d/du: to − from, the same everywhere
+    double from() const noexcept { return from_; }  ///< the value at u = 0
+    double to() const noexcept { return to_; }  ///< the value at u = 1
 
 private:
     double from_;
@@ -457,8 +470,8 @@ public:
     PathND(std::span<const double> from, std::span<const double> to);
     /// Through `keyframes`, each of `dimension` numbers, stored one after another.
     PathND(std::size_t dimension, std::span<const double> keyframes);
-    std::size_t dimension() const noexcept { return dimension_; }
-    std::size_t keyframe_count() const noexcept { return keys_.size() / dimension_; }
+    std::size_t dimension() const noexcept { return dimension_; }  ///< N, the numbers per keyframe
+    std::size_t keyframe_count() const noexcept { return keys_.size() / dimension_; }  ///< the number of keyframes (≥ 2)
     /// The keyframes, dimension() values each, one after another.
     std::span<const double> keyframes() const noexcept { return keys_; }
     /// Writes the dimension() values at u into out (out.size() ≥ dimension()).
@@ -470,5 +483,7 @@ private:
     std::size_t dimension_;
     std::vector<double> keys_;
 };
+
+/// @}
 
 }  // namespace grape

@@ -13,6 +13,9 @@
 
 namespace grape {
 
+/// \addtogroup path_query
+/// @{
+
 /// The nearest point of a path to a query point.
 struct ClosestPoint {
     double u = 0.0;         ///< the path's parameter there, in [0, 1]
@@ -110,5 +113,7 @@ struct FitPathDef {
 /// repeated points are dropped; throws grape::Error for fewer than 2 distinct points, a point
 /// that is not finite or a bad tolerance or angle.
 GRAPE_PATH_API ComplexPath fit_path(std::span<const Vec2> points, const FitPathDef& def = {});
+
+/// @}
 
 }  // namespace grape

@@ -28,34 +28,48 @@
 
 namespace grape {
 
+/// \addtogroup render
+/// @{
+
 // Colours are grape::Color (grape/color.hpp): straight (not premultiplied) sRGB-encoded
 // components in [0, 1] and opacity a, the one definition the anim engine's tweens use too.
 
 /// A few named colours for debug drawings.
 namespace colors {
-inline constexpr Color black{0.0, 0.0, 0.0};
-inline constexpr Color white{1.0, 1.0, 1.0};
-inline constexpr Color transparent{0.0, 0.0, 0.0, 0.0};
-inline constexpr Color red{0.85, 0.1, 0.1};
-inline constexpr Color green{0.1, 0.6, 0.2};
-inline constexpr Color blue{0.15, 0.35, 0.85};
-inline constexpr Color orange{0.95, 0.55, 0.1};
-inline constexpr Color purple{0.55, 0.2, 0.7};
-inline constexpr Color grey{0.55, 0.55, 0.55};
-inline constexpr Color light_grey{0.85, 0.85, 0.85};
+inline constexpr Color black{0.0, 0.0, 0.0};  ///< (0, 0, 0)
+inline constexpr Color white{1.0, 1.0, 1.0};  ///< (1, 1, 1)
+inline constexpr Color transparent{0.0, 0.0, 0.0, 0.0};  ///< black with alpha 0
+inline constexpr Color red{0.85, 0.1, 0.1};  ///< a strong red
+inline constexpr Color green{0.1, 0.6, 0.2};  ///< a mid green
+inline constexpr Color blue{0.15, 0.35, 0.85};  ///< a mid blue
+inline constexpr Color orange{0.95, 0.55, 0.1};  ///< a bright orange
+inline constexpr Color purple{0.55, 0.2, 0.7};  ///< a mid purple
+inline constexpr Color grey{0.55, 0.55, 0.55};  ///< a mid grey
+inline constexpr Color light_grey{0.85, 0.85, 0.85};  ///< a light grey
 }  // namespace colors
 
 /// An axis-aligned rectangle: top-left corner and size, in the units of its context.
 struct Rect {
-    double x = 0.0;
-    double y = 0.0;
-    double width = 0.0;
-    double height = 0.0;
+    double x = 0.0;  ///< left edge
+    double y = 0.0;  ///< top edge
+    double width = 0.0;  ///< extent to the right
+    double height = 0.0;  ///< extent downwards
 };
 
 /// A 2-D affine map p ↦ (xx·x + xy·y + x0, yx·x + yy·y + y0), the layout cairo uses.
 struct GRAPE_RENDER_API Affine {
+    /// x per unit of x; the coefficients are named as in the map above, the default is the identity.
     double xx = 1.0, yx = 0.0, xy = 0.0, yy = 1.0, x0 = 0.0, y0 = 0.0;
+    /** \var grape::Affine::yx
+        y per unit of x. */
+    /** \var grape::Affine::xy
+        x per unit of y. */
+    /** \var grape::Affine::yy
+        y per unit of y. */
+    /** \var grape::Affine::x0
+        x of the image of the origin. */
+    /** \var grape::Affine::y0
+        y of the image of the origin. */
 
     /// The image of point p.
     constexpr Vec2 apply(Vec2 p) const noexcept { return {xx * p.x + xy * p.y + x0, yx * p.x + yy * p.y + y0}; }
@@ -164,8 +178,8 @@ public:
     /// Throws grape::Error unless both sizes are finite and in [1, 32768].
     Canvas(double width, double height, Color background = colors::white);
     ~Canvas();
-    Canvas(Canvas&&) noexcept;
-    Canvas& operator=(Canvas&&) noexcept;
+    Canvas(Canvas&&) noexcept;  ///< takes the drawing over; the moved-from canvas may only be destroyed or assigned to
+    Canvas& operator=(Canvas&&) noexcept;  ///< as the move constructor
 
     /// Width (output units).
     double width() const noexcept;
@@ -321,5 +335,7 @@ struct PlotSeries {
 /// ignoring the transform). Non-finite points are skipped; a flat series gets a small range.
 GRAPE_RENDER_API void draw_plot(Canvas& canvas, const Rect& area, std::span<const PlotSeries> series,
                                 std::string_view title = {});
+
+/// @}
 
 }  // namespace grape

@@ -34,6 +34,9 @@
 
 namespace grape {
 
+/// \addtogroup scene
+/// @{
+
 /// A curve with a name, listed in the scene's "curves" and referred to by animations.
 struct NamedCurve {
     std::string name;  ///< unique within the scene, not empty
@@ -126,7 +129,7 @@ enum class SceneTimelineChildKind { animation, timeline, label, gap, tween };
 
 /// One child of a SceneTimeline, in the order placed.
 struct SceneTimelineChild {
-    SceneTimelineChildKind kind = SceneTimelineChildKind::animation;
+    SceneTimelineChildKind kind = SceneTimelineChildKind::animation;  ///< what the child is
     std::string name{};   ///< the animation's, tween's, nested timeline's or label's name (unused for gaps)
     double gap = 0.0;     ///< gap: seconds it occupies, ≥ 0
     TimelinePosition at{};  ///< where it goes; the default: after everything placed so far
@@ -160,9 +163,10 @@ enum class SceneForceKind { gravity, drag, spring };
 
 /// A force generator of a simulation; the fields used depend on the kind.
 struct SceneForce {
-    SceneForceKind kind = SceneForceKind::gravity;
+    SceneForceKind kind = SceneForceKind::gravity;  ///< which force; says which fields are used
     Vec2 gravity;              ///< gravity: acceleration, world units/s²
     double drag = 0.0;         ///< drag: k ≥ 0 in F = −k·v
+    /// spring: the two particles' indices, a ≠ b.
     std::size_t a = 0, b = 0;  ///< spring: particle indices, a ≠ b
     double rest_length = 0.0;  ///< spring: L ≥ 0
     double stiffness = 0.0;    ///< spring: k ≥ 0
@@ -179,7 +183,8 @@ enum class SceneConstraintKind {
 
 /// A constraint of a simulation; the fields used depend on the kind.
 struct SceneConstraint {
-    SceneConstraintKind kind = SceneConstraintKind::distance;
+    SceneConstraintKind kind = SceneConstraintKind::distance;  ///< which constraint; says which fields are used
+    /// The particles' indices (b: distance only).
     std::size_t a = 0, b = 0;    ///< particle indices (b: distance only)
     double length = 0.0;         ///< distance, anchor: world units (> 0 for anchor)
     Vec2 point;                  ///< anchor, fixed_point
@@ -274,8 +279,8 @@ public:
     /// an animation, tween or timeline placed twice, a child repeating forever, a negative start.
     explicit SceneTiming(const Scene& scene);
 
-    std::size_t animation_count() const noexcept { return animations_.size(); }
-    std::size_t timeline_count() const noexcept { return timelines_.size(); }
+    std::size_t animation_count() const noexcept { return animations_.size(); }  ///< the scene's animations, in file order
+    std::size_t timeline_count() const noexcept { return timelines_.size(); }  ///< the scene's timelines, in file order
     /// The timeline driving animation i (−1: it plays on its own from scene time 0).
     std::ptrdiff_t driver(std::size_t animation) const noexcept { return animations_[animation].driver; }
     /// Timeline k's layout and placement.
@@ -294,7 +299,7 @@ public:
     /// (+inf when one repeats forever).
     double end_time() const noexcept;
 
-    std::size_t tween_count() const noexcept { return tweens_.size(); }
+    std::size_t tween_count() const noexcept { return tweens_.size(); }  ///< the scene's tweens, in file order
     /// The timeline driving tween i (−1: it plays on its own from scene time 0).
     std::ptrdiff_t tween_driver(std::size_t tween) const noexcept { return tweens_[tween].driver; }
     /// The time tween i plays at at scene time t (as animation_time).
@@ -368,5 +373,7 @@ GRAPE_SCENE_API ParticleSystem make_particle_system(const SceneSimulation& simul
 
 /// C(p) of a conic constraint: A·x² + B·x·y + C·y² + D·x + E·y + F.
 GRAPE_SCENE_API double conic_value(const SceneConstraint& constraint, Vec2 p) noexcept;
+
+/// @}
 
 }  // namespace grape

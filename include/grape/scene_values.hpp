@@ -24,6 +24,9 @@
 
 namespace grape {
 
+/// \addtogroup scene
+/// @{
+
 /// The value between a and b at curve progress u as the property mixes them: lerp for
 /// numbers and Vec2, AngleLerp (or its degrees form) for angles, grape::mix in the property's
 /// space for colours. a and b hold the property's type.
@@ -42,11 +45,12 @@ public:
     /// "by" on a colour, a bad duration, delay, repeat delay or time scale.
     SceneProperties(const Scene& scene, const SceneTiming& timing);
 
-    std::size_t property_count() const noexcept { return properties_.size(); }
+    std::size_t property_count() const noexcept { return properties_.size(); }  ///< the scene's properties, in file order
     /// Property p's value at scene time t.
     SceneValue value(std::size_t property, double t) const noexcept;
-    /// Tween i's start and end as resolved (from-current and relative ones at their entry).
+    /// Tween i's start as resolved (from-current and relative ones: the value at their entry).
     const SceneValue& tween_from(std::size_t tween) const noexcept { return tweens_[tween].from; }
+    /// Tween i's end as resolved (relative ones: their start plus the amount).
     const SceneValue& tween_to(std::size_t tween) const noexcept { return tweens_[tween].to; }
 
 private:
@@ -62,5 +66,7 @@ private:
     std::vector<double> entry_;                    // per tween
     SceneTiming timing_;
 };
+
+/// @}
 
 }  // namespace grape

@@ -73,6 +73,9 @@
 
 namespace grape {
 
+/// \addtogroup script
+/// @{
+
 class Script;
 
 /// A wait counts as ended when the clock is within this many seconds of its end: 60 ticks
@@ -104,16 +107,18 @@ concept ScriptHandle = requires(const T& handle) {
 /// header comment for exactness); gives the overshoot in seconds. seconds ≥ 0 (+inf: never);
 /// a negative or NaN wait throws grape::Error at the co_await.
 struct Wait {
-    double seconds = 0.0;
+    double seconds = 0.0;  ///< engine seconds to wait, ≥ 0 (+inf: never)
 };
+/// `co_await grape::wait(seconds)`: see Wait.
 inline Wait wait(double seconds) noexcept { return {seconds}; }
 
 /// Awaitable: resumes when `predicate()` returns true, checked at the co_await and then at
 /// the end of every tick.
 template <class F>
 struct Until {
-    F predicate;
+    F predicate;  ///< called with no arguments, returns true to resume
 };
+/// `co_await grape::until(predicate)`: see Until.
 template <class F>
 Until<std::decay_t<F>> until(F&& predicate) {
     return {std::forward<F>(predicate)};
@@ -232,10 +237,10 @@ GRAPE_ANIM_API bool script_link_alive(const std::shared_ptr<ScriptLink>& link) n
 /// suspended; `start(engine)` runs it. Move-only; destroying it cancels the script.
 class GRAPE_ANIM_API Script {
 public:
-    using promise_type = detail::ScriptPromise;
+    using promise_type = detail::ScriptPromise;  ///< what makes a function returning Script a coroutine
 
     Script() noexcept = default;
-    Script(Script&& other) noexcept;
+    Script(Script&& other) noexcept;  ///< takes other's script over; other is left empty
     /// Cancels the script held now (as the destructor does), then takes other's.
     Script& operator=(Script&& other) noexcept;
     ~Script();
@@ -247,7 +252,7 @@ public:
 
     /// Started (or running nested) and not yet ended.
     bool alive() const noexcept { return state() == detail::ScriptState::running; }
-    explicit operator bool() const noexcept { return alive(); }
+    explicit operator bool() const noexcept { return alive(); }  ///< alive()
     /// Ran to its end without an exception.
     bool done() const noexcept { return state() == detail::ScriptState::done; }
     /// Ended by an exception (see error()).
@@ -361,5 +366,7 @@ ScriptPromise::HandleAwaiter<std::remove_cvref_t<H>> ScriptPromise::await_transf
 }
 
 }  // namespace detail
+
+/// @}
 
 }  // namespace grape

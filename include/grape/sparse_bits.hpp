@@ -26,12 +26,15 @@
 
 namespace grape {
 
+/// \addtogroup bits
+/// @{
+
 /// A fixed-size bit vector for sparse or clustered bits; bit i lives in block i / 65,536.
 /// Element access is checked by assert in debug builds; combining two vectors throws
 /// grape::Error when their sizes differ.
 class GRAPE_BITS_API SparseBitVector {
 public:
-    using Word = std::uint64_t;
+    using Word = std::uint64_t;  ///< a word of a bitmap block, bit 0 lowest
     /// Bits per block.
     static constexpr std::size_t block_bits = 65536;
     /// Set bits a block may hold as an array; one more makes it a bitmap.
@@ -173,5 +176,7 @@ private:
     std::size_t n_;
     SparseBitVector bits_;
 };
+
+/// @}
 
 }  // namespace grape

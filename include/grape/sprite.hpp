@@ -32,6 +32,9 @@
 
 namespace grape {
 
+/// \addtogroup sprite
+/// @{
+
 /// Anything with frames: a tile sheet, a list of images, a 3-D model's key poses.
 class Playable {
 public:
@@ -84,10 +87,10 @@ public:
     /// A player with no Playable, only a frame counter of `frame_count` frames (read frame()).
     /// Throws grape::Error as above and when frame_count is 0.
     explicit SpritePlayer(std::size_t frame_count, const SpritePlayerDef& def = {});
-    SpritePlayer(const SpritePlayer& other);
-    SpritePlayer& operator=(const SpritePlayer& other);
-    SpritePlayer(SpritePlayer&&) noexcept;
-    SpritePlayer& operator=(SpritePlayer&&) noexcept;
+    SpritePlayer(const SpritePlayer& other);  ///< the same state, playable and callbacks (copied)
+    SpritePlayer& operator=(const SpritePlayer& other);  ///< as the copy constructor
+    SpritePlayer(SpritePlayer&&) noexcept;  ///< takes the state and callbacks; the source keeps its state and playable, without callbacks
+    SpritePlayer& operator=(SpritePlayer&&) noexcept;  ///< as the move constructor, after dropping this player's callbacks
     ~SpritePlayer();
 
     /// One step at the rate: the seed's algorithm (additions and comparisons only). Inline:
@@ -209,7 +212,7 @@ struct FrameRect {
     int y = 0;       ///< top edge, pixels
     int width = 0;   ///< pixels
     int height = 0;  ///< pixels
-    friend bool operator==(const FrameRect&, const FrameRect&) = default;
+    friend bool operator==(const FrameRect&, const FrameRect&) = default;  ///< all four fields equal
 };
 
 /// A frame's rectangle in normalized texture coordinates [0, 1] (for GPU renderers).
@@ -288,6 +291,8 @@ private:
     const TileSheet* sheet_;
     std::size_t frame_ = 0;
 };
+
+/// @}
 
 }  // namespace grape
 

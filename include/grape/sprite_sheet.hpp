@@ -23,6 +23,9 @@
 
 namespace grape {
 
+/// \addtogroup sprite
+/// @{
+
 /// How a clip runs through its frames: Aseprite's tag directions.
 enum class ClipDirection : std::uint8_t {
     forward,            ///< from, from+1, …, to
@@ -267,5 +270,7 @@ inline void ClipPlayer::advance(double dt) {
     }
     if (delta != 0.0) advance_across(delta);
 }
+
+/// @}
 
 }  // namespace grape

@@ -18,6 +18,9 @@
 
 namespace grape {
 
+/// \addtogroup scene
+/// @{
+
 /// How a sheet's JSON lists its frames: Aseprite's `--format json-hash` / `json-array`,
 /// TexturePacker's "JSON (Hash)" / "JSON (Array)".
 enum class SheetJsonLayout { hash, array };
@@ -38,5 +41,7 @@ GRAPE_SCENE_API std::filesystem::path sprite_sheet_image_path(const SpriteSheet&
 /// sheet of several sprites (docs/sprite-sheets.md) a clip whose name starts with a sprite's
 /// title is written counting that sprite's frames, and must lie within them (grape::Error).
 GRAPE_SCENE_API std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout);
+
+/// @}
 
 }  // namespace grape

@@ -35,6 +35,9 @@
 
 namespace grape {
 
+/// \addtogroup stagger
+/// @{
+
 /// Where the stagger begins.
 enum class StaggerFrom : std::uint8_t {
     start,   ///< the first item first
@@ -63,11 +66,11 @@ struct StaggerGrid {
 struct StaggerDef {
     std::optional<double> each{};  ///< seconds between neighbours (see the rule above); finite
     std::optional<double> amount{};  ///< seconds from the first start to the last; finite
-    StaggerFrom from = StaggerFrom::start;
+    StaggerFrom from = StaggerFrom::start;  ///< which item starts first
     std::size_t index = 0;         ///< the item that starts first, for from = index (< count)
     std::uint64_t seed = 0;        ///< the order for from = random
     StaggerGrid grid{};            ///< 2-D distances on a grid
-    StaggerAxis axis = StaggerAxis::both;
+    StaggerAxis axis = StaggerAxis::both;  ///< which distance orders a grid's items
     Curve curve{};                 ///< distributes the offsets over the spread (GSAP's stagger ease)
 };
 
@@ -90,5 +93,7 @@ auto stagger(std::size_t count, const StaggerDef& def, Make&& make)
     for (std::size_t i = 0; i < count; ++i) made.push_back(make(i, offsets[i]));
     return made;
 }
+
+/// @}
 
 }  // namespace grape

@@ -30,6 +30,9 @@
 
 namespace grape {
 
+/// \addtogroup value
+/// @{
+
 namespace detail {
 /// Where a linked target is now (nullptr: gone). The engine owns one per linked animation.
 struct TargetRef {
@@ -44,7 +47,9 @@ struct TargetRef {
 class AnimationLink {
 public:
     AnimationLink() noexcept = default;
+    /// A fresh token: the copy's animations are its own.
     AnimationLink(const AnimationLink&) noexcept {}
+    /// Keeps this token: assigning an object does not move its animations.
     AnimationLink& operator=(const AnimationLink&) noexcept { return *this; }
     ~AnimationLink() {
         if (alive_) *alive_ = false;
@@ -74,8 +79,8 @@ private:
 /// An object together with the token it owns: its animations stop when the token goes.
 template <class T>
 struct Linked {
-    T* object;
-    const AnimationLink* link;
+    T* object;  ///< the object written to
+    const AnimationLink* link;  ///< the token it owns; must live as long as the object
 };
 /// `object`, linked to `link` (usually a member of object).
 template <class T>
@@ -86,8 +91,8 @@ Linked<T> linked(T& object, const AnimationLink& link) noexcept {
 /// Element `index` of `vector`, found at every update (survives reallocation).
 template <class T, class Alloc>
 struct Element {
-    std::vector<T, Alloc>* vector;
-    std::size_t index;
+    std::vector<T, Alloc>* vector;  ///< the vector, which must outlive the animation
+    std::size_t index;  ///< the element; the animation stops once index ≥ size()
 };
 /// Binds element `index` of `vector` (the vector must outlive the animation).
 template <class T, class Alloc>
@@ -98,7 +103,7 @@ Element<T, Alloc> element(std::vector<T, Alloc>& vector, std::size_t index) noex
 /// An object found by a function at every update (nullptr: gone).
 template <class T>
 struct Accessor {
-    std::function<T*()> find;
+    std::function<T*()> find;  ///< returns the object, or nullptr once it is gone
 };
 /// Binds the object `find()` returns at each update.
 template <class T, class F>
@@ -190,5 +195,7 @@ concept wrapped_target = requires { typename TargetForm<Form>::object_type; } &&
                          !std::is_same_v<typename TargetForm<Form>::object_type, Form>;
 
 }  // namespace detail
+
+/// @}
 
 }  // namespace grape

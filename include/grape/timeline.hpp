@@ -69,6 +69,9 @@
 
 namespace grape {
 
+/// \addtogroup timeline
+/// @{
+
 /// How a timeline plays; fill with designated initializers: `{.repeat = -1, .yoyo = true}`.
 struct TimelineDef {
     double delay = 0.0;         ///< seconds (timeline time) before the first play; ≥ 0
@@ -87,20 +90,26 @@ public:
     /// text (">", "<+0.5", "+=1", "intro-0.25"; see parse_timeline_position).
     struct At {
         At() = default;
+        /// A position as it is.
         At(TimelinePosition p) : position(std::move(p)) {}                  // NOLINT: implicit on purpose
+        /// `seconds` from the timeline's start.
         At(double seconds) : position(timeline_position_at(seconds)) {}     // NOLINT
+        /// Whole seconds from the timeline's start.
         At(int seconds) : position(timeline_position_at(seconds)) {}        // NOLINT
+        /// Position text; throws grape::Error as parse_timeline_position does.
         At(const char* text) : position(parse_timeline_position(text)) {}   // NOLINT
+        /// Position text; throws grape::Error as parse_timeline_position does.
         At(std::string_view text) : position(parse_timeline_position(text)) {}  // NOLINT
+        /// Position text; throws grape::Error as parse_timeline_position does.
         At(const std::string& text) : position(parse_timeline_position(text)) {}  // NOLINT
-        TimelinePosition position;
+        TimelinePosition position;  ///< where the child goes
     };
 
     Timeline() noexcept = default;
 
     /// Not killed.
     bool alive() const noexcept;
-    explicit operator bool() const noexcept { return alive(); }
+    explicit operator bool() const noexcept { return alive(); }  ///< alive()
 
     /// Places an animation (alive and in no timeline, of finite length) at `at`; the timeline
     /// drives it from now on and kills it with itself. Throws grape::Error otherwise.
@@ -133,9 +142,9 @@ public:
     /// A label's time in the timeline (NaN if there is no such label).
     double label_time(std::string_view name) const noexcept;
 
-    bool paused() const noexcept;
-    void pause() const noexcept;
-    void resume() const noexcept;
+    bool paused() const noexcept;  ///< alive and held by pause()
+    void pause() const noexcept;  ///< holds the timeline, its children with it, where it is
+    void resume() const noexcept;  ///< lets a paused timeline play on
     /// Plays backwards from where it is (time runs down to the start, which fires
     /// on_reverse_complete and stays there).
     void reverse() const noexcept;
@@ -145,7 +154,7 @@ public:
     bool reversed() const noexcept;
     /// Timeline seconds per engine second (≥ 0 and finite; others ignored).
     void set_time_scale(double scale) const noexcept;
-    double time_scale() const noexcept;
+    double time_scale() const noexcept;  ///< timeline seconds per engine second
     /// Jumps to `seconds` since the first play began (as time(); clamped to the delay's start
     /// and the last play's end). Fires nothing unless `fire_events`: then the callbacks, child
     /// and timeline events it crosses fire in order, as a tick to there would fire them.
@@ -156,12 +165,18 @@ public:
     /// Kills the timeline, its nested timelines and its animations (no events).
     void kill() const noexcept;
 
+    /// Calls `handler` when the first play begins (after the delay).
     void on_start(std::function<void()> handler) const;
+    /// Calls `handler` after every change of state (each tick that moves it, each seek).
     void on_update(std::function<void()> handler) const;
+    /// Calls `handler(play)` each time a new play starts (play = 1, 2, ...).
     void on_loop(std::function<void(int play)> handler) const;
+    /// Calls `handler` when the last play ends.
     void on_complete(std::function<void()> handler) const;
+    /// Calls `handler` when the timeline comes back to its start running backwards.
     void on_reverse_complete(std::function<void()> handler) const;
 
+    /// The same timeline (the same slot and generation in the same engine).
     friend bool operator==(const Timeline&, const Timeline&) noexcept = default;
 
 private:
@@ -173,5 +188,7 @@ private:
     std::uint32_t slot_ = 0;
     std::uint32_t generation_ = 0;
 };
+
+/// @}
 
 }  // namespace grape

@@ -21,8 +21,12 @@
 
 namespace grape {
 
+/// \addtogroup timeline
+/// @{
+
 /// Where a child goes in a timeline (GSAP's position parameter).
 struct TimelinePosition {
+    /// What a position counts from (see `anchor`).
     enum class Anchor { start, end, previous_end, previous_start, label };
     Anchor anchor = Anchor::end;  ///< start: `offset` seconds from the timeline's start (a number);
                                   ///< end: the end of everything placed so far ("+=0.5", "-=0.2",
@@ -48,9 +52,10 @@ GRAPE_ANIM_API std::string to_string(const TimelinePosition& position);
 /// timeline's total length in the parent's seconds, finite and ≥ 0), a gap (occupies
 /// `duration` seconds, plays nothing), a label (a point, `label` set) or a callback (a point).
 struct TimelineEntry {
+    /// What an entry is: a child with a duration, a gap, a label or a callback.
     enum class Kind { child, gap, label, callback };
-    Kind kind = Kind::child;
-    TimelinePosition at{};
+    Kind kind = Kind::child;  ///< what the entry is
+    TimelinePosition at{};  ///< where it goes
     double duration = 0.0;  ///< seconds in the parent's time; ignored for labels and callbacks
     std::string label{};    ///< Kind::label: its name
 };
@@ -75,5 +80,7 @@ GRAPE_ANIM_API TimelineLayout layout_timeline(std::span<const TimelineEntry> ent
 /// Before the first play: 0 (or `duration` when reversed); during a repeat delay and after
 /// the last play: the end of the play just finished (0 for a backward play). 0 for duration 0.
 GRAPE_ANIM_API double timeline_local_time(const AnimationDef& def, double duration, double t) noexcept;
+
+/// @}
 
 }  // namespace grape

@@ -24,6 +24,9 @@
 
 namespace grape {
 
+/// \addtogroup value
+/// @{
+
 namespace detail {
 // Unqualified, so both grape's overloads and V's own (by ADL) are found.
 template <class V>
@@ -42,6 +45,7 @@ V call_lerp(const V& a, const V& b, double t) {
 /// once (colours convert them to linear light once, not at every update).
 template <class V>
 struct Interpolate {
+    /// The unqualified `lerp(a, b, t)`: one of grape's overloads or V's own, found beside V.
     static V lerp(const V& a, const V& b, double t)
         requires detail::has_lerp<V>
     {
@@ -57,10 +61,12 @@ concept Interpolatable = std::copyable<V> && requires(const V& a, const V& b, do
 
 /// The default interpolator of typed animations: Interpolate<V>::lerp.
 struct Lerp {
+    /// Interpolate<V>::lerp(a, b, t).
     template <Interpolatable V>
     V operator()(const V& a, const V& b, double t) const {
         return Interpolate<V>::lerp(a, b, t);
     }
+    /// Interpolate<V>::prepare(a, b), for the types that have it.
     template <Interpolatable V>
         requires requires(const V& a) { Interpolate<V>::prepare(a, a); }
     auto prepare(const V& a, const V& b) const {
@@ -74,7 +80,8 @@ struct Lerp {
 /// turn plus whole turns goes by +π or −π as std::remainder rounds it (b − a itself when
 /// |b − a| = π). Not shortest: plain lerp, every turn kept.
 struct AngleLerp {
-    bool shortest = true;
+    bool shortest = true;  ///< take the shortest turn; false: plain lerp
+    /// The angle at t (t = 0: a; t = 1: b, or b's direction when shortest).
     double operator()(double a, double b, double t) const noexcept {
         if (!shortest) return grape::lerp(a, b, t);
         const double turn = b - a;
@@ -93,11 +100,12 @@ enum class ValueMode {
 /// The values of a typed animation; make one with from_to, to or by.
 template <class V>
 struct Tween {
-    V from{};
+    V from{};  ///< the start (ValueMode::from_to only)
     V to{};  ///< the end, or the amount for ValueMode::relative
-    ValueMode mode = ValueMode::from_to;
+    ValueMode mode = ValueMode::from_to;  ///< how start and end are found
 
     Tween() = default;
+    /// From `f` to `t` in mode `m`.
     Tween(V f, V t, ValueMode m) : from(std::move(f)), to(std::move(t)), mode(m) {}
     /// From a Tween of another type (grape::to(1) for a double member).
     template <class U>
@@ -200,5 +208,7 @@ template <class V>
 Tween<V> by(V amount) {
     return Tween<V>(V{}, std::move(amount), ValueMode::relative);
 }
+
+/// @}
 
 }  // namespace grape
