@@ -8,6 +8,7 @@
 #include <grape/vec3.hpp>
 
 #include "error_text.hpp"
+#include "count_allocations.hpp"
 #include "seeds.hpp"
 
 #include <gtest/gtest.h>
@@ -408,4 +409,103 @@ TEST(Path3, BadInputNamesTheArgument) {
     expect_error([&] { RotationMinimizingFrames(line, {2, 0, 0}); }, {"RotationMinimizingFrames", "up", "parallel"});
     expect_error([&] { RotationMinimizingFrames(line, {0, nan, 0}); }, {"up", "not finite"});
     expect_error([&] { RotationMinimizingFrames(line, {0, 1, 0}, 0.0); }, {"tolerance"});
+}
+
+// An oracle written apart: 4000 samples, a golden-section search on the bracket around each
+// sample that is a local minimum, and the ends. closest_point must match it within 1e-12 of
+// (length + distance) (its own gap is ~1e-13 of that) and never lose to it.
+namespace {
+double oracle_distance(const Path3& p, Vec3 q) {
+    const int n = 4000;
+    std::vector<double> d(n + 1);
+    for (int i = 0; i <= n; ++i) d[static_cast<std::size_t>(i)] = distance(p.point(static_cast<double>(i) / n), q);
+    double best = std::min(d.front(), d.back());
+    for (int i = 1; i < n; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        if (!(d[k] <= d[k - 1] && d[k] <= d[k + 1])) continue;
+        double a = (i - 1.0) / n, b = (i + 1.0) / n;
+        const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+        for (int it = 0; it < 80; ++it) {
+            const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+            if (distance(p.point(x1), q) < distance(p.point(x2), q)) b = x2; else a = x1;
+        }
+        best = std::min(best, distance(p.point(0.5 * (a + b)), q));
+    }
+    return best;
+}
+}  // namespace
+
+TEST(Path3, ClosestPointIsGlobal) {
+    std::mt19937_64 rng(grape::testing::test_seed(5));
+    const Vec3 pts[] = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0.5}, {0, 1, 0.5}, {0, 3, -1}};
+    const std::vector<Path3> paths = {
+        Path3::cubic_bezier({0, 0, 0}, {2, 0, 0}, {2, 1, 0.5}, {0, 1, 0.5}),  // the hairpin
+        Path3::cubic_bezier({0, 0, 0}, {5, 0, 0}, {0, 5, 3}, {5, 5, 3}),      // the twist
+        Path3::catmull_rom(pts, CatmullRom::centripetal, true),
+        test_helix(),
+        Path3::complex_by_length({Path3::line({2, 0, 0}, {1, 0, 0}), Path3::quadratic_bezier({1, 0, 0}, {0, 0, 1}, {0, 2, 0})}),
+    };
+    double worst = 0.0, worst_gap = 0.0;
+    const int queries = grape::testing::fast_build ? 200 : 20;
+    for (const Path3& p : paths) {
+        for (int k = 0; k < queries; ++k) {
+            const Vec3 q = random_point(rng, 4.0);
+            const Closest3 c = closest_point(p, q);
+            const double scale = p.length() + c.distance;
+            const double o = oracle_distance(p, q);
+            worst = std::max(worst, (c.distance - o) / scale);
+            worst_gap = std::max(worst_gap, c.gap / scale);
+            EXPECT_LE(c.distance, o + 1e-12 * scale) << to_string(p.kind()) << " query " << q.x << ' ' << q.y << ' ' << q.z;
+            EXPECT_LE(c.gap, 1e-12 * scale);
+            EXPECT_EQ(c.point, p.point(c.u));
+        }
+    }
+    // On the helix's axis every turn is at distance R: the nearest is level with the query.
+    const Path3 h = test_helix();
+    const double top = two_pi * c * turns;
+    const Closest3 axis = closest_point(h, {0, 0, 0.4 * top});
+    EXPECT_NEAR(axis.distance, R, 1e-12);
+    EXPECT_NEAR(axis.u, 0.4, 1e-7);  // distance is flat to second order in u: √(1e-16) resolution
+    std::printf("closest point: worst excess over the oracle %.2g, worst gap %.2g (relative to length + distance)\n",
+                worst, worst_gap);
+}
+
+// At the centre of a circle (a helix with no rise) every point is nearest: nothing can be
+// pruned, the work is capped and the second pass divides the circle evenly into 2¹⁴ leaves:
+// each bound's slack is R·ω²·h²/8 ≈ 3.7e-8 (R = 2, ω = 2π, h = 2⁻¹⁴), so the gap is ≤ 1e-7.
+TEST(Path3, ClosestPointEquidistant) {
+    const Path3 circle = Path3::helix({.radius = 2.0, .turns = 1.0});
+    const Closest3 c = closest_point(circle, {0, 0, 0});
+    EXPECT_NEAR(c.distance, 2.0, 1e-14);
+    EXPECT_LE(c.gap, 1e-7);
+    std::printf("closest point at a circle's centre: gap %.2g\n", c.gap);
+}
+
+// Evaluation, lookup of frames and the closest point allocate nothing.
+TEST(Path3, EvaluationDoesNotAllocate) {
+    const Vec3 pts[] = {{0, 0, 0}, {1, 2, 0.5}, {3, 1, -1}, {4, 3, 2}};
+    const Path3 p = Path3::complex_by_length({Path3::catmull_rom(pts), test_helix()});
+    const RotationMinimizingFrames rmf(p, {0, 0, 1});
+    const long before = g_allocations.load();
+    double sink = 0.0;
+    for (int k = 0; k <= 100; ++k) {
+        const double u = k / 100.0;
+        sink += p.point(u).x + p.d1(u).y + p.d2(u).z + p.d3(u).x + p.frenet(u).torsion + p.length_at(u);
+        sink += p.u_at_length(u * p.length()) + rmf.frame(u).normal.x + closest_point(p, {u, 1, 2}).distance;
+    }
+    EXPECT_EQ(g_allocations.load(), before);
+    EXPECT_TRUE(std::isfinite(sink));
+}
+
+// The knots follow the tolerance: a looser one needs fewer and still meets it.
+TEST(Path3, RmfToleranceSetsTheKnots) {
+    const Path3 p = test_helix();
+    const double tau = c / (R * R + c * c), L = p.length();
+    const RotationMinimizingFrames loose(p, {-1, 0, 0}, 1e-6), tight(p, {-1, 0, 0});
+    EXPECT_LT(loose.knot_count(), tight.knot_count());
+    const Frame3 f = loose.frame(1.0);
+    const Frenet3 fr = p.frenet(1.0);
+    const double phi = std::atan2(dot(f.normal, fr.binormal), dot(f.normal, fr.normal));
+    EXPECT_LE(std::abs(std::remainder(phi + tau * L, two_pi)), 1e-6);
+    std::printf("RMF knots on the 3-turn helix: %zu at 1e-6 rad, %zu at 1e-9 rad\n", loose.knot_count(), tight.knot_count());
 }

@@ -24,6 +24,8 @@ public:
     virtual Vec3 d2(double u) const noexcept = 0;
     virtual Vec3 d3(double u) const noexcept = 0;
     virtual double length_at(double u) const noexcept;
+    // An upper bound on |d2| over [a, b], a sub-interval of one piece (between two breaks).
+    virtual double d2_bound(double a, double b) const noexcept = 0;
     virtual double u_at_length(double s) const noexcept;
 
     double length() const noexcept { return length_; }

@@ -72,6 +72,18 @@ public:
         return s.degree < 3 ? Vec3{} : s.c * n_ * n_ * n_;
     }
 
+    // d2 of a piece is a Bézier of degree ≤ 1: its sup over [a, b] is at an end (exact).
+    double d2_bound(double a, double b) const noexcept override {
+        double ta, tb;
+        const BezierPiece& s = at(0.5 * (a + b), ta);
+        const double i = static_cast<double>(&s - pieces_.data());
+        ta = std::clamp(a * n_ - i, 0.0, 1.0);
+        tb = std::clamp(b * n_ - i, 0.0, 1.0);
+        if (s.degree < 2) return 0.0;
+        const double m = std::max(grape::length(casteljau(s.w, s.degree - 1, ta)), grape::length(casteljau(s.w, s.degree - 1, tb)));
+        return m * n_ * n_ * (1.0 + 1e-12);  // the margin covers the rounding of the ends' values
+    }
+
 private:
     void interior_breaks(std::vector<double>& out) const override {
         for (std::size_t i = 1; i < pieces_.size(); ++i) out.push_back(static_cast<double>(i) / n_);
@@ -127,6 +139,10 @@ public:
         return (e2_ * std::cos(th) - e1_ * std::sin(th)) * (-spec_.radius * omega_ * omega_ * omega_);
     }
     double length_at(double u) const noexcept override { return std::clamp(u, 0.0, 1.0) * length_; }
+    // |d2| = R·ω² everywhere.
+    double d2_bound(double, double) const noexcept override {
+        return spec_.radius * omega_ * omega_ * (1.0 + 1e-12);
+    }
     double u_at_length(double s) const noexcept override {
         return length_ > 0.0 ? std::clamp(s / length_, 0.0, 1.0) : 0.0;
     }
@@ -180,6 +196,10 @@ public:
         if (u >= 1.0) return length_;
         const Piece& p = at(u);
         return p.s0 + p.node->length_at(local(u, p));
+    }
+    double d2_bound(double a, double b) const noexcept override {
+        const Piece& p = at(0.5 * (a + b));
+        return p.node->d2_bound(local(a, p), local(b, p)) * p.inv_width * p.inv_width;
     }
     double u_at_length(double s) const noexcept override {
         if (!(s > 0.0) || !(length_ > 0.0)) return 0.0;
