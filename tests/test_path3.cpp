@@ -96,8 +96,12 @@ TEST(Vec3, Operators) {
     static_assert(dot(Vec3{1, 2, 3}, Vec3{4, 5, 6}) == 32.0);
     static_assert(Vec3{1, 2, 3} + Vec3{1, 1, 1} == Vec3{2, 3, 4} && -Vec3{1, 2, 3} == Vec3{-1, -2, -3});
     static_assert(lerp(Vec3{1, 2, 3}, Vec3{5, 6, 7}, 1.0) == Vec3{5, 6, 7});
-    EXPECT_EQ(length(Vec3{2, 3, 6}), 7.0);  // hypot is exact for a Pythagorean quadruple
-    EXPECT_EQ(length(Vec3{3e200, 4e200, 12e200}), 13e200);  // no overflow
+    EXPECT_EQ(length(Vec3{2, 3, 6}), 7.0);  // exact squares, an exact root
+    // Scaled where the squares would overflow or vanish: within 2 ulp of the true 13·10^±200.
+    EXPECT_NEAR(length(Vec3{3e200, 4e200, 12e200}), 13e200, 2 * eps * 13e200);
+    EXPECT_NEAR(length(Vec3{3e-200, -4e-200, 12e-200}), 13e-200, 2 * eps * 13e-200);
+    EXPECT_EQ(length(Vec3{0, -std::numeric_limits<double>::infinity(), 1}), std::numeric_limits<double>::infinity());
+    EXPECT_TRUE(std::isnan(length(Vec3{0, std::numeric_limits<double>::quiet_NaN(), 1})));
     EXPECT_EQ(normalized(Vec3{}), Vec3{});
     EXPECT_FALSE(is_finite(Vec3{0, std::numeric_limits<double>::quiet_NaN(), 0}));
     for (const Vec3 a : {x, y, z, normalized(Vec3{1, 2, 3}), normalized(Vec3{-3, 0.1, 0.2})}) {

@@ -1,6 +1,7 @@
 // grape — Vec3: a 3-D vector or point, with the same operators and helpers as Vec2.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace grape {
@@ -44,8 +45,17 @@ constexpr Vec3 cross(Vec3 a, Vec3 b) noexcept {
 }
 /// |a|², exact for exact inputs (no square root).
 constexpr double length_squared(Vec3 a) noexcept { return dot(a, a); }
-/// |a|, without overflow or underflow for huge or tiny components.
-inline double length(Vec3 a) noexcept { return std::hypot(a.x, a.y, a.z); }
+/// |a|, without overflow or underflow for huge or tiny components. (Not the three-argument
+/// std::hypot: some standard libraries compute it without scaling, and it overflows.)
+inline double length(Vec3 a) noexcept {
+    const double s = dot(a, a);
+    if (s >= 0x1p-960 && s <= 0x1p960) return std::sqrt(s);  // no square lost or overflowed
+    if (std::isnan(s)) return s;
+    const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+    if (m == 0.0 || std::isinf(m)) return m;
+    const Vec3 b{a.x / m, a.y / m, a.z / m};
+    return m * std::sqrt(dot(b, b));
+}
 /// |a − b|.
 inline double distance(Vec3 a, Vec3 b) noexcept { return length(a - b); }
 /// a / |a|; the zero vector stays zero (no NaN).

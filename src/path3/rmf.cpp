@@ -73,8 +73,10 @@ RotationMinimizingFrames::RotationMinimizingFrames(Path3 path, Vec3 up, double t
             knots_.push_back({a, r});
         }
         double u = a;
-        double h = (b - a) / 8.0;
-        const double h_min = (b - a) * 1e-12;
+        // The least step keeps u moving (u + h_min > u for u ≤ 1); a piece narrower than it
+        // is crossed in one step.
+        const double h_min = std::min(b - a, std::max((b - a) * 1e-12, 16.0 * std::numeric_limits<double>::epsilon()));
+        double h = std::max((b - a) / 8.0, h_min);
         while (u < b) {
             const double u1 = b - u <= h * 1.000001 ? b : u + h;
             // At the end of a piece, the tangent is its own (from the left).
@@ -86,7 +88,7 @@ RotationMinimizingFrames::RotationMinimizingFrames(Path3 path, Vec3 up, double t
             const double chord = distance(path_.point(u), path_.point(u1));
             const double allowed = total > 0.0 ? tolerance * chord / total : tolerance;
             const double taken = u1 - u;
-            if (error <= allowed || taken <= h_min) {
+            if (error <= allowed || h <= h_min) {
                 // Keep the two half steps (about 16 times more accurate than the estimate).
                 knots_.push_back({um, step(u, r, um)});
                 if (u1 < b) knots_.push_back({u1, half});
