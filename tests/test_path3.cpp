@@ -18,6 +18,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace grape;
@@ -512,4 +513,37 @@ TEST(Path3, RmfToleranceSetsTheKnots) {
     const double phi = std::atan2(dot(f.normal, fr.binormal), dot(f.normal, fr.normal));
     EXPECT_LE(std::abs(std::remainder(phi + tau * L, two_pi)), 1e-6);
     std::printf("RMF knots on the 3-turn helix: %zu at 1e-6 rad, %zu at 1e-9 rad\n", loose.knot_count(), tight.knot_count());
+}
+
+// A long random spline (near-stops and sharp turns among 100 centripetal pieces) builds a
+// bounded table whose frames stay orthonormal and perpendicular to the tangent; the error of
+// the whole table is checked on the helix above, here its work and its invariants.
+TEST(Path3, RmfOnALongRandomSplineIsBounded) {
+    std::mt19937_64 rng(grape::testing::test_seed(17));
+    std::uniform_real_distribution<double> coord(-10.0, 10.0);
+    std::vector<Vec3> points(100);
+    for (Vec3& p : points) p = {coord(rng), coord(rng), coord(rng)};
+    const Path3 spline = Path3::catmull_rom(points, CatmullRom::centripetal);
+    const RotationMinimizingFrames frames(spline, {0, 0, 1});
+    EXPECT_LE(frames.knot_count(), RotationMinimizingFrames::max_knots);
+    double worst = 0.0;
+    for (int i = 0; i <= 10000; ++i) {
+        const Frame3 f = frames.frame(i / 10000.0);
+        worst = std::max({worst, std::abs(length(f.normal) - 1.0), std::abs(dot(f.normal, f.tangent)),
+                          std::abs(length(f.binormal) - 1.0)});
+    }
+    EXPECT_LE(worst, 1e-14);  // a few roundings of unit vectors
+    std::printf("RMF on a 100-point random centripetal spline: %zu knots\n", frames.knot_count());
+}
+
+// A cubic with a cusp (the tangent reverses where the speed is 0): the frame is undefined
+// there; the build either ends with a bounded table or refuses the path, never runs away.
+TEST(Path3, RmfAtACuspIsBoundedOrRefused) {
+    const Path3 cusp = Path3::cubic_bezier({0, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 0});
+    try {
+        const RotationMinimizingFrames frames(cusp, {0, 0, 1});
+        EXPECT_LE(frames.knot_count(), RotationMinimizingFrames::max_knots);
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("knots"), std::string::npos) << e.what();
+    }
 }

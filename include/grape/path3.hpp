@@ -138,16 +138,22 @@ struct Frame3 {
 /// Rotation-minimizing frames of one path, built once: a table of frames at knots placed by
 /// the error of the double-reflection method (Wang, Jüttler, Zheng, Liu, ACM TOG 27(1), 2008),
 /// refined until each step's estimated roll error, against two half steps, is within its
-/// share (by chord length) of `tolerance` radians for the whole path; every break of the path
-/// is a knot. At a break where the tangent jumps the frame turns by the least rotation that
+/// share of `tolerance` radians for the whole path (half by chord length, half by u, so that
+/// a near-stop, where chords shrink and the tangent still turns, does not starve the steps);
+/// every break of the path is a knot. The table holds at most `max_knots` knots: a path that
+/// needs more (a cusp, where the frame is not defined) is refused with grape::Error. At a break where the tangent jumps the frame turns by the least rotation that
 /// takes the tangent before to the tangent after, so the frame stays continuous wherever the
 /// path is C¹. A closed path's frame need not close up (its end differs by the holonomy).
 class GRAPE_PATH_API RotationMinimizingFrames {
 public:
     /// `up`: the normal at u = 0 is up without its part along the tangent there; it must be
     /// finite and not parallel to that tangent. `tolerance`: radians over the whole path, in
-    /// [1e-13, 0.1].
+    /// [1e-13, 0.1]. Throws grape::Error for bad arguments and for a path that needs more than
+    /// `max_knots` knots at that tolerance.
     RotationMinimizingFrames(Path3 path, Vec3 up, double tolerance = 1e-9);
+
+    /// The most knots a table holds (2²⁰: 32 MiB), bounding the work of a build.
+    static constexpr std::size_t max_knots = std::size_t{1} << 20;
 
     /// The frame at u (clamped to [0, 1]): one double-reflection step from the knot at or
     /// before u. Orthonormal within a few ulp.

@@ -86,17 +86,27 @@ RotationMinimizingFrames::RotationMinimizingFrames(Path3 path, Vec3 up, double t
             const Vec3 half = step(um, step(u, r, um), e1);
             const double error = length(one - half);  // ≈ the single step's roll error, radians
             const double chord = distance(path_.point(u), path_.point(u1));
-            const double allowed = total > 0.0 ? tolerance * chord / total : tolerance;
             const double taken = u1 - u;
-            if (error <= allowed || h <= h_min) {
+            // Half by chord, half by u: the shares of all steps sum to at most `tolerance`.
+            const double allowed = 0.5 * tolerance * (total > 0.0 ? std::max(chord / total, taken) : 1.0);
+            // An estimate at rounding level (a few ulps of a unit vector) cannot be refined away:
+            // a smaller step would only add roundings.
+            constexpr double rounding = 64.0 * std::numeric_limits<double>::epsilon();
+            const double within = std::max(allowed, rounding);
+            if (error <= within || h <= h_min) {
                 // Keep the two half steps (about 16 times more accurate than the estimate).
+                if (knots_.size() + 3 > max_knots) {
+                    throw Error(where + "path: needs more than " + std::to_string(max_knots) + " knots for a tolerance of " +
+                                detail::number_text(tolerance) + " rad near u = " + detail::number_text(u) +
+                                " (a cusp, where the frame is undefined?)");
+                }
                 knots_.push_back({um, step(u, r, um)});
                 if (u1 < b) knots_.push_back({u1, half});
                 r = half;
                 u = u1;
             }
             // Local error ∝ h⁵: aim at 0.9 of the allowance, growing at most twice.
-            const double grow = error > 0.0 ? 0.9 * std::pow(allowed / error, 0.2) : 2.0;
+            const double grow = error > 0.0 ? 0.9 * std::pow(within / error, 0.2) : 2.0;
             h = std::max(h_min, taken * std::clamp(grow, 0.2, 2.0));
         }
         if (piece + 2 == breaks.size()) knots_.push_back({1.0, r});
