@@ -1,0 +1,58 @@
+// grape — the nodes behind Path3 handles: what every kind shares (breaks, arc length).
+#pragma once
+
+#include <grape/path3.hpp>
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace grape::detail {
+
+class Path3Node {
+public:
+    explicit Path3Node(Path3Kind kind) noexcept : kind_(kind) {}
+    virtual ~Path3Node() = default;
+    Path3Node(const Path3Node&) = delete;
+    Path3Node& operator=(const Path3Node&) = delete;
+
+    Path3Kind kind() const noexcept { return kind_; }
+    // u in [0, 1].
+    virtual Vec3 point(double u) const noexcept = 0;
+    virtual Vec3 d1(double u) const noexcept = 0;
+    virtual Vec3 d2(double u) const noexcept = 0;
+    virtual Vec3 d3(double u) const noexcept = 0;
+    virtual double length_at(double u) const noexcept;
+    // An upper bound on |d2| over [a, b], a sub-interval of one piece (between two breaks).
+    virtual double d2_bound(double a, double b) const noexcept = 0;
+    virtual double u_at_length(double s) const noexcept;
+
+    double length() const noexcept { return length_; }
+    const std::vector<double>& breaks() const noexcept { return breaks_; }
+
+protected:
+    // Interior u where derivatives may jump, increasing, inside (0, 1).
+    virtual void interior_breaks(std::vector<double>& out) const;
+    // Kinds with a closed-form length set it in length_ themselves and return true.
+    virtual bool closed_form_length() { return false; }
+    // Called last by every constructor: breaks, the per-piece lengths.
+    void finish();
+
+    double length_ = 0.0;
+
+private:
+    double integrate_speed(double a, double b) const noexcept;
+
+    Path3Kind kind_;
+    std::vector<double> breaks_;
+    std::vector<double> cumulative_;  // length at each break
+    double quad_tolerance_ = 0.0;
+};
+
+struct Path3Access {
+    static const Path3Node& node(const Path3& p) noexcept { return *p.node_; }
+    static Path3 make(std::shared_ptr<const Path3Node> node) noexcept { return Path3(std::move(node)); }
+};
+
+}  // namespace grape::detail

@@ -1,0 +1,420 @@
+// grape — the 3-D path kinds (Bézier pieces, helix, complex) and the Path3 handle.
+#include "node3.hpp"
+
+#include <grape/error.hpp>
+#include <grape/math.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace grape {
+namespace detail {
+namespace {
+
+// Points of a Bézier of degree k ≤ 3 and of its differences, so that every derivative is a
+// Bézier of its own evaluated by de Casteljau (exact at the piece's ends, and a line's d2 is
+// exactly zero).
+struct BezierPiece {
+    int degree = 1;
+    std::array<Vec3, 4> p{};   // control points
+    std::array<Vec3, 3> q{};   // first derivative's control points (degree − 1)
+    std::array<Vec3, 2> w{};   // second derivative's
+    Vec3 c{};                  // third derivative (constant)
+};
+
+template <std::size_t N>
+Vec3 casteljau(const std::array<Vec3, N>& pts, int count, double t) noexcept {
+    std::array<Vec3, N> b = pts;
+    for (int level = count - 1; level > 0; --level) {
+        for (int i = 0; i < level; ++i) b[static_cast<std::size_t>(i)] = lerp(b[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(i) + 1], t);
+    }
+    return b[0];
+}
+
+BezierPiece make_piece(std::span<const Vec3> pts) {
+    BezierPiece s;
+    s.degree = static_cast<int>(pts.size()) - 1;
+    const double k = s.degree;
+    for (std::size_t i = 0; i < pts.size(); ++i) s.p[i] = pts[i];
+    for (int i = 0; i < s.degree; ++i) s.q[static_cast<std::size_t>(i)] = k * (pts[static_cast<std::size_t>(i) + 1] - pts[static_cast<std::size_t>(i)]);
+    for (int i = 0; i + 1 < s.degree; ++i) s.w[static_cast<std::size_t>(i)] = (k - 1.0) * (s.q[static_cast<std::size_t>(i) + 1] - s.q[static_cast<std::size_t>(i)]);
+    if (s.degree == 3) s.c = (k - 2.0) * (s.w[1] - s.w[0]);
+    return s;
+}
+
+// Bézier pieces of one degree, each over an equal share of u.
+class BezierNode final : public Path3Node {
+public:
+    BezierNode(Path3Kind kind, std::vector<BezierPiece> pieces) : Path3Node(kind), pieces_(std::move(pieces)) {
+        n_ = static_cast<double>(pieces_.size());
+        finish();
+    }
+    Vec3 point(double u) const noexcept override {
+        double t;
+        const BezierPiece& s = at(u, t);
+        return casteljau(s.p, s.degree + 1, t);
+    }
+    Vec3 d1(double u) const noexcept override {
+        double t;
+        const BezierPiece& s = at(u, t);
+        return casteljau(s.q, s.degree, t) * n_;
+    }
+    Vec3 d2(double u) const noexcept override {
+        double t;
+        const BezierPiece& s = at(u, t);
+        return s.degree < 2 ? Vec3{} : casteljau(s.w, s.degree - 1, t) * n_ * n_;
+    }
+    Vec3 d3(double u) const noexcept override {
+        double t;
+        const BezierPiece& s = at(u, t);
+        return s.degree < 3 ? Vec3{} : s.c * n_ * n_ * n_;
+    }
+
+    // d2 of a piece is a Bézier of degree ≤ 1: its sup over [a, b] is at an end (exact).
+    double d2_bound(double a, double b) const noexcept override {
+        double ta, tb;
+        const BezierPiece& s = at(0.5 * (a + b), ta);
+        const double i = static_cast<double>(&s - pieces_.data());
+        ta = std::clamp(a * n_ - i, 0.0, 1.0);
+        tb = std::clamp(b * n_ - i, 0.0, 1.0);
+        if (s.degree < 2) return 0.0;
+        const double m = std::max(grape::length(casteljau(s.w, s.degree - 1, ta)), grape::length(casteljau(s.w, s.degree - 1, tb)));
+        return m * n_ * n_ * (1.0 + 1e-12);  // the margin covers the rounding of the ends' values
+    }
+
+private:
+    void interior_breaks(std::vector<double>& out) const override {
+        for (std::size_t i = 1; i < pieces_.size(); ++i) out.push_back(static_cast<double>(i) / n_);
+    }
+    // The piece holding u (the later one at a shared end) and the local t in [0, 1].
+    const BezierPiece& at(double u, double& t) const noexcept {
+        const double x = std::clamp(u, 0.0, 1.0) * n_;
+        const double i = std::min(std::floor(x), n_ - 1.0);
+        t = x - i;
+        return pieces_[static_cast<std::size_t>(i)];
+    }
+    std::vector<BezierPiece> pieces_;
+    double n_ = 1.0;
+};
+
+class HelixNode final : public Path3Node {
+public:
+    explicit HelixNode(const HelixSpec& h) : Path3Node(Path3Kind::helix), spec_(h) {
+        auto bad = [](const std::string& what) { return Error("Path3::helix: " + what); };
+        if (!is_finite(h.center)) throw bad("center: not finite");
+        if (!is_finite(h.axis)) throw bad("axis: not finite");
+        if (!is_finite(h.start)) throw bad("start: not finite");
+        if (!(std::isfinite(h.radius) && h.radius > 0.0)) throw bad("radius: must be finite and > 0, got " + number_text(h.radius));
+        if (!std::isfinite(h.rise)) throw bad("rise: not finite");
+        if (!(std::isfinite(h.turns) && h.turns > 0.0)) throw bad("turns: must be finite and > 0, got " + number_text(h.turns));
+        a_ = normalized(h.axis);
+        if (!(grape::length(a_) > 0.5)) throw bad("axis: zero vector");
+        const Vec3 s = normalized(h.start);
+        if (!(grape::length(s) > 0.5)) throw bad("start: zero vector");
+        const Vec3 across = s - a_ * dot(s, a_);
+        // A start within ~1e-8 rad of the axis leaves no reliable direction.
+        if (!(grape::length(across) > 1e-8)) throw bad("start: parallel to the axis");
+        e1_ = normalized(across);
+        e2_ = cross(a_, e1_);
+        omega_ = 2.0 * pi * h.turns;
+        climb_ = h.rise * h.turns;
+        finish();
+    }
+    Vec3 point(double u) const noexcept override {
+        const double th = omega_ * u;
+        return spec_.center + (e1_ * std::cos(th) + e2_ * std::sin(th)) * spec_.radius + a_ * (climb_ * u);
+    }
+    Vec3 d1(double u) const noexcept override {
+        const double th = omega_ * u;
+        return (e2_ * std::cos(th) - e1_ * std::sin(th)) * (spec_.radius * omega_) + a_ * climb_;
+    }
+    Vec3 d2(double u) const noexcept override {
+        const double th = omega_ * u;
+        return (e1_ * std::cos(th) + e2_ * std::sin(th)) * (-spec_.radius * omega_ * omega_);
+    }
+    Vec3 d3(double u) const noexcept override {
+        const double th = omega_ * u;
+        return (e2_ * std::cos(th) - e1_ * std::sin(th)) * (-spec_.radius * omega_ * omega_ * omega_);
+    }
+    double length_at(double u) const noexcept override { return std::clamp(u, 0.0, 1.0) * length_; }
+    // |d2| = R·ω² everywhere.
+    double d2_bound(double, double) const noexcept override {
+        return spec_.radius * omega_ * omega_ * (1.0 + 1e-12);
+    }
+    double u_at_length(double s) const noexcept override {
+        return length_ > 0.0 ? std::clamp(s / length_, 0.0, 1.0) : 0.0;
+    }
+
+private:
+    // L = turns·√((2πR)² + rise²): the speed is constant.
+    bool closed_form_length() override {
+        length_ = spec_.turns * std::hypot(2.0 * pi * spec_.radius, spec_.rise);
+        return true;
+    }
+    HelixSpec spec_;
+    Vec3 a_, e1_, e2_;
+    double omega_ = 0.0, climb_ = 0.0;
+};
+
+class ComplexNode final : public Path3Node {
+public:
+    ComplexNode(std::vector<Path3> parts, std::vector<double> cues)
+        : Path3Node(Path3Kind::complex), parts_(std::move(parts)) {
+        double s = 0.0;
+        for (std::size_t i = 0; i < parts_.size(); ++i) {
+            const double start = cues[i];
+            const double end = i + 1 < parts_.size() ? cues[i + 1] : 1.0;
+            // An empty span is skipped; so is one too thin for 1/width (adjacent doubles).
+            if (!(end > start) || !std::isfinite(1.0 / (end - start))) continue;
+            const Path3Node* node = &Path3Access::node(parts_[i]);
+            pieces_.push_back(Piece{node, start, 1.0 / (end - start), s});
+            starts_.push_back(start);
+            s += node->length();
+        }
+        finish();
+    }
+    Vec3 point(double u) const noexcept override {
+        const Piece& p = at(u);
+        return p.node->point(local(u, p));
+    }
+    Vec3 d1(double u) const noexcept override {
+        const Piece& p = at(u);
+        return p.node->d1(local(u, p)) * p.inv_width;
+    }
+    Vec3 d2(double u) const noexcept override {
+        const Piece& p = at(u);  // scaled in steps: inv_width² alone may overflow
+        return p.node->d2(local(u, p)) * p.inv_width * p.inv_width;
+    }
+    Vec3 d3(double u) const noexcept override {
+        const Piece& p = at(u);
+        return p.node->d3(local(u, p)) * p.inv_width * p.inv_width * p.inv_width;
+    }
+    double length_at(double u) const noexcept override {
+        if (!(u > 0.0)) return 0.0;
+        if (u >= 1.0) return length_;
+        const Piece& p = at(u);
+        return p.s0 + p.node->length_at(local(u, p));
+    }
+    double d2_bound(double a, double b) const noexcept override {
+        const Piece& p = at(0.5 * (a + b));
+        return p.node->d2_bound(local(a, p), local(b, p)) * p.inv_width * p.inv_width;
+    }
+    double u_at_length(double s) const noexcept override {
+        if (!(s > 0.0) || !(length_ > 0.0)) return 0.0;
+        if (s >= length_) return 1.0;
+        // The last piece starting at or before s (pieces of length 0 are passed over).
+        std::size_t i = 0;
+        while (i + 1 < pieces_.size() && pieces_[i + 1].s0 <= s) ++i;
+        const Piece& p = pieces_[i];
+        const double v = p.node->u_at_length(s - p.s0);
+        const double end = i + 1 < pieces_.size() ? pieces_[i + 1].start : 1.0;
+        return std::min(p.start + v / p.inv_width, end);
+    }
+
+private:
+    struct Piece {
+        const Path3Node* node;
+        double start;
+        double inv_width;
+        double s0;  // length before the piece
+    };
+    void interior_breaks(std::vector<double>& out) const override {
+        for (std::size_t i = 0; i < pieces_.size(); ++i) {
+            const Piece& p = pieces_[i];
+            if (i > 0) out.push_back(p.start);
+            const auto& inner = p.node->breaks();
+            for (std::size_t k = 1; k + 1 < inner.size(); ++k) {
+                const double u = p.start + inner[k] / p.inv_width;
+                if (u > out.back() && u < 1.0) out.push_back(u);
+            }
+        }
+    }
+    const Piece& at(double u) const noexcept {
+        const auto it = std::upper_bound(starts_.begin(), starts_.end(), u);
+        const std::size_t i = it == starts_.begin() ? 0 : static_cast<std::size_t>(it - starts_.begin()) - 1;
+        return pieces_[i];
+    }
+    // The part's own parameter; exactly 1 at the whole's end.
+    static double local(double u, const Piece& p) noexcept {
+        return u >= 1.0 ? 1.0 : std::clamp((u - p.start) * p.inv_width, 0.0, 1.0);
+    }
+    std::vector<Path3> parts_;
+    std::vector<Piece> pieces_;
+    std::vector<double> starts_;
+};
+
+void check_point(const char* where, const char* name, Vec3 p) {
+    if (!is_finite(p)) throw Error(std::string(where) + ": " + name + ": not finite");
+}
+
+Path3 bezier(Path3Kind kind, std::span<const Vec3> pts, const char* where) {
+    static const char* const names[] = {"p0", "p1", "p2", "p3"};
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        check_point(where, kind == Path3Kind::line ? (i == 0 ? "a" : "b") : names[i], pts[i]);
+    }
+    return Path3Access::make(std::make_shared<BezierNode>(kind, std::vector<BezierPiece>{make_piece(pts)}));
+}
+
+}  // namespace
+}  // namespace detail
+
+std::string_view to_string(Path3Kind kind) noexcept {
+    switch (kind) {
+        case Path3Kind::line: return "line";
+        case Path3Kind::quadratic_bezier: return "quadratic_bezier";
+        case Path3Kind::cubic_bezier: return "cubic_bezier";
+        case Path3Kind::catmull_rom: return "catmull_rom";
+        case Path3Kind::helix: return "helix";
+        case Path3Kind::complex: return "complex";
+    }
+    return "unknown";
+}
+
+Path3::Path3() : Path3(line(Vec3{}, Vec3{})) {}
+
+Path3::Path3(std::shared_ptr<const detail::Path3Node> node) noexcept : node_(std::move(node)) {}
+
+Path3 Path3::line(Vec3 a, Vec3 b) {
+    const Vec3 pts[] = {a, b};
+    return detail::bezier(Path3Kind::line, pts, "Path3::line");
+}
+
+Path3 Path3::quadratic_bezier(Vec3 p0, Vec3 p1, Vec3 p2) {
+    const Vec3 pts[] = {p0, p1, p2};
+    return detail::bezier(Path3Kind::quadratic_bezier, pts, "Path3::quadratic_bezier");
+}
+
+Path3 Path3::cubic_bezier(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3) {
+    const Vec3 pts[] = {p0, p1, p2, p3};
+    return detail::bezier(Path3Kind::cubic_bezier, pts, "Path3::cubic_bezier");
+}
+
+Path3 Path3::catmull_rom(std::span<const Vec3> points, CatmullRom type, bool closed) {
+    const std::string where = "Path3::catmull_rom";
+    const std::size_t n = points.size();
+    if (n < (closed ? 3u : 2u)) {
+        throw Error(where + ": points: need at least " + (closed ? "3 for a closed" : "2 for an open") +
+                    " spline, got " + std::to_string(n));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!is_finite(points[i])) throw Error(where + ": points[" + std::to_string(i) + "]: not finite");
+    }
+    const double alpha = type == CatmullRom::uniform ? 0.0 : type == CatmullRom::centripetal ? 0.5 : 1.0;
+    auto spacing = [alpha](Vec3 a, Vec3 b) {
+        const double d = alpha == 0.0 ? 1.0 : std::pow(distance(a, b), alpha);
+        return d > 0.0 ? d : 1.0;
+    };
+    const std::size_t segments = closed ? n : n - 1;
+    std::vector<detail::BezierPiece> pieces;
+    pieces.reserve(segments);
+    for (std::size_t i = 0; i < segments; ++i) {
+        const Vec3 p1 = points[i], p2 = points[(i + 1) % n];
+        Vec3 p0, p3;
+        if (closed) {
+            p0 = points[(i + n - 1) % n];
+            p3 = points[(i + 2) % n];
+        } else {
+            // Phantom points mirror the neighbour at the ends, as in 2-D.
+            p0 = i > 0 ? points[i - 1] : 2.0 * p1 - p2;
+            p3 = i + 2 < n ? points[i + 2] : 2.0 * p2 - p1;
+        }
+        const double d01 = spacing(p0, p1), d12 = spacing(p1, p2), d23 = spacing(p2, p3);
+        // Barry–Goldman tangents in knot units, scaled to the segment's t by d12; the segment
+        // is the cubic Hermite with these tangents, written as a Bézier.
+        const Vec3 m1 = ((p1 - p0) / d01 - (p2 - p0) / (d01 + d12) + (p2 - p1) / d12) * d12;
+        const Vec3 m2 = ((p2 - p1) / d12 - (p3 - p1) / (d12 + d23) + (p3 - p2) / d23) * d12;
+        const Vec3 pts[] = {p1, p1 + m1 / 3.0, p2 - m2 / 3.0, p2};
+        pieces.push_back(detail::make_piece(pts));
+    }
+    return detail::Path3Access::make(std::make_shared<detail::BezierNode>(Path3Kind::catmull_rom, std::move(pieces)));
+}
+
+Path3 Path3::helix(const HelixSpec& spec) {
+    return detail::Path3Access::make(std::make_shared<detail::HelixNode>(spec));
+}
+
+Path3 Path3::complex(std::vector<Path3> parts, std::vector<double> cues) {
+    const std::string where = "Path3::complex";
+    if (parts.empty()) throw Error(where + ": parts: empty");
+    if (cues.size() != parts.size()) {
+        throw Error(where + ": cues: need one per part (" + std::to_string(parts.size()) + "), got " +
+                    std::to_string(cues.size()));
+    }
+    for (std::size_t i = 0; i < cues.size(); ++i) {
+        const std::string name = where + ": cues[" + std::to_string(i) + "]: ";
+        if (!std::isfinite(cues[i]) || cues[i] < 0.0 || cues[i] > 1.0) throw Error(name + "must be in [0, 1], got " + detail::number_text(cues[i]));
+        if (i == 0 && cues[i] != 0.0) throw Error(name + "must be 0, got " + detail::number_text(cues[i]));
+        if (i > 0 && cues[i] < cues[i - 1]) throw Error(name + "decreases (below cues[" + std::to_string(i - 1) + "])");
+    }
+    return detail::Path3Access::make(std::make_shared<detail::ComplexNode>(std::move(parts), std::move(cues)));
+}
+
+Path3 Path3::complex_by_length(std::vector<Path3> parts) {
+    if (parts.empty()) throw Error("Path3::complex_by_length: parts: empty");
+    double total = 0.0;
+    for (const Path3& p : parts) total += p.length();
+    std::vector<double> cues(parts.size(), 0.0);
+    double s = 0.0;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        cues[i] = total > 0.0 ? std::min(s / total, 1.0) : static_cast<double>(i) / static_cast<double>(parts.size());
+        s += parts[i].length();
+    }
+    return complex(std::move(parts), std::move(cues));
+}
+
+Path3Kind Path3::kind() const noexcept { return node_->kind(); }
+
+// Outside [0, 1] the path continues along its end tangents (as a 2-D Path does).
+Vec3 Path3::point(double u) const noexcept {
+    if (u < 0.0) return node_->point(0.0) + node_->d1(0.0) * u;
+    if (u > 1.0) return node_->point(1.0) + node_->d1(1.0) * (u - 1.0);
+    return node_->point(u);
+}
+Vec3 Path3::d1(double u) const noexcept { return node_->d1(std::clamp(u, 0.0, 1.0)); }
+Vec3 Path3::d2(double u) const noexcept { return u < 0.0 || u > 1.0 ? Vec3{} : node_->d2(u); }
+Vec3 Path3::d3(double u) const noexcept { return u < 0.0 || u > 1.0 ? Vec3{} : node_->d3(u); }
+
+Vec3 Path3::tangent(double u) const noexcept {
+    u = std::clamp(u, 0.0, 1.0);
+    // At a stop (zero speed) the direction of motion is the limit of d1/|d1|: that of the
+    // first derivative that is not zero.
+    Vec3 t = normalized(node_->d1(u));
+    if (t == Vec3{}) t = normalized(node_->d2(u));
+    if (t == Vec3{}) t = normalized(node_->d3(u));
+    if (t == Vec3{}) t = {1.0, 0.0, 0.0};
+    return t;
+}
+
+Frenet3 Path3::frenet(double u) const noexcept {
+    u = std::clamp(u, 0.0, 1.0);
+    Frenet3 f;
+    f.point = node_->point(u);
+    const Vec3 r1 = node_->d1(u), r2 = node_->d2(u), r3 = node_->d3(u);
+    f.tangent = tangent(u);
+    const Vec3 c = cross(r1, r2);
+    const double speed = grape::length(r1);
+    const double cn = grape::length(c);
+    // |r′ × r″| below the rounding noise of its own products counts as zero curvature.
+    const double noise = 16.0 * std::numeric_limits<double>::epsilon() * speed * grape::length(r2);
+    if (speed > 0.0 && cn > noise) {
+        f.normal_defined = true;
+        f.binormal = c / cn;
+        f.normal = cross(f.binormal, f.tangent);
+        f.curvature = cn / speed / speed / speed;  // in steps: speed³ alone may overflow
+        f.torsion = dot(c / cn, r3) / cn;
+    } else {
+        f.normal = any_perpendicular(f.tangent);
+        f.binormal = cross(f.tangent, f.normal);
+    }
+    return f;
+}
+
+double Path3::length() const noexcept { return node_->length(); }
+double Path3::length_at(double u) const noexcept { return node_->length_at(std::clamp(u, 0.0, 1.0)); }
+double Path3::u_at_length(double s) const noexcept { return node_->u_at_length(s); }
+Vec3 Path3::point_at_length(double s) const noexcept { return node_->point(u_at_length(s)); }
+std::span<const double> Path3::breaks() const noexcept { return node_->breaks(); }
+
+}  // namespace grape
