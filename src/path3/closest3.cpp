@@ -9,7 +9,7 @@
 namespace grape {
 namespace {
 
-struct Search {
+struct Search3 {
     const detail::Path3Node& node;
     Vec3 q;
     Closest3 best;
@@ -36,7 +36,7 @@ struct Search {
 };
 
 // Distance from q to the segment c + d·t, |t| ≤ half.
-double segment_distance(Vec3 q, Vec3 c, Vec3 d, double half) noexcept {
+double segment_distance3(Vec3 q, Vec3 c, Vec3 d, double half) noexcept {
     const double dd = dot(d, d);
     const double t = dd > 0.0 ? std::clamp(dot(q - c, d) / dd, -half, half) : 0.0;
     return distance(q, c + d * t);
@@ -46,7 +46,7 @@ double segment_distance(Vec3 q, Vec3 c, Vec3 d, double half) noexcept {
 
 Closest3 closest_point(const Path3& path, Vec3 query) noexcept {
     const detail::Path3Node& node = detail::Path3Access::node(path);
-    Search s{node, query, {0.0, node.point(0.0), distance(node.point(0.0), query), 0.0}};
+    Search3 s{node, query, {0.0, node.point(0.0), distance(node.point(0.0), query), 0.0}};
     const auto& breaks = node.breaks();
     for (const double b : breaks) s.offer(b, node.point(b));
     // Leaves stop once the bound's slack is this small: far below the 1e-12 promised.
@@ -70,7 +70,7 @@ Closest3 closest_point(const Path3& path, Vec3 query) noexcept {
                 s.offer(m, pm);
                 // Taylor at m: |p(u) − p(m) − p′(m)(u − m)| ≤ sup|p″|·(h/2)²/2.
                 const double remainder = node.d2_bound(it.a, it.b) * h * h / 8.0;
-                const double lower = segment_distance(query, pm, node.d1(m), 0.5 * h) - remainder;
+                const double lower = segment_distance3(query, pm, node.d1(m), 0.5 * h) - remainder;
                 if (lower > s.best.distance) continue;
                 if (--budget <= 0) return false;
                 if (remainder <= slack || it.depth >= cap || top + 2 > stack.size() || !(h > 0.0)) {

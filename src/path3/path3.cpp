@@ -16,7 +16,7 @@ namespace {
 // Points of a Bézier of degree k ≤ 3 and of its differences, so that every derivative is a
 // Bézier of its own evaluated by de Casteljau (exact at the piece's ends, and a line's d2 is
 // exactly zero).
-struct BezierPiece {
+struct Bezier3Piece {
     int degree = 1;
     std::array<Vec3, 4> p{};   // control points
     std::array<Vec3, 3> q{};   // first derivative's control points (degree − 1)
@@ -25,7 +25,7 @@ struct BezierPiece {
 };
 
 template <std::size_t N>
-Vec3 casteljau(const std::array<Vec3, N>& pts, int count, double t) noexcept {
+Vec3 casteljau3(const std::array<Vec3, N>& pts, int count, double t) noexcept {
     std::array<Vec3, N> b = pts;
     for (int level = count - 1; level > 0; --level) {
         for (int i = 0; i < level; ++i) b[static_cast<std::size_t>(i)] = lerp(b[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(i) + 1], t);
@@ -33,8 +33,8 @@ Vec3 casteljau(const std::array<Vec3, N>& pts, int count, double t) noexcept {
     return b[0];
 }
 
-BezierPiece make_piece(std::span<const Vec3> pts) {
-    BezierPiece s;
+Bezier3Piece make_piece3(std::span<const Vec3> pts) {
+    Bezier3Piece s;
     s.degree = static_cast<int>(pts.size()) - 1;
     const double k = s.degree;
     for (std::size_t i = 0; i < pts.size(); ++i) s.p[i] = pts[i];
@@ -45,42 +45,42 @@ BezierPiece make_piece(std::span<const Vec3> pts) {
 }
 
 // Bézier pieces of one degree, each over an equal share of u.
-class BezierNode final : public Path3Node {
+class Bezier3Node final : public Path3Node {
 public:
-    BezierNode(Path3Kind kind, std::vector<BezierPiece> pieces) : Path3Node(kind), pieces_(std::move(pieces)) {
+    Bezier3Node(Path3Kind kind, std::vector<Bezier3Piece> pieces) : Path3Node(kind), pieces_(std::move(pieces)) {
         n_ = static_cast<double>(pieces_.size());
         finish();
     }
     Vec3 point(double u) const noexcept override {
         double t;
-        const BezierPiece& s = at(u, t);
-        return casteljau(s.p, s.degree + 1, t);
+        const Bezier3Piece& s = at(u, t);
+        return casteljau3(s.p, s.degree + 1, t);
     }
     Vec3 d1(double u) const noexcept override {
         double t;
-        const BezierPiece& s = at(u, t);
-        return casteljau(s.q, s.degree, t) * n_;
+        const Bezier3Piece& s = at(u, t);
+        return casteljau3(s.q, s.degree, t) * n_;
     }
     Vec3 d2(double u) const noexcept override {
         double t;
-        const BezierPiece& s = at(u, t);
-        return s.degree < 2 ? Vec3{} : casteljau(s.w, s.degree - 1, t) * n_ * n_;
+        const Bezier3Piece& s = at(u, t);
+        return s.degree < 2 ? Vec3{} : casteljau3(s.w, s.degree - 1, t) * n_ * n_;
     }
     Vec3 d3(double u) const noexcept override {
         double t;
-        const BezierPiece& s = at(u, t);
+        const Bezier3Piece& s = at(u, t);
         return s.degree < 3 ? Vec3{} : s.c * n_ * n_ * n_;
     }
 
     // d2 of a piece is a Bézier of degree ≤ 1: its sup over [a, b] is at an end (exact).
     double d2_bound(double a, double b) const noexcept override {
         double ta, tb;
-        const BezierPiece& s = at(0.5 * (a + b), ta);
+        const Bezier3Piece& s = at(0.5 * (a + b), ta);
         const double i = static_cast<double>(&s - pieces_.data());
         ta = std::clamp(a * n_ - i, 0.0, 1.0);
         tb = std::clamp(b * n_ - i, 0.0, 1.0);
         if (s.degree < 2) return 0.0;
-        const double m = std::max(grape::length(casteljau(s.w, s.degree - 1, ta)), grape::length(casteljau(s.w, s.degree - 1, tb)));
+        const double m = std::max(grape::length(casteljau3(s.w, s.degree - 1, ta)), grape::length(casteljau3(s.w, s.degree - 1, tb)));
         return m * n_ * n_ * (1.0 + 1e-12);  // the margin covers the rounding of the ends' values
     }
 
@@ -89,19 +89,19 @@ private:
         for (std::size_t i = 1; i < pieces_.size(); ++i) out.push_back(static_cast<double>(i) / n_);
     }
     // The piece holding u (the later one at a shared end) and the local t in [0, 1].
-    const BezierPiece& at(double u, double& t) const noexcept {
+    const Bezier3Piece& at(double u, double& t) const noexcept {
         const double x = std::clamp(u, 0.0, 1.0) * n_;
         const double i = std::min(std::floor(x), n_ - 1.0);
         t = x - i;
         return pieces_[static_cast<std::size_t>(i)];
     }
-    std::vector<BezierPiece> pieces_;
+    std::vector<Bezier3Piece> pieces_;
     double n_ = 1.0;
 };
 
-class HelixNode final : public Path3Node {
+class Helix3Node final : public Path3Node {
 public:
-    explicit HelixNode(const HelixSpec& h) : Path3Node(Path3Kind::helix), spec_(h) {
+    explicit Helix3Node(const HelixSpec& h) : Path3Node(Path3Kind::helix), spec_(h) {
         auto bad = [](const std::string& what) { return Error("Path3::helix: " + what); };
         if (!is_finite(h.center)) throw bad("center: not finite");
         if (!is_finite(h.axis)) throw bad("axis: not finite");
@@ -158,9 +158,9 @@ private:
     double omega_ = 0.0, climb_ = 0.0;
 };
 
-class ComplexNode final : public Path3Node {
+class Complex3Node final : public Path3Node {
 public:
-    ComplexNode(std::vector<Path3> parts, std::vector<double> cues)
+    Complex3Node(std::vector<Path3> parts, std::vector<double> cues)
         : Path3Node(Path3Kind::complex), parts_(std::move(parts)) {
         double s = 0.0;
         for (std::size_t i = 0; i < parts_.size(); ++i) {
@@ -245,16 +245,16 @@ private:
     std::vector<double> starts_;
 };
 
-void check_point(const char* where, const char* name, Vec3 p) {
+void check_point3(const char* where, const char* name, Vec3 p) {
     if (!is_finite(p)) throw Error(std::string(where) + ": " + name + ": not finite");
 }
 
-Path3 bezier(Path3Kind kind, std::span<const Vec3> pts, const char* where) {
+Path3 bezier3(Path3Kind kind, std::span<const Vec3> pts, const char* where) {
     static const char* const names[] = {"p0", "p1", "p2", "p3"};
     for (std::size_t i = 0; i < pts.size(); ++i) {
-        check_point(where, kind == Path3Kind::line ? (i == 0 ? "a" : "b") : names[i], pts[i]);
+        check_point3(where, kind == Path3Kind::line ? (i == 0 ? "a" : "b") : names[i], pts[i]);
     }
-    return Path3Access::make(std::make_shared<BezierNode>(kind, std::vector<BezierPiece>{make_piece(pts)}));
+    return Path3Access::make(std::make_shared<Bezier3Node>(kind, std::vector<Bezier3Piece>{make_piece3(pts)}));
 }
 
 }  // namespace
@@ -278,17 +278,17 @@ Path3::Path3(std::shared_ptr<const detail::Path3Node> node) noexcept : node_(std
 
 Path3 Path3::line(Vec3 a, Vec3 b) {
     const Vec3 pts[] = {a, b};
-    return detail::bezier(Path3Kind::line, pts, "Path3::line");
+    return detail::bezier3(Path3Kind::line, pts, "Path3::line");
 }
 
 Path3 Path3::quadratic_bezier(Vec3 p0, Vec3 p1, Vec3 p2) {
     const Vec3 pts[] = {p0, p1, p2};
-    return detail::bezier(Path3Kind::quadratic_bezier, pts, "Path3::quadratic_bezier");
+    return detail::bezier3(Path3Kind::quadratic_bezier, pts, "Path3::quadratic_bezier");
 }
 
 Path3 Path3::cubic_bezier(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3) {
     const Vec3 pts[] = {p0, p1, p2, p3};
-    return detail::bezier(Path3Kind::cubic_bezier, pts, "Path3::cubic_bezier");
+    return detail::bezier3(Path3Kind::cubic_bezier, pts, "Path3::cubic_bezier");
 }
 
 Path3 Path3::catmull_rom(std::span<const Vec3> points, CatmullRom type, bool closed) {
@@ -307,7 +307,7 @@ Path3 Path3::catmull_rom(std::span<const Vec3> points, CatmullRom type, bool clo
         return d > 0.0 ? d : 1.0;
     };
     const std::size_t segments = closed ? n : n - 1;
-    std::vector<detail::BezierPiece> pieces;
+    std::vector<detail::Bezier3Piece> pieces;
     pieces.reserve(segments);
     for (std::size_t i = 0; i < segments; ++i) {
         const Vec3 p1 = points[i], p2 = points[(i + 1) % n];
@@ -326,13 +326,13 @@ Path3 Path3::catmull_rom(std::span<const Vec3> points, CatmullRom type, bool clo
         const Vec3 m1 = ((p1 - p0) / d01 - (p2 - p0) / (d01 + d12) + (p2 - p1) / d12) * d12;
         const Vec3 m2 = ((p2 - p1) / d12 - (p3 - p1) / (d12 + d23) + (p3 - p2) / d23) * d12;
         const Vec3 pts[] = {p1, p1 + m1 / 3.0, p2 - m2 / 3.0, p2};
-        pieces.push_back(detail::make_piece(pts));
+        pieces.push_back(detail::make_piece3(pts));
     }
-    return detail::Path3Access::make(std::make_shared<detail::BezierNode>(Path3Kind::catmull_rom, std::move(pieces)));
+    return detail::Path3Access::make(std::make_shared<detail::Bezier3Node>(Path3Kind::catmull_rom, std::move(pieces)));
 }
 
 Path3 Path3::helix(const HelixSpec& spec) {
-    return detail::Path3Access::make(std::make_shared<detail::HelixNode>(spec));
+    return detail::Path3Access::make(std::make_shared<detail::Helix3Node>(spec));
 }
 
 Path3 Path3::complex(std::vector<Path3> parts, std::vector<double> cues) {
@@ -348,7 +348,7 @@ Path3 Path3::complex(std::vector<Path3> parts, std::vector<double> cues) {
         if (i == 0 && cues[i] != 0.0) throw Error(name + "must be 0, got " + detail::number_text(cues[i]));
         if (i > 0 && cues[i] < cues[i - 1]) throw Error(name + "decreases (below cues[" + std::to_string(i - 1) + "])");
     }
-    return detail::Path3Access::make(std::make_shared<detail::ComplexNode>(std::move(parts), std::move(cues)));
+    return detail::Path3Access::make(std::make_shared<detail::Complex3Node>(std::move(parts), std::move(cues)));
 }
 
 Path3 Path3::complex_by_length(std::vector<Path3> parts) {

@@ -11,16 +11,16 @@
 namespace grape {
 namespace {
 
-// r without its part along the unit t, made unit again: keeps the frame orthonormal to a few
+// r without its part along the unit t, made unit again: keeps the frame orthonormal3 to a few
 // ulp however many steps it has been carried.
-Vec3 orthonormal(Vec3 r, Vec3 t) noexcept {
+Vec3 orthonormal3(Vec3 r, Vec3 t) noexcept {
     const Vec3 q = normalized(r - t * dot(r, t));
     return q == Vec3{} ? any_perpendicular(t) : q;
 }
 
 // The least rotation taking the unit a to the unit b, applied to r (Rodrigues with k = a × b,
 // |k| = sin θ, c = cos θ). Opposite tangents (a cusp) leave r as it is: still ⟂ b.
-Vec3 turn(Vec3 a, Vec3 b, Vec3 r) noexcept {
+Vec3 turn3(Vec3 a, Vec3 b, Vec3 r) noexcept {
     const Vec3 k = cross(a, b);
     const double c = dot(a, b);
     if (!(c > -1.0 + 1e-12)) return r;
@@ -42,7 +42,7 @@ Vec3 RotationMinimizingFrames::double_reflection(Vec3 x0, Vec3 t0, Vec3 r0, Vec3
     const Vec3 v2 = t1 - tl;
     const double c2 = dot(v2, v2);
     const Vec3 r1 = c2 > 0.0 ? rl - v2 * (2.0 * dot(v2, rl) / c2) : rl;
-    return orthonormal(r1, t1);
+    return orthonormal3(r1, t1);
 }
 
 RotationMinimizingFrames::RotationMinimizingFrames(Path3 path, Vec3 up, double tolerance) : path_(std::move(path)) {
@@ -58,7 +58,7 @@ RotationMinimizingFrames::RotationMinimizingFrames(Path3 path, Vec3 up, double t
 
     const double total = path_.length();
     const std::span<const double> breaks = path_.breaks();
-    Vec3 r = orthonormal(across, t0);
+    Vec3 r = orthonormal3(across, t0);
     knots_.push_back({0.0, r});
     auto step = [this](double a, Vec3 ra, double b) noexcept {
         return double_reflection(path_.point(a), path_.tangent(a), ra, path_.point(b), path_.tangent(b));
@@ -69,7 +69,7 @@ RotationMinimizingFrames::RotationMinimizingFrames(Path3 path, Vec3 up, double t
             // At a break, the tangent arriving (the limit from the left) turns into the one
             // leaving by the least rotation.
             const Vec3 leaving = path_.tangent(a);
-            r = orthonormal(turn(path_.tangent(std::nextafter(a, 0.0)), leaving, r), leaving);
+            r = orthonormal3(turn3(path_.tangent(std::nextafter(a, 0.0)), leaving, r), leaving);
             knots_.push_back({a, r});
         }
         double u = a;
@@ -120,7 +120,7 @@ Frame3 RotationMinimizingFrames::frame(double u) const noexcept {
     Frame3 f;
     f.point = path_.point(u);
     f.tangent = path_.tangent(u);
-    f.normal = k.u == u ? orthonormal(k.normal, f.tangent)
+    f.normal = k.u == u ? orthonormal3(k.normal, f.tangent)
                         : double_reflection(path_.point(k.u), path_.tangent(k.u), k.normal, f.point, f.tangent);
     f.binormal = cross(f.tangent, f.normal);
     return f;
