@@ -1,6 +1,6 @@
-// Replaces every form of the global operator new and delete of a benchmark program (plain,
+// Replaces every form of the global operator new and delete of a test or benchmark program (plain,
 // array, nothrow and the std::align_val_t forms that alignas(64) storage goes through) so
-// that its heap accounting sees them all. Include it in exactly one file, after defining
+// that its heap accounting sees them all. Include it in exactly one file and define there
 //   void heap_hooks::on_alloc(void* block, std::size_t size) noexcept;  // after malloc
 //   void heap_hooks::on_free(void* block) noexcept;                     // before free
 // where `block` is what malloc returned (malloc_usable_size works on it) and `size` the
