@@ -205,6 +205,21 @@ TEST(Frames3, ReferenceUpNeverFlips) {
         std::printf("reference up, %s: %zu cones, worst roll over 1e-3 L %.3f deg, away from the cone off by %.2g, %d of %d samples away\n",
                     cs.name, fr.cone_count(), worst_jump / degree, worst_away, away, n + 1);
     }
+    // The measure sees a fast roll: with a cone of 0.05 rad the loop turns its π within about
+    // 0.1 rad of tangent direction, of the order of π·(2π·1e-3)/(2·0.05) ≈ 11° per 1e-3·L (the
+    // mean over a planar loop; this one rises sideways, its tangent passes 0.048 rad from the
+    // vertical, and 7.5° is measured): far over 1°.
+    {
+        const Path3& loop = cases[0].path;
+        const Frames3 narrow(loop, {.mode = FrameMode::reference_up, .up = up, .cone = 0.05});
+        const std::vector<Frame3> f = frames_at(narrow, equal_length_u(loop, n + 1));
+        double worst = 0.0;
+        for (int i = 0; i + apart <= n; ++i) {
+            const Vec3 carried = least_turn(f[i].tangent, f[i + apart].tangent, f[i].normal);
+            worst = std::max(worst, std::abs(roll(f[i + apart].tangent, carried, f[i + apart].normal)));
+        }
+        EXPECT_GT(worst, 5.0 * degree);
+    }
     // A straight vertical path is inside the cone throughout: the RMF, a constant normal.
     const Frames3 vertical(Path3::line({0, 0, 0}, {0, 0, 5}), {.mode = FrameMode::reference_up});
     EXPECT_LE(distance(vertical.frame(0.0).normal, vertical.frame(1.0).normal), 1e-15);

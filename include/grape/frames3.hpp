@@ -6,6 +6,7 @@
 #include <grape/path3.hpp>
 #include <grape/vec3.hpp>
 
+#include <cstddef>
 #include <vector>
 
 namespace grape {
