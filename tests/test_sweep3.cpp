@@ -217,6 +217,7 @@ TEST(Sweep3, ObjRoundTrip) {
     std::vector<Vec3> v, vn;
     std::vector<Vec2> vt;
     std::vector<std::array<std::uint32_t, 3>> f;
+    std::vector<std::array<Vec2, 3>> uvs;
     std::string line;
     while (std::getline(in, line)) {
         std::istringstream ls(line);
@@ -233,20 +234,29 @@ TEST(Sweep3, ObjRoundTrip) {
             vt.push_back(t);
         } else if (tag == "f") {
             std::array<std::uint32_t, 3> t{};
-            for (auto& i : t) {
+            std::array<Vec2, 3> c{};
+            for (int k = 0; k < 3; ++k) {
                 std::string corner;
                 ls >> corner;
-                const auto k = static_cast<std::uint32_t>(std::stoul(corner));
-                ASSERT_EQ(corner, std::to_string(k) + '/' + std::to_string(k) + '/' + std::to_string(k));
-                i = k - 1;
+                const std::size_t a = corner.find('/'), b = corner.rfind('/');
+                ASSERT_NE(a, b);
+                ASSERT_EQ(corner.substr(0, a), corner.substr(b + 1));  // position and normal agree
+                t[k] = static_cast<std::uint32_t>(std::stoul(corner.substr(0, a))) - 1;
+                const std::size_t ti = std::stoul(corner.substr(a + 1, b - a - 1)) - 1;
+                ASSERT_LT(ti, vt.size());
+                c[k] = vt[ti];
             }
             f.push_back(t);
+            uvs.push_back(c);
         }
     }
     EXPECT_EQ(v, m.positions);
     EXPECT_EQ(vn, m.normals);
-    EXPECT_EQ(vt, m.uv);
     EXPECT_EQ(f, m.triangles);
+    ASSERT_EQ(uvs.size(), m.corner_uv.size());
+    for (std::size_t i = 0; i < uvs.size(); ++i) {
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(uvs[i][k], m.corner_uv[i][k]);
+    }
 }
 
 // uv: u runs along the profile (0 at its first vertex), v is the arc length at the ring.
@@ -259,6 +269,33 @@ TEST(Sweep3, TextureCoordinates) {
             EXPECT_NEAR(m.uv[i * 4 + j].y, h.length() * m.ring_u[i], 1e-13);  // u ∝ arc length on a helix
         }
     }
+}
+
+// Across the seams of a closed path and a closed profile the corner uv continue: within a
+// triangle u spans one column (1/sides) and v one ring step; the seam faces reach u = 1 and
+// v = length. The per-vertex uv are what the rings hold.
+TEST(Sweep3, TextureContinuesAcrossSeams) {
+    const Vec3 pts[] = {{0, 0, 0}, {4, 0, 1}, {5, 3, -1}, {1, 4, 0.5}, {-1, 2, 2}};
+    const Path3 loop = Path3::catmull_rom(pts, CatmullRom::centripetal, true);
+    const Mesh3 m = sweep(Frames3(loop, {.mode = FrameMode::closed}), {.profile = circle_profile(0.3, 8)});
+    ASSERT_EQ(m.corner_uv.size(), m.triangles.size());
+    double step = 0.0;  // the longest ring step in arc length, the closing one included
+    for (std::size_t i = 0; i < m.ring_u.size(); ++i) {
+        const double next = i + 1 < m.ring_u.size() ? loop.length_at(m.ring_u[i + 1]) : loop.length();
+        step = std::max(step, next - loop.length_at(m.ring_u[i]));
+    }
+    double top_u = 0.0, top_v = 0.0;
+    for (const auto& c : m.corner_uv) {
+        for (int a = 0; a < 3; ++a) {
+            top_u = std::max(top_u, c[a].x), top_v = std::max(top_v, c[a].y);
+            for (int b = 0; b < 3; ++b) {
+                EXPECT_LE(std::abs(c[a].x - c[b].x), 1.0 / 8 + 1e-15);
+                EXPECT_LE(std::abs(c[a].y - c[b].y), step * (1 + 1e-12));
+            }
+        }
+    }
+    EXPECT_EQ(top_u, 1.0);
+    EXPECT_EQ(top_v, loop.length());
 }
 
 TEST(Sweep3, BadInputs) {

@@ -21,7 +21,7 @@ struct RayClosest3 {
 /// The globally nearest point of `path` (u in [0, 1]) to the ray origin + t·direction, t ≥ 0:
 /// the same branch and bound as closest_point, each interval bounded below by the distance
 /// from its midpoint tangent segment to the ray less sup|d2|·h²/8, the survivors polished by
-/// Newton steps on the distance to the ray. t is measured in units of |direction| = 1 (the
+/// Newton steps on the distance to the ray. t is the distance along the ray from its origin (the
 /// direction is normalized); a zero direction makes it closest_point to the origin. The gap
 /// is within ~1e-13·(length + distance) except where a long stretch is equidistant from the
 /// ray (a circle about it), where the work is capped (2¹⁵ intervals) and the gap is what was

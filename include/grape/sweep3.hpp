@@ -21,9 +21,14 @@ struct Mesh3 {
     std::vector<Vec3> positions;  ///< world units
     std::vector<Vec3> normals;    ///< unit, one per position
     /// One per position: (share of the profile's length from its first vertex, arc length s
-    /// along the path). A closed profile's seam vertex has u = 0 on both sides.
+    /// along the path). A shared seam vertex has one uv, so a texture wraps back across the
+    /// faces of a closed seam (u from the last column to 0, v from the last ring to 0): use
+    /// corner_uv to texture across seams.
     std::vector<Vec2> uv;
     std::vector<std::array<std::uint32_t, 3>> triangles;  ///< indices into positions
+    /// Three per triangle (its corners in order): uv continuous across seams, u reaching 1 on
+    /// a closed profile's last edge and v reaching the length on a closed path's last band.
+    std::vector<std::array<Vec2, 3>> corner_uv;
     /// Sweeps: the u of each distinct ring (a closed seam's last ring is the first, not repeated).
     std::vector<double> ring_u;
     std::size_t ring_size = 0;  ///< sweeps: vertices per ring (ring i is positions[i·ring_size …])
@@ -61,8 +66,10 @@ GRAPE_PATH_API std::vector<Vec2> circle_profile(double radius, int sides);
 /// max_rings rings are needed.
 GRAPE_PATH_API Mesh3 sweep(const Frames3& frames, const SweepDef& def);
 
-/// The mesh as Wavefront OBJ text (v, vn, vt, and f a/a/a with 1-based indices), numbers with
-/// 17 significant digits in every locale, so any viewer reads back the same doubles.
+/// The mesh as Wavefront OBJ text (v, vn, vt, and f v/t/n with 1-based indices), numbers with
+/// 17 significant digits in every locale, so any viewer reads back the same doubles. The vt
+/// are the distinct corner_uv (or uv per vertex where corner_uv is empty), so textures
+/// continue across seams.
 GRAPE_PATH_API std::string to_obj(const Mesh3& mesh);
 
 }  // namespace grape

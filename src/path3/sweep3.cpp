@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
+#include <utility>
 
 namespace grape {
 namespace {
@@ -169,6 +171,11 @@ Mesh3 sweep(const Frames3& frames, const SweepDef& def) {
             // Profile direction × path direction is the outward normal of a counter-clockwise profile.
             mesh.triangles.push_back({a, b, c});
             mesh.triangles.push_back({b, d, c});
+            // Across a seam the texture continues: u to 1 past the last column, v to the length.
+            const Vec2 ta = mesh.uv[a], tc{ta.x, i + 1 == count ? path.length() : mesh.uv[c].y};
+            const Vec2 tb{sw.next(j) == 0 ? 1.0 : mesh.uv[b].x, ta.y}, td{tb.x, tc.y};
+            mesh.corner_uv.push_back({ta, tb, tc});
+            mesh.corner_uv.push_back({tb, td, tc});
         }
     }
     if (def.caps && def.closed_profile && !seam) {
@@ -187,7 +194,9 @@ Mesh3 sweep(const Frames3& frames, const SweepDef& def) {
             for (std::size_t j = 0; j < n; ++j) {
                 const auto p = static_cast<std::uint32_t>(centre + 1 + j), q = static_cast<std::uint32_t>(centre + 1 + sw.next(j));
                 // A counter-clockwise profile seen from +T: the end cap faces +T, the start −T.
-                mesh.triangles.push_back(end ? std::array<std::uint32_t, 3>{centre, p, q} : std::array<std::uint32_t, 3>{centre, q, p});
+                const std::array<std::uint32_t, 3> t = end ? std::array<std::uint32_t, 3>{centre, p, q} : std::array<std::uint32_t, 3>{centre, q, p};
+                mesh.triangles.push_back(t);
+                mesh.corner_uv.push_back({mesh.uv[t[0]], mesh.uv[t[1]], mesh.uv[t[2]]});
             }
         }
     }
@@ -196,16 +205,35 @@ Mesh3 sweep(const Frames3& frames, const SweepDef& def) {
 
 std::string to_obj(const Mesh3& mesh) {
     auto num = [](double v) { return detail::general_text(v, 17); };
+    // The distinct texture coordinates, in order of first use, and each corner's index.
+    const bool corners = mesh.corner_uv.size() == mesh.triangles.size();
+    std::vector<Vec2> vt;
+    std::vector<std::array<std::uint32_t, 3>> ft;
+    if (corners) {
+        std::map<std::pair<double, double>, std::uint32_t> seen;
+        for (const auto& c : mesh.corner_uv) {
+            std::array<std::uint32_t, 3> t{};
+            for (int k = 0; k < 3; ++k) {
+                const auto [it, fresh] = seen.try_emplace({c[k].x, c[k].y}, static_cast<std::uint32_t>(vt.size()));
+                if (fresh) vt.push_back(c[k]);
+                t[k] = it->second;
+            }
+            ft.push_back(t);
+        }
+    } else {
+        vt = mesh.uv;
+        ft = mesh.triangles;
+    }
     std::string out = "# grape mesh: " + std::to_string(mesh.positions.size()) + " vertices, " +
                       std::to_string(mesh.triangles.size()) + " triangles\n";
     for (const Vec3 p : mesh.positions) out += "v " + num(p.x) + ' ' + num(p.y) + ' ' + num(p.z) + '\n';
     for (const Vec3 v : mesh.normals) out += "vn " + num(v.x) + ' ' + num(v.y) + ' ' + num(v.z) + '\n';
-    for (const Vec2 t : mesh.uv) out += "vt " + num(t.x) + ' ' + num(t.y) + '\n';
-    for (const auto& t : mesh.triangles) {
+    for (const Vec2 t : vt) out += "vt " + num(t.x) + ' ' + num(t.y) + '\n';
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         out += 'f';
-        for (const std::uint32_t i : t) {
-            const std::string k = std::to_string(i + 1);
-            out += ' ' + k + '/' + k + '/' + k;
+        for (int k = 0; k < 3; ++k) {
+            const std::string v = std::to_string(mesh.triangles[i][k] + 1);
+            out += ' ' + v + '/' + std::to_string(ft[i][k] + 1) + '/' + v;
         }
         out += '\n';
     }
