@@ -75,7 +75,63 @@ double tube_chord_error(const Mesh3& m, double r) {
     return worst;
 }
 
+// Distance from q to the triangle abc (Ericson, Real-Time Collision Detection 5.1.5, by
+// Voronoi regions), written here.
+double triangle_distance(Vec3 q, Vec3 a, Vec3 b, Vec3 c) {
+    const Vec3 ab = b - a, ac = c - a, ap = q - a;
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return distance(q, a);
+    const Vec3 bp = q - b;
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return distance(q, b);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return distance(q, a + ab * (d1 / (d1 - d3)));
+    const Vec3 cp = q - c;
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return distance(q, c);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return distance(q, a + ac * (d2 / (d2 - d6)));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return distance(q, b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))));
+    const double denom = 1.0 / (va + vb + vc);
+    return distance(q, a + ab * (vb * denom) + ac * (vc * denom));
+}
+
 }  // namespace
+
+// Hausdorff-style, one side: points of the true swept surface (9 per face: a quarter, half and
+// three quarters across and along) are within the tolerance of the face's two triangles, for a
+// square profile (so the frame's twist shows) along a corkscrew in world-up mode, whose roll
+// against the RMF changes fastest inside its cones, and along the helix with the RMF.
+TEST(Sweep3, SurfaceWithinTolerance) {
+    const std::vector<Vec2> square = {{0.4, -0.4}, {0.4, 0.4}, {-0.4, 0.4}, {-0.4, -0.4}};
+    const Path3 cork = Path3::helix({.axis = {1, 0, 0}, .start = {0, 0, -1}, .radius = 4, .rise = 30, .turns = 3});
+    const Path3 h = Path3::helix({.radius = HR, .rise = two_pi * Hc, .turns = Hturns});
+    const Frames3 cases[] = {Frames3(cork, {.mode = FrameMode::reference_up}), Frames3(h, {.up = {0, 0, 1}})};
+    for (const Frames3& fr : cases) {
+        const double tol = 1e-3;
+        const Mesh3 m = sweep(fr, {.profile = square, .tolerance = tol});
+        double worst = 0.0;
+        for (std::size_t i = 0; i + 1 < m.ring_u.size(); ++i) {
+            for (const double w : {0.25, 0.5, 0.75}) {
+                const Frame3 f = fr.frame(m.ring_u[i] + (m.ring_u[i + 1] - m.ring_u[i]) * w);
+                for (std::size_t j = 0; j < 4; ++j) {
+                    const std::size_t k = (j + 1) % 4;
+                    const Vec3 a = m.positions[i * 4 + j], b = m.positions[i * 4 + k];
+                    const Vec3 c = m.positions[(i + 1) * 4 + j], d = m.positions[(i + 1) * 4 + k];
+                    for (const double e : {0.25, 0.5, 0.75}) {
+                        const Vec2 p = lerp(square[j], square[k], e);
+                        const Vec3 q = f.point + f.normal * p.x + f.binormal * p.y;
+                        worst = std::max(worst, std::min(triangle_distance(q, a, b, c), triangle_distance(q, b, d, c)));
+                    }
+                }
+            }
+        }
+        EXPECT_LE(worst, tol);
+        std::printf("square profile, %s: %zu rings, surface within %.3g of the mesh (tolerance %g)\n",
+                    fr.mode() == FrameMode::reference_up ? "corkscrew, world up" : "helix, RMF", m.ring_u.size(), worst, tol);
+    }
+}
 
 // A tube of r = 0.25 (16 sides) about the 3-turn helix. Each vertex is p(u) + r·(cos·N +
 // sin·B): its distance from p(u) is r to the rounding of coordinates ≲ 4 (a few ulp of 4 ≈
