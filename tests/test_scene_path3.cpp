@@ -1,6 +1,7 @@
 // 3-D paths as JSON (grape/scene_path3.hpp): each kind read from its object is the path its
-// constructor builds from the same numbers (bit for bit), a helix has its closed-form length
-// and ends, and every bad object is refused naming the JSON pointer of the bad value.
+// constructor builds from the same numbers (bit for bit), a helix and an arc have their
+// closed-form lengths and ends, and every bad object is refused naming the JSON pointer of
+// the bad value.
 #include <grape/path3.hpp>
 #include <grape/scene_path3.hpp>
 
@@ -106,6 +107,38 @@ TEST(ScenePath3, ComplexByCuesByLengthAndNested) {
     expect_same(nested, Path3::complex_by_length({Path3::complex_by_length({a, b}), Path3::line({4, 2, 2}, {4, 2, 9})}));
 }
 
+TEST(ScenePath3, HermiteLinearArcProjectileOnPlane) {
+    const std::vector<Vec3> pts{{0, 0, 0}, {2, 1, 0}, {3, 3, 2}};
+    const std::vector<Vec3> tangents{{1, 0, 0}, {0, 1, 1}, {-1, 0, 2}};
+    const char* points = R"("points": [[0, 0, 0], [2, 1, 0], [3, 3, 2]])";
+    const char* tangent_json = R"("tangents": [[1, 0, 0], [0, 1, 1], [-1, 0, 2]])";
+    for (bool closed : {false, true}) {
+        const std::string loop = closed ? R"(, "closed": true})" : "}";
+        expect_same(grape::parse_path3_json(std::string(R"({"kind": "hermite", )") + points + ", " + tangent_json + loop),
+                    Path3::hermite(pts, tangents, closed));
+        expect_same(grape::parse_path3_json(std::string(R"({"kind": "linear", )") + points + loop),
+                    Path3::linear_spline(pts, closed));
+    }
+    const grape::Arc3Spec arc{.center = {1, 0, 0}, .axis = {0, 1, 0}, .start = {0, 0, 1}, .radius = 2, .start_angle = 0.5,
+                              .end_angle = -1.25};
+    expect_same(grape::parse_path3_json(R"({"kind": "arc", "center": [1, 0, 0], "axis": [0, 1, 0], "start": [0, 0, 1],
+                                            "radius": 2, "start_angle": 0.5, "end_angle": -1.25})"),
+                Path3::arc(arc));
+    // The angles default to one full turn from 0: 2πr long (Path3::length's 1e-14 relative).
+    const Path3 circle = grape::parse_path3_json(
+        R"({"kind": "arc", "center": [0, 0, 0], "axis": [0, 0, 1], "start": [1, 0, 0], "radius": 3})");
+    EXPECT_NEAR(circle.length(), 6.0 * grape::pi, 1e-14 * 6.0 * grape::pi);
+    expect_same(grape::parse_path3_json(R"({"kind": "projectile", "position": [0, 0, 1], "velocity": [3, 0, 4],
+                                            "acceleration": [0, 0, -9.8], "seconds": 0.75})"),
+                Path3::projectile({0, 0, 1}, {3, 0, 4}, {0, 0, -9.8}, 0.75));
+    // A 2-D scene path object on the plane x = 5 (y_axis along z): the 2-D segment (0,0)–(3,4)
+    // lands at (5, 0, 0)–(5, 3, 4).
+    const Path3 lifted = grape::parse_path3_json(R"({"kind": "on_plane", "path": {"kind": "linear", "start": [0, 0],
+        "end": [3, 4]}, "origin": [5, 0, 0], "x_axis": [0, 1, 0], "y_axis": [0, 0, 1]})");
+    expect_same(lifted, Path3::on_plane(grape::LinearPath({0, 0}, {3, 4}), {5, 0, 0}, {0, 1, 0}, {0, 0, 1}));
+    EXPECT_EQ(lifted.point(1.0), (Vec3{5, 3, 4}));
+}
+
 // Every refusal: the message starts "path3: ", names the pointer and says why.
 TEST(ScenePath3, ErrorsNameThePointer) {
     const std::pair<const char*, const char*> cases[] = {
@@ -114,7 +147,8 @@ TEST(ScenePath3, ErrorsNameThePointer) {
         {R"({"points": []})", "path3: /: missing field \"kind\""},
         {R"({"kind": 3})", "path3: /kind: expected a string, got a number"},
         {R"({"kind": "spline", "points": []})",
-         "path3: /kind: unknown 3-D path kind \"spline\" (line, quadratic, cubic, helix, catmull-rom, complex)"},
+         "path3: /kind: unknown 3-D path kind \"spline\" (line, quadratic, cubic, helix, catmull-rom, complex, hermite, "
+         "linear, arc, projectile, on_plane)"},
         {R"({"kind": "line", "points": [[0, 0, 0], [1, 1, 1]], "closed": true})",
          "path3: /closed: unknown field \"closed\" (expected one of: kind, points)"},
         {R"({"kind": "line", "points": [[0, 0, 0], [1, 1, 1], [2, 2, 2]]})",
@@ -158,7 +192,21 @@ TEST(ScenePath3, ErrorsNameThePointer) {
          "path3: /cues/2: cues must not decrease (0.5 after 0.6)"},
         {R"({"kind": "complex", "parts": [{"kind": "line", "points": [[0, 0, 0], [1, 0, 0]]}], "cues": "even"})",
          "path3: /cues: expected an array of numbers or \"by_length\", got a string"},
-        // A Path3 constructor's own refusal, placed at the object it was building.
+        {R"({"kind": "hermite", "points": [[0, 0, 0], [1, 0, 0]], "tangents": [[1, 0, 0]]})",
+         "path3: /tangents: one tangent per point: 2 points but 1 tangents"},
+        {R"({"kind": "hermite", "points": [[0, 0, 0], [1, 0, 0]], "tangents": [[1, 0, 0], [1, 0]]})",
+         "path3: /tangents/1: expected a point [x, y, z], got an array of 2"},
+        {R"({"kind": "linear", "points": [[0, 0, 0], [1, 0, 0]], "closed": true})",
+         "path3: /points: too few points: 2 (at least 3)"},
+        {R"({"kind": "projectile", "position": [0, 0, 0], "velocity": [1, 0, 0], "acceleration": [0, 0, -9.8], "seconds": 0})",
+         "path3: /seconds: must be positive (got 0)"},
+        {R"({"kind": "on_plane", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0, 0]}, "origin": [0, 0, 0], "x_axis": [1, 0, 0], "y_axis": [0, 1, 0]})",
+         "path3: /path/end: expected a point [x, y], got an array of 3"},
+        // A Path3 constructor's own refusal, at the field it names (or the object it was building).
+        {R"({"kind": "arc", "center": [0, 0, 0], "axis": [0, 0, 1], "start": [0, 0, 2], "radius": 1})",
+         "path3: /start: parallel to the axis"},
+        {R"({"kind": "on_plane", "path": {"kind": "linear", "start": [0, 0], "end": [1, 0]}, "origin": [0, 0, 0], "x_axis": [1, 0, 0], "y_axis": [1, 1, 0]})",
+         "path3: /y_axis: "},
         {R"({"kind": "line", "points": [[-1e308, 0, 0], [1e308, 0, 0]]})", "path3: /: Path3 (line): the length overflows"},
     };
     for (const auto& [text, expected] : cases) {

@@ -91,5 +91,11 @@ check("a 3-D kind of the 2-D paths", {"kind": "linear", "start": [0, 0, 0], "end
 check("a Catmull-Rom alpha of 0.25", {"kind": "catmull-rom", "points": [[0, 0, 0], [1, 0, 0]], "alpha": 0.25}, False, path3)
 check("a helix without a radius", {"kind": "helix", "center": [0, 0, 0], "axis": [0, 0, 1], "start": [1, 0, 0],
                                    "turns": 1}, False, path3)
+check("a 2-D path on a plane", {"kind": "on_plane", "path": {"kind": "circle", "center": [0, 0], "radius": 1},
+                                "origin": [0, 0, 0], "x_axis": [1, 0, 0], "y_axis": [0, 0, 1]}, True, path3)
+check("a 2-D path name on a plane", {"kind": "on_plane", "path": "track", "origin": [0, 0, 0], "x_axis": [1, 0, 0],
+                                     "y_axis": [0, 0, 1]}, False, path3)
+check("a projectile without seconds", {"kind": "projectile", "position": [0, 0, 0], "velocity": [1, 0, 0],
+                                       "acceleration": [0, 0, -9.8]}, False, path3)
 sys.exit(1 if failures else 0)
 PY

@@ -34,7 +34,7 @@ void demo_pictures(const DemoContext& context);
 #endif
 
 #ifdef GRAPE_TOOL_PATH3
-void register_path3_commands(CLI::App& app);  ///< `grape path3 length|point|closest|frame JSON ...`
+void register_path3_commands(CLI::App& app);  ///< `grape path3 length|point|closest|frame|sweep JSON ...`
 #endif
 
 #ifdef GRAPE_TOOL_SAMPLE

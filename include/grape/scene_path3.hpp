@@ -20,9 +20,11 @@ namespace grape {
 /// @{
 
 /// A 3-D path from JSON text holding one path object: `line`, `quadratic`, `cubic`, `helix`,
-/// `catmull-rom` or `complex` (parts nest up to 32 deep). Unknown fields, wrong array sizes,
-/// numbers that are not finite and degenerate shapes (a zero axis, a start along the axis) are
-/// refused: grape::Error "path3: POINTER: WHY", or "path3: JSON syntax error at byte N: ...".
+/// `catmull-rom`, `hermite`, `linear` (a linear spline), `arc`, `projectile`, `on_plane` (a 2-D
+/// scene path on a plane) or `complex` (parts nest up to 32 deep). Unknown fields, wrong array
+/// sizes, numbers that are not finite and degenerate shapes (a zero axis, a start along the
+/// axis) are refused: grape::Error "path3: POINTER: WHY", or "path3: JSON syntax error at byte
+/// N: ...".
 GRAPE_SCENE_API Path3 parse_path3_json(std::string_view json);
 
 /// @}

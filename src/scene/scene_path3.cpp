@@ -3,6 +3,7 @@
 #include "scene_json.hpp"
 
 #include <grape/error.hpp>
+#include <grape/math.hpp>
 #include <grape/scene_path3.hpp>
 
 #include <string>
@@ -94,6 +95,41 @@ Path3 complex3(const json& j, const std::string& pointer, int depth) {
     return Path3::complex(std::move(parts), std::move(cues));
 }
 
+Path3 hermite3(const json& j, const std::string& pointer) {
+    object(j, pointer, {"kind", "points", "tangents", "closed"});
+    const bool closed = bool_field(j, pointer, "closed", false);
+    const std::vector<Vec3> points = points3_field(j, pointer, "hermite", closed ? 3 : 2, false);
+    const json& t = array_field(j, pointer, "tangents");
+    const std::string tp = child(pointer, "tangents");
+    if (t.size() != points.size())
+        fail(tp, "one tangent per point: " + std::to_string(points.size()) + " points but " + std::to_string(t.size()) +
+                     " tangents");
+    std::vector<Vec3> tangents;
+    tangents.reserve(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i) tangents.push_back(vec3(t[i], child(tp, i)));
+    return Path3::hermite(points, tangents, closed);
+}
+
+Path3 arc3(const json& j, const std::string& pointer) {
+    object(j, pointer, {"kind", "center", "axis", "start", "radius", "start_angle", "end_angle"});
+    Arc3Spec spec;
+    spec.center = vec3_field3(j, pointer, "center");
+    spec.axis = vec3_field3(j, pointer, "axis");
+    spec.start = vec3_field3(j, pointer, "start");
+    spec.radius = positive_field(j, pointer, "radius");
+    spec.start_angle = number_field(j, pointer, "start_angle", 0.0);
+    spec.end_angle = number_field(j, pointer, "end_angle", 2.0 * pi);
+    return Path3::arc(spec);
+}
+
+// A 2-D path object (any kind a scene holds, SVG data strictly) on a plane in space.
+Path3 on_plane3(const json& j, const std::string& pointer, int depth) {
+    object(j, pointer, {"kind", "path", "origin", "x_axis", "y_axis"});
+    const Path flat = PathReader{}.read_any(required(j, pointer, "path"), child(pointer, "path"), depth + 1);
+    return Path3::on_plane(flat, vec3_field3(j, pointer, "origin"), vec3_field3(j, pointer, "x_axis"),
+                           vec3_field3(j, pointer, "y_axis"));
+}
+
 Path3 kind3(const json& j, const std::string& pointer, const std::string& kind, int depth) {
     if (kind == "line") {
         object(j, pointer, {"kind", "points"});
@@ -113,8 +149,22 @@ Path3 kind3(const json& j, const std::string& pointer, const std::string& kind, 
     if (kind == "helix") return helix3(j, pointer);
     if (kind == "catmull-rom") return catmull_rom3(j, pointer);
     if (kind == "complex") return complex3(j, pointer, depth);
-    fail(child(pointer, "kind"),
-         "unknown 3-D path kind \"" + kind + "\" (line, quadratic, cubic, helix, catmull-rom, complex)");
+    if (kind == "hermite") return hermite3(j, pointer);
+    if (kind == "linear") {
+        object(j, pointer, {"kind", "points", "closed"});
+        const bool closed = bool_field(j, pointer, "closed", false);
+        return Path3::linear_spline(points3_field(j, pointer, kind, closed ? 3 : 2, false), closed);
+    }
+    if (kind == "arc") return arc3(j, pointer);
+    if (kind == "projectile") {
+        object(j, pointer, {"kind", "position", "velocity", "acceleration", "seconds"});
+        return Path3::projectile(vec3_field3(j, pointer, "position"), vec3_field3(j, pointer, "velocity"),
+                                 vec3_field3(j, pointer, "acceleration"), positive_field(j, pointer, "seconds"));
+    }
+    if (kind == "on_plane") return on_plane3(j, pointer, depth);
+    fail(child(pointer, "kind"), "unknown 3-D path kind \"" + kind +
+                                     "\" (line, quadratic, cubic, helix, catmull-rom, complex, hermite, linear, arc, "
+                                     "projectile, on_plane)");
 }
 
 }  // namespace
@@ -134,7 +184,15 @@ Path3 read_path3(const json& j, const std::string& pointer, int depth) {
     } catch (const Error& e) {
         const std::string what = e.what();
         if (what.rfind("scene: ", 0) == 0) throw;
-        fail(pointer, what);  // a Path3 constructor's own message (a length that overflows), placed
+        // A Path3 constructor's own message, "Path3::arc: start: parallel to the axis": at the
+        // field it names when the object has that field, else at the object.
+        const std::size_t name_at = what.find(": ");
+        const std::size_t name_end = name_at == std::string::npos ? name_at : what.find(": ", name_at + 2);
+        if (name_end != std::string::npos) {
+            const std::string field = what.substr(name_at + 2, name_end - name_at - 2);
+            if (j.contains(field)) fail(child(pointer, field), what.substr(name_end + 2));
+        }
+        fail(pointer, what);
     }
 }
 
