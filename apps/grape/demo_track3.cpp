@@ -14,10 +14,11 @@
 namespace grape::tool {
 namespace {
 
-// Cabinet projection, z up: x to the right, y receding at 30° above the horizontal at half scale.
-constexpr double recede = 0.5;
-const double recede_x = recede * std::cos(pi / 6.0);
-const double recede_y = recede * std::sin(pi / 6.0);
+// Oblique projection, z up: x to the right, y receding at 40° above the horizontal at 0.8 scale
+// (steeper than cabinet, so that the helix's turns stand apart).
+constexpr double recede = 0.8;
+const double recede_x = recede * std::cos(40.0 * pi / 180.0);
+const double recede_y = recede * std::sin(40.0 * pi / 180.0);
 
 Vec2 project3(Vec3 p) { return {p.x + recede_x * p.y, -(p.z + recede_y * p.y)}; }
 
