@@ -209,7 +209,10 @@ TEST(ScenePath3, ErrorsNameThePointer) {
          "path3: /y_axis: "},
         {R"({"kind": "line", "points": [[-1e308, 0, 0], [1e308, 0, 0]]})", "path3: /: Path3 (line): the length overflows"},
     };
-    for (const auto& [text, expected] : cases) {
+    for (const auto& entry : cases) {
+        // Named copies: a lambda may not capture a structured binding in clang 14.
+        const char* text = entry.first;
+        const std::string expected = entry.second;
         const std::string message = error_text([&] { (void)grape::parse_path3_json(text); });
         EXPECT_EQ(message.rfind(expected, 0), 0u) << text << "\nmessage:  " << message << "\nexpected: " << expected;
     }
