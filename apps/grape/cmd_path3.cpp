@@ -95,6 +95,9 @@ void print_array(const std::vector<std::string>& items) {
 // The values of --at: parameters u in [0, 1], or with `by_length` distances s in [0, length].
 std::vector<double> parameters(const std::string& who, const std::string& text, const Path3& path, bool by_length) {
     const std::vector<double> values = number_list(who + ": --at", text);
+    // As `grape sample` bounds its times: the answer is one line per value.
+    if (values.size() > 1000000)
+        throw Error(who + ": --at: at most 1000000 values (got " + std::to_string(values.size()) + ")");
     const double total = path.length();
     for (double v : values) {
         if (by_length && (v < 0.0 || v > total))
