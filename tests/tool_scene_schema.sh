@@ -1,8 +1,10 @@
 #!/bin/sh
 # docs/scene.schema.json against the scenes grape reads: every scenes/*.json and every JSON
 # example in docs/scene-format.md must validate, and a scene with a misspelt field, a child
-# of two kinds or a bad position type must not. Exits 0 (as expected), 1 (not) or 77
-# (skipped: python3 with jsonschema, Debian's python3-jsonschema, is missing).
+# of two kinds or a bad position type must not; every 3-D path example (after <!-- path3 -->)
+# must validate as $defs/path3, and a 3-D path with a 2-D point or a misspelt field must not.
+# Exits 0 (as expected), 1 (not) or 77 (skipped: python3 with jsonschema, Debian's
+# python3-jsonschema, is missing).
 #   tests/tool_scene_schema.sh SCHEMA FORMAT_DOC SCENES_DIR
 set -u
 schema=$1
@@ -22,9 +24,9 @@ jsonschema.Draft202012Validator.check_schema(schema)
 validator = jsonschema.Draft202012Validator(schema)
 failures = 0
 
-def check(label, scene, valid):
+def check(label, scene, valid, against=validator):
     global failures
-    errors = sorted(validator.iter_errors(scene), key=lambda e: list(e.path))
+    errors = sorted(against.iter_errors(scene), key=lambda e: list(e.path))
     if bool(errors) == valid:
         failures += 1
         why = "; ".join("/" + "/".join(map(str, e.path)) + ": " + e.message for e in errors[:3])
@@ -35,7 +37,10 @@ def check(label, scene, valid):
 files = sorted(glob.glob(scenes_dir + "/*.json"))
 for f in files:
     check(f, json.load(open(f, encoding="utf-8")), True)
-blocks = re.findall(r"```json\n(.*?)```", open(doc_file, encoding="utf-8").read(), re.S)
+# A block preceded by <!-- path3 --> is a 3-D path object, not a scene.
+blocks, blocks3 = [], []
+for m in re.finditer(r"(<!-- path3 -->\n)?```json\n(.*?)```", open(doc_file, encoding="utf-8").read(), re.S):
+    (blocks3 if m.group(1) else blocks).append(m.group(2))
 for i, text in enumerate(blocks):
     check(doc_file + " example " + str(i + 1), json.loads(text), True)
 if len(files) < 7 or len(blocks) < 2:
@@ -68,5 +73,29 @@ check("a colour property", tweens(props=({"name": "c", "type": "color", "value":
 check("a colour space on a number", tweens(props=({"name": "x", "value": 0, "space": "oklab"},)), False)
 check("a vec2 property holding a number", tweens(props=({"name": "p", "type": "vec2", "value": 0},)), False)
 check("a turn on a vec2", tweens(props=({"name": "p", "type": "vec2", "value": [0, 0], "turn": "every"},)), False)
+# 3-D path objects (the schema's $defs/path3): the format's examples marked <!-- path3 -->.
+path3 = jsonschema.Draft202012Validator({"$schema": schema["$schema"], "$defs": schema["$defs"], "$ref": "#/$defs/path3"})
+for i, text in enumerate(blocks3):
+    check(doc_file + " 3-D path example " + str(i + 1), json.loads(text), True, path3)
+if len(blocks3) < 2:
+    print("FAIL: expected at least 2 3-D path examples, found", len(blocks3))
+    failures += 1
+line3 = {"kind": "line", "points": [[0, 0, 0], [1, 2, 3]]}
+check("a 3-D complex path of a line and a nested complex path",
+      {"kind": "complex", "parts": [line3, {"kind": "complex", "parts": [line3]}], "cues": [0, 0.5]}, True, path3)
+check("a 3-D line with a 2-D point", {"kind": "line", "points": [[0, 0], [1, 2, 3]]}, False, path3)
+check("a 3-D line with three points", {"kind": "line", "points": [[0, 0, 0], [1, 2, 3], [4, 5, 6]]}, False, path3)
+check("a misspelt 3-D field", {"kind": "helix", "center": [0, 0, 0], "axis": [0, 0, 1], "start": [1, 0, 0],
+                               "radius": 1, "turns": 1, "rise": 2}, False, path3)
+check("a 3-D kind of the 2-D paths", {"kind": "linear", "start": [0, 0, 0], "end": [1, 0, 0]}, False, path3)
+check("a Catmull-Rom alpha of 0.25", {"kind": "catmull-rom", "points": [[0, 0, 0], [1, 0, 0]], "alpha": 0.25}, False, path3)
+check("a helix without a radius", {"kind": "helix", "center": [0, 0, 0], "axis": [0, 0, 1], "start": [1, 0, 0],
+                                   "turns": 1}, False, path3)
+check("a 2-D path on a plane", {"kind": "on_plane", "path": {"kind": "circle", "center": [0, 0], "radius": 1},
+                                "origin": [0, 0, 0], "x_axis": [1, 0, 0], "y_axis": [0, 0, 1]}, True, path3)
+check("a 2-D path name on a plane", {"kind": "on_plane", "path": "track", "origin": [0, 0, 0], "x_axis": [1, 0, 0],
+                                     "y_axis": [0, 0, 1]}, False, path3)
+check("a projectile without seconds", {"kind": "projectile", "position": [0, 0, 0], "velocity": [1, 0, 0],
+                                       "acceleration": [0, 0, -9.8]}, False, path3)
 sys.exit(1 if failures else 0)
 PY

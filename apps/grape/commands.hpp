@@ -33,6 +33,10 @@ void register_render_command(CLI::App& app);
 void demo_pictures(const DemoContext& context);
 #endif
 
+#ifdef GRAPE_TOOL_PATH3
+void register_path3_commands(CLI::App& app);  ///< `grape path3 length|point|closest|frame|sweep JSON ...`
+#endif
+
 #ifdef GRAPE_TOOL_SAMPLE
 void register_sample_command(CLI::App& app);  ///< `grape sample SCENE --at T,...`
 #endif

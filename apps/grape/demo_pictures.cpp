@@ -1,6 +1,7 @@
 // The demo's pictures (`grape demo`, render module): every path kind, the seed's splines,
-// the arc-length comparison, the complex paths, a tile-sheet sprite and the parabola. The
-// scenes come from the catalogue by name (scenes/catalogue.hpp), as the tests take them.
+// the arc-length comparison, the complex paths, a tile-sheet sprite, the parabola and a 3-D
+// track with its frames. The scenes come from the catalogue by name (scenes/catalogue.hpp),
+// as the tests take them.
 #include "commands.hpp"
 
 #include <grape/error.hpp>
@@ -9,6 +10,7 @@
 #include <grape/sprite.hpp>
 
 #include "catalogue.hpp"
+#include "demo_track3.hpp"
 #include "scene_draw.hpp"
 #include "seed_paths.hpp"
 #include "sprite_sheets.hpp"
@@ -236,6 +238,14 @@ void demo_pictures(const DemoContext& context) {
         save(canvas, "parabola.png", "the parabola by both methods", figures);
     }
 #endif
+
+    // 7. A 3-D track in an oblique projection: the rotation-minimizing ribbon keeps its up side
+    //    up, the Frenet ribbon turns over at an inflection.
+    {
+        std::string figures;
+        const Canvas canvas = track3_picture(figures);
+        save(canvas, "track3d.png", "3-D track: RMF and Frenet ribbons", figures);
+    }
 
     std::ostream& out = context.out;
     out << "\nPictures (render module)\n";

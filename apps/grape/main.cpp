@@ -71,6 +71,9 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     grape::tool::register_demo_command(app);
     grape::tool::register_path_commands(app);
+#ifdef GRAPE_TOOL_PATH3
+    grape::tool::register_path3_commands(app);
+#endif
     grape::tool::register_ease_command(app);
     grape::tool::register_sprite_commands(app);
 #ifdef GRAPE_TOOL_DYNAMICS

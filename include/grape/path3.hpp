@@ -1,14 +1,19 @@
-// grape — 3-D paths: lines, Béziers, Catmull–Rom splines, an exact helix and complex paths,
-// with exact arc length, Frenet data and rotation-minimizing frames.
+// grape — 3-D paths: lines, Béziers, Hermite, linear and Catmull–Rom splines, exact circular
+// arcs and helices, projectiles, 2-D paths lifted onto a plane, complex paths, arc-length
+// reparametrizations and slices; with exact arc length, tight bounds, flattening, Frenet data,
+// rotation-minimizing frames and a plain-value description of every path (describe, from_spec).
 #pragma once
 
 #include <grape/export_path.hpp>
 #include <grape/path.hpp>
 #include <grape/vec3.hpp>
 
+#include <array>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace grape {
@@ -18,8 +23,22 @@ class Path3Node;
 struct Path3Access;
 }
 
-/// Every kind of 3-D path.
-enum class Path3Kind { line, quadratic_bezier, cubic_bezier, catmull_rom, helix, complex };
+/// Every kind of 3-D path, in the order of Path3Spec's alternatives.
+enum class Path3Kind {
+    line,
+    quadratic_bezier,
+    cubic_bezier,
+    catmull_rom,
+    helix,
+    complex,
+    hermite,
+    linear_spline,
+    arc,
+    projectile,
+    on_plane,
+    reparametrized,
+    slice,
+};
 
 /// The kind's name in snake_case ("cubic_bezier").
 GRAPE_PATH_API std::string_view to_string(Path3Kind kind) noexcept;
@@ -33,6 +52,43 @@ struct HelixSpec {
     double radius = 1.0;       ///< world units, > 0
     double rise = 0.0;         ///< advance along the axis per turn (negative: left-handed; 0: a circle)
     double turns = 1.0;        ///< number of turns, > 0
+};
+
+/// An exact arc of a circle: point = center + radius·(e1·cos θ + e2·sin θ), θ going linearly
+/// from `start_angle` (u = 0) to `end_angle` (u = 1), where e1 is `start` without its part
+/// along `axis`, normalized, and e2 = axis × e1 (counter-clockwise seen from the axis' tip).
+/// Either direction, several turns when the angles are more than 2π apart; equal angles give
+/// a point standing still.
+struct Arc3Spec {
+    Vec3 center{};             ///< the circle's centre
+    Vec3 axis{0.0, 0.0, 1.0};  ///< normal of the circle's plane (any length > 0)
+    Vec3 start{1.0, 0.0, 0.0}; ///< direction of angle 0 from the centre; its part along the axis is dropped
+    double radius = 1.0;       ///< world units, > 0
+    double start_angle = 0.0;  ///< radians, at u = 0
+    double end_angle = 6.283185307179586;  ///< radians, at u = 1 (default: one full turn)
+};
+
+/// An axis-aligned box in 3-D; `min` ≤ `max` componentwise once anything has been added.
+struct Bounds3 {
+    /// The smallest x, y and z (+∞ while empty).
+    Vec3 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity()};
+    /// The largest x, y and z (−∞ while empty).
+    Vec3 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+             -std::numeric_limits<double>::infinity()};
+    /// Grows the box to hold p.
+    void add(Vec3 p) noexcept {
+        min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
+        max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
+    }
+    /// Grows the box to hold b.
+    void add(const Bounds3& b) noexcept { add(b.min); add(b.max); }
+    /// p inside or on the box, within tolerance.
+    bool contains(Vec3 p, double tolerance = 0.0) const noexcept {
+        return p.x >= min.x - tolerance && p.x <= max.x + tolerance && p.y >= min.y - tolerance &&
+               p.y <= max.y + tolerance && p.z >= min.z - tolerance && p.z <= max.z + tolerance;
+    }
+    Vec3 size() const noexcept { return max - min; }  ///< max − min
 };
 
 /// Frenet data at a point. Where the curvature is zero (a straight stretch, an inflection) or
@@ -78,6 +134,28 @@ public:
     /// A complex path whose cues come from the parts' lengths (zero-length parts get empty
     /// spans; if all are zero, u is shared evenly).
     static Path3 complex_by_length(std::vector<Path3> parts);
+    /// Cubic Hermite spline through ≥ 2 points with one tangent per point (d/dt of each
+    /// segment's local t in [0, 1], as the 2-D HermiteSplinePath); each segment takes an equal
+    /// share of u. `closed` (≥ 3 points) adds the segment from the last point to the first.
+    static Path3 hermite(std::span<const Vec3> points, std::span<const Vec3> tangents, bool closed = false);
+    /// Straight segments through ≥ 2 points (`closed`: ≥ 3, and back to the first), each
+    /// segment an equal share of u, at constant speed within a segment.
+    static Path3 linear_spline(std::span<const Vec3> points, bool closed = false);
+    /// An exact circular arc (see Arc3Spec): length radius·|end_angle − start_angle|, d1–d3
+    /// in closed form.
+    static Path3 arc(const Arc3Spec& spec);
+    /// A projectile: position + velocity·t + ½·acceleration·t², t = u·seconds (seconds > 0):
+    /// an exact parabola (evaluated as the quadratic Bézier it is).
+    static Path3 projectile(Vec3 position, Vec3 velocity, Vec3 acceleration, double seconds);
+    /// Any 2-D path (every kind, SVG paths included) on the plane through `origin` spanned by
+    /// `x_axis` and `y_axis`: point(u) = origin + x_axis·p.x + y_axis·p.y with p = path.point(u),
+    /// and d1, d2 the same image of the 2-D path's. The axes must be orthogonal and of equal
+    /// length s > 0 (both within 1e-12 relative; unit axes keep the 2-D sizes), so distances
+    /// scale by s = |x_axis|: length() is s·path.length(), length_at and u_at_length are the
+    /// 2-D path's scaled. The 2-D paths give no third derivative: d3 is the image of a central
+    /// difference of d2 inside the piece (one-sided at its ends), to ~1e-7 relative; it lies in
+    /// the plane, so the torsion stays 0 to rounding.
+    static Path3 on_plane(Path path, Vec3 origin, Vec3 x_axis, Vec3 y_axis);
 
     Path3Kind kind() const noexcept;  ///< what the path was built as
     Vec3 point(double u) const noexcept;  ///< position at u
@@ -101,6 +179,28 @@ public:
     /// The u values, 0 and 1 included, where a piece starts or ends (spline segments, parts
     /// of a complex path): derivatives may jump there, and nowhere else.
     std::span<const double> breaks() const noexcept;
+
+    /// Tight axis-aligned box of the path over [0, 1], computed once: the exact extremes of
+    /// each piece (derivative roots in closed form for Béziers, splines, arcs and helices;
+    /// for lifted 2-D paths, slices and the rest, d1's roots bracketed by 64 samples per piece
+    /// and bisected to adjacent doubles).
+    const Bounds3& bounds() const noexcept;
+
+    /// A polyline from point(0) to point(1) with every point of the path within `tolerance`
+    /// of it: intervals are halved until the chord error bound sup|d2|·h²/8 is within the
+    /// tolerance (lifted 2-D paths use the 2-D flattening; a complex path's parts are
+    /// flattened one by one, joined by a straight segment where they do not meet). Tolerances
+    /// below 1e-12 of the path's size are raised to it. Throws grape::Error if the tolerance
+    /// is not positive and finite.
+    std::vector<Vec3> flatten(double tolerance) const;
+
+    /// The same shape at constant speed: point(u) of the result lies at arc length u·length()
+    /// along this path (to 1e-9·length()), |d1| = length() and d2, d3 by the chain rule. Built
+    /// once: a table of spans with the quintic Hermite model of the inverse of the arc length,
+    /// each checked against quadrature; spans where the path stops (zero speed), or whose
+    /// model misses, solve u_at_length instead. Reparametrizing a reparametrized path returns
+    /// it unchanged.
+    Path3 reparametrized() const;
 
 private:
     explicit Path3(std::shared_ptr<const detail::Path3Node> node) noexcept;
@@ -174,5 +274,87 @@ private:
     Path3 path_;
     std::vector<Knot> knots_;
 };
+
+/// The part of `path` between u0 and u1 (0 ≤ u0 < u1 ≤ 1, finite; throws grape::Error
+/// otherwise) as a path of its own (kind slice): point(v) = path.point(u0 + v·(u1 − u0)),
+/// exactly path.point(u1) at v = 1, derivatives by the chain rule, length and bounds those of
+/// the sub-range.
+GRAPE_PATH_API Path3 slice(const Path3& path, double u0, double u1);
+
+// --- what a path is: plain values -------------------------------------------------------
+
+/// Path3::line's end points.
+struct Line3Spec {
+    Vec3 a;  ///< point at u = 0
+    Vec3 b;  ///< point at u = 1
+};
+/// Path3::quadratic_bezier's control points.
+struct QuadraticBezier3Spec {
+    std::array<Vec3, 3> control;  ///< p0, p1, p2
+};
+/// Path3::cubic_bezier's control points.
+struct CubicBezier3Spec {
+    std::array<Vec3, 4> control;  ///< p0, p1, p2, p3
+};
+/// Path3::catmull_rom's arguments.
+struct CatmullRom3Spec {
+    std::vector<Vec3> points;               ///< the points passed through
+    CatmullRom type = CatmullRom::uniform;  ///< knot spacing
+    bool closed = false;                    ///< joined back to the first point
+};
+/// Path3::complex's parts and cues (complex_by_length gives the cues it computed).
+struct Complex3Spec {
+    std::vector<Path3> parts;  ///< played one after another
+    std::vector<double> cues;  ///< one per part
+};
+/// Path3::hermite's arguments.
+struct Hermite3Spec {
+    std::vector<Vec3> points;    ///< the points passed through
+    std::vector<Vec3> tangents;  ///< one per point
+    bool closed = false;         ///< joined back to the first point
+};
+/// Path3::linear_spline's arguments.
+struct LinearSpline3Spec {
+    std::vector<Vec3> points;  ///< the corners
+    bool closed = false;       ///< joined back to the first point
+};
+/// Path3::projectile's arguments.
+struct Projectile3Spec {
+    Vec3 position;         ///< at t = 0, world units
+    Vec3 velocity;         ///< at t = 0, units per second
+    Vec3 acceleration;     ///< constant (gravity), units per second²
+    double seconds = 1.0;  ///< time at u = 1 (> 0)
+};
+/// Path3::on_plane's arguments.
+struct OnPlane3Spec {
+    Path path;                    ///< the 2-D path (describe it in turn)
+    Vec3 origin;                  ///< image of the 2-D origin
+    Vec3 x_axis{1.0, 0.0, 0.0};   ///< image of the 2-D unit x
+    Vec3 y_axis{0.0, 1.0, 0.0};   ///< image of the 2-D unit y
+};
+/// Path3::reparametrized's source.
+struct Reparametrized3Spec {
+    Path3 source;  ///< the path reparametrized
+};
+/// slice's arguments.
+struct Slice3Spec {
+    Path3 source;     ///< the path sliced
+    double u0 = 0.0;  ///< start of the sub-range
+    double u1 = 1.0;  ///< end of the sub-range
+};
+
+/// Every 3-D kind with its parameters, in Path3Kind's order (`spec.index()` is the kind).
+using Path3Spec = std::variant<Line3Spec, QuadraticBezier3Spec, CubicBezier3Spec, CatmullRom3Spec, HelixSpec,
+                               Complex3Spec, Hermite3Spec, LinearSpline3Spec, Arc3Spec, Projectile3Spec,
+                               OnPlane3Spec, Reparametrized3Spec, Slice3Spec>;
+
+/// The kind and the arguments a path was built from (copies point lists; a query, not for
+/// per-frame loops).
+GRAPE_PATH_API Path3Spec describe(const Path3& path);
+/// The path a spec describes: from_spec(describe(p)) evaluates bit for bit like p. Throws
+/// grape::Error as the kind's factory does for invalid parameters.
+GRAPE_PATH_API Path3 from_spec(const Path3Spec& spec);
+/// The kind a spec describes.
+inline Path3Kind kind_of(const Path3Spec& spec) noexcept { return static_cast<Path3Kind>(spec.index()); }
 
 }  // namespace grape

@@ -35,6 +35,87 @@ void Path3Node::finish() {
         throw Error("Path3 (" + std::string(to_string(kind_)) +
                     "): the length overflows a double; coordinates or parameters are too large");
     }
+    bounds_ = compute_bounds();
+}
+
+namespace {
+double axis_of3(Vec3 v, int axis) noexcept { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
+}  // namespace
+
+Bounds3 Path3Node::compute_bounds() const {
+    Bounds3 box;
+    constexpr int samples = 64;
+    for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) {
+        const double a = breaks_[i], b = breaks_[i + 1];
+        box.add(point(a));
+        box.add(point(b));
+        for (int axis = 0; axis < 3; ++axis) {
+            double u0 = a, f0 = axis_of3(d1(a), axis);
+            for (int k = 1; k <= samples; ++k) {
+                const double u1 = k == samples ? b : a + (b - a) * k / samples;
+                const double f1 = axis_of3(d1(u1), axis);
+                if (f0 == 0.0) box.add(point(u0));
+                if ((f0 < 0.0 && f1 > 0.0) || (f0 > 0.0 && f1 < 0.0)) {
+                    // Bisection to adjacent doubles: each step halves the bracket (≤ 64 steps).
+                    double lo = u0, hi = u1;
+                    const bool rising = f0 < 0.0;
+                    for (int step = 0; step < 64; ++step) {
+                        const double mid = 0.5 * (lo + hi);
+                        if (!(mid > lo && mid < hi)) break;
+                        ((axis_of3(d1(mid), axis) < 0.0) == rising ? lo : hi) = mid;
+                    }
+                    box.add(point(lo));
+                    box.add(point(hi));
+                }
+                u0 = u1;
+                f0 = f1;
+            }
+        }
+    }
+    return box;
+}
+
+void Path3Node::append_flattened(double tolerance, std::vector<Vec3>& out) const {
+    struct Span {
+        double a, b;
+        int depth;
+    };
+    // 40 halvings of a piece leave intervals below 1e-12 of it: the depth bounds the work for
+    // a bound that does not shrink (an infinite one from a 2-D kind without derivative bounds,
+    // where the deviation measured at three inner points decides instead).
+    constexpr int max_depth = 40;
+    std::vector<Span> stack;
+    for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) {
+        stack.push_back({breaks_[i], breaks_[i + 1], 0});
+        while (!stack.empty()) {
+            const Span s = stack.back();
+            stack.pop_back();
+            const double h = s.b - s.a;
+            const double bound = d2_bound(s.a, s.b);
+            bool flat;
+            if (std::isfinite(bound)) {
+                flat = bound * h * h / 8.0 <= tolerance;
+            } else {
+                const Vec3 pa = point(s.a), pb = point(s.b);
+                double worst = 0.0;
+                for (const double t : {0.25, 0.5, 0.75}) {
+                    const Vec3 p = point(s.a + h * t);
+                    const Vec3 chord = pb - pa;
+                    const double cc = dot(chord, chord);
+                    const double w = cc > 0.0 ? std::clamp(dot(p - pa, chord) / cc, 0.0, 1.0) : 0.0;
+                    worst = std::max(worst, distance(p, pa + chord * w));
+                }
+                flat = s.depth >= 3 && worst <= 0.5 * tolerance;
+            }
+            if (flat || s.depth >= max_depth || !(h > 0.0)) {
+                out.push_back(point(s.b));
+                continue;
+            }
+            const double m = s.a + 0.5 * h;
+            stack.push_back({m, s.b, s.depth + 1});
+            stack.push_back({s.a, m, s.depth + 1});
+        }
+    }
 }
 
 double Path3Node::integrate_speed(double a, double b) const noexcept {

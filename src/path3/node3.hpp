@@ -1,4 +1,5 @@
-// grape — the nodes behind Path3 handles: what every kind shares (breaks, arc length).
+// grape — the nodes behind Path3 handles: what every kind shares (breaks, arc length, bounds,
+// flattening, the description it was built from).
 #pragma once
 
 #include <grape/path3.hpp>
@@ -27,16 +28,26 @@ public:
     // An upper bound on |d2| over [a, b], a sub-interval of one piece (between two breaks).
     virtual double d2_bound(double a, double b) const noexcept = 0;
     virtual double u_at_length(double s) const noexcept;
+    // Appends points after point(0) up to point(1), every point of the path within
+    // `tolerance` of the polyline. Default: the chord error bound d2_bound·h²/8 per interval.
+    virtual void append_flattened(double tolerance, std::vector<Vec3>& out) const;
 
     double length() const noexcept { return length_; }
     const std::vector<double>& breaks() const noexcept { return breaks_; }
+    const Bounds3& bounds() const noexcept { return bounds_; }
+    const Path3Spec& spec() const noexcept { return spec_; }
+    // The factories record what they were given, once, before the node is shared.
+    void set_spec(Path3Spec spec) { spec_ = std::move(spec); }
 
 protected:
     // Interior u where derivatives may jump, increasing, inside (0, 1).
     virtual void interior_breaks(std::vector<double>& out) const;
     // Kinds with a closed-form length set it in length_ themselves and return true.
     virtual bool closed_form_length() { return false; }
-    // Called last by every constructor: breaks, the per-piece lengths.
+    // Tight box over [0, 1]. Default: per piece and axis, the roots of that component of d1
+    // bracketed by 64 samples and bisected to the last bit, and the piece's ends.
+    virtual Bounds3 compute_bounds() const;
+    // Called last by every constructor: breaks, the per-piece lengths, the bounds.
     void finish();
 
     double length_ = 0.0;
@@ -48,6 +59,8 @@ private:
     std::vector<double> breaks_;
     std::vector<double> cumulative_;  // length at each break
     double quad_tolerance_ = 0.0;
+    Bounds3 bounds_;
+    Path3Spec spec_;
 };
 
 struct Path3Access {

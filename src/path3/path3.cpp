@@ -88,6 +88,44 @@ private:
     void interior_breaks(std::vector<double>& out) const override {
         for (std::size_t i = 1; i < pieces_.size(); ++i) out.push_back(static_cast<double>(i) / n_);
     }
+    // Per piece and axis, the roots in (0, 1) of that component of d1, a Bernstein polynomial
+    // of degree ≤ 2, and the piece's ends.
+    Bounds3 compute_bounds() const override {
+        Bounds3 box;
+        for (const Bezier3Piece& s : pieces_) {
+            box.add(s.p[0]);
+            box.add(s.p[static_cast<std::size_t>(s.degree)]);
+            auto add_at = [&](double t) {
+                if (t > 0.0 && t < 1.0) box.add(casteljau3(s.p, s.degree + 1, t));
+            };
+            for (int axis = 0; axis < 3; ++axis) {
+                auto c = [axis](Vec3 v) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
+                if (s.degree == 2) {
+                    const double q0 = c(s.q[0]), q1 = c(s.q[1]);
+                    if (q0 != q1) add_at(q0 / (q0 - q1));
+                } else if (s.degree == 3) {
+                    // q0·(1−t)² + 2·q1·t(1−t) + q2·t² = a·t² + b·t + q0.
+                    const double q0 = c(s.q[0]), q1 = c(s.q[1]), q2 = c(s.q[2]);
+                    const double a = q0 - 2.0 * q1 + q2, b = 2.0 * (q1 - q0);
+                    if (a == 0.0) {
+                        if (b != 0.0) add_at(-q0 / b);
+                        continue;
+                    }
+                    const double disc = b * b - 4.0 * a * q0;
+                    if (disc < 0.0) continue;
+                    // The root away from cancellation first, the other from the product of roots.
+                    const double r = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+                    if (r != 0.0) {
+                        add_at(r / a);
+                        add_at(q0 / r);
+                    } else {
+                        add_at(0.0);
+                    }
+                }
+            }
+        }
+        return box;
+    }
     // The piece holding u (the later one at a shared end) and the local t in [0, 1].
     const Bezier3Piece& at(double u, double& t) const noexcept {
         const double x = std::clamp(u, 0.0, 1.0) * n_;
@@ -99,63 +137,78 @@ private:
     double n_ = 1.0;
 };
 
-class Helix3Node final : public Path3Node {
+// Circular motion about an axis with an optional steady climb along it: θ = θ0 + dθ·u,
+// point = center + radius·(e1·cos θ + e2·sin θ) + axis·(climb·u). An arc climbs 0; a helix
+// starts at θ0 = 0.
+class Circular3Node final : public Path3Node {
 public:
-    explicit Helix3Node(const HelixSpec& h) : Path3Node(Path3Kind::helix), spec_(h) {
-        auto bad = [](const std::string& what) { return Error("Path3::helix: " + what); };
-        if (!is_finite(h.center)) throw bad("center: not finite");
-        if (!is_finite(h.axis)) throw bad("axis: not finite");
-        if (!is_finite(h.start)) throw bad("start: not finite");
-        if (!(std::isfinite(h.radius) && h.radius > 0.0)) throw bad("radius: must be finite and > 0, got " + number_text(h.radius));
-        if (!std::isfinite(h.rise)) throw bad("rise: not finite");
-        if (!(std::isfinite(h.turns) && h.turns > 0.0)) throw bad("turns: must be finite and > 0, got " + number_text(h.turns));
-        a_ = normalized(h.axis);
-        if (!(grape::length(a_) > 0.5)) throw bad("axis: zero vector");
-        const Vec3 s = normalized(h.start);
-        if (!(grape::length(s) > 0.5)) throw bad("start: zero vector");
-        const Vec3 across = s - a_ * dot(s, a_);
-        // A start within ~1e-8 rad of the axis leaves no reliable direction.
-        if (!(grape::length(across) > 1e-8)) throw bad("start: parallel to the axis");
-        e1_ = normalized(across);
-        e2_ = cross(a_, e1_);
-        omega_ = 2.0 * pi * h.turns;
-        climb_ = h.rise * h.turns;
-        finish();
-    }
+    struct Frame {
+        Vec3 center, a, e1, e2;
+        double radius, theta0, dtheta, climb, length;
+    };
+    Circular3Node(Path3Kind kind, const Frame& f) : Path3Node(kind), f_(f) { finish(); }
     Vec3 point(double u) const noexcept override {
-        const double th = omega_ * u;
-        return spec_.center + (e1_ * std::cos(th) + e2_ * std::sin(th)) * spec_.radius + a_ * (climb_ * u);
+        const double th = f_.theta0 + f_.dtheta * u;
+        return f_.center + (f_.e1 * std::cos(th) + f_.e2 * std::sin(th)) * f_.radius + f_.a * (f_.climb * u);
     }
     Vec3 d1(double u) const noexcept override {
-        const double th = omega_ * u;
-        return (e2_ * std::cos(th) - e1_ * std::sin(th)) * (spec_.radius * omega_) + a_ * climb_;
+        const double th = f_.theta0 + f_.dtheta * u;
+        return (f_.e2 * std::cos(th) - f_.e1 * std::sin(th)) * (f_.radius * f_.dtheta) + f_.a * f_.climb;
     }
     Vec3 d2(double u) const noexcept override {
-        const double th = omega_ * u;
-        return (e1_ * std::cos(th) + e2_ * std::sin(th)) * (-spec_.radius * omega_ * omega_);
+        const double th = f_.theta0 + f_.dtheta * u;
+        return (f_.e1 * std::cos(th) + f_.e2 * std::sin(th)) * (-f_.radius * f_.dtheta * f_.dtheta);
     }
     Vec3 d3(double u) const noexcept override {
-        const double th = omega_ * u;
-        return (e2_ * std::cos(th) - e1_ * std::sin(th)) * (-spec_.radius * omega_ * omega_ * omega_);
+        const double th = f_.theta0 + f_.dtheta * u;
+        return (f_.e2 * std::cos(th) - f_.e1 * std::sin(th)) * (-f_.radius * f_.dtheta * f_.dtheta * f_.dtheta);
     }
     double length_at(double u) const noexcept override { return std::clamp(u, 0.0, 1.0) * length_; }
-    // |d2| = R·ω² everywhere.
+    // |d2| = R·dθ² everywhere.
     double d2_bound(double, double) const noexcept override {
-        return spec_.radius * omega_ * omega_ * (1.0 + 1e-12);
+        return f_.radius * f_.dtheta * f_.dtheta * (1.0 + 1e-12);
     }
     double u_at_length(double s) const noexcept override {
         return length_ > 0.0 ? std::clamp(s / length_, 0.0, 1.0) : 0.0;
     }
 
 private:
-    // L = turns·√((2πR)² + rise²): the speed is constant.
+    // The speed is constant: the length is given in closed form.
     bool closed_form_length() override {
-        length_ = spec_.turns * std::hypot(2.0 * pi * spec_.radius, spec_.rise);
+        length_ = f_.length;
         return true;
     }
-    HelixSpec spec_;
-    Vec3 a_, e1_, e2_;
-    double omega_ = 0.0, climb_ = 0.0;
+    // Per axis i, d(point_i)/dθ = A·cos(θ + φ) + k with A = R·|(e1_i, e2_i)| and k the climb
+    // per radian: its roots are θ = −φ ± acos(−k/A) + 2πn. Along one family the circular part
+    // repeats and the climb is monotone, so only its first and last root in range can be extremes.
+    Bounds3 compute_bounds() const override {
+        Bounds3 box;
+        box.add(point(0.0));
+        box.add(point(1.0));
+        if (!(f_.dtheta != 0.0)) return box;
+        const double lo = std::min(f_.theta0, f_.theta0 + f_.dtheta), hi = std::max(f_.theta0, f_.theta0 + f_.dtheta);
+        const double e1[] = {f_.e1.x, f_.e1.y, f_.e1.z}, e2[] = {f_.e2.x, f_.e2.y, f_.e2.z}, ax[] = {f_.a.x, f_.a.y, f_.a.z};
+        for (int i = 0; i < 3; ++i) {
+            const double h = std::hypot(e1[i], e2[i]);
+            if (!(h > 0.0)) continue;
+            const double amp = f_.radius * h;
+            const double k = ax[i] * f_.climb / f_.dtheta;
+            const double c = -k / amp;
+            if (!(std::abs(c) <= 1.0)) continue;
+            const double phi = std::atan2(e1[i], e2[i]);
+            const double alpha = std::acos(c);
+            for (const double beta : {-phi + alpha, -phi - alpha}) {
+                const double n0 = std::ceil((lo - beta) / (2.0 * pi)), n1 = std::floor((hi - beta) / (2.0 * pi));
+                if (n0 > n1) continue;
+                for (const double n : {n0, n1}) {
+                    const double th = beta + 2.0 * pi * n;
+                    box.add(point(std::clamp((th - f_.theta0) / f_.dtheta, 0.0, 1.0)));
+                }
+            }
+        }
+        return box;
+    }
+    Frame f_;
 };
 
 class Complex3Node final : public Path3Node {
@@ -201,6 +254,15 @@ public:
         const Piece& p = at(0.5 * (a + b));
         return p.node->d2_bound(local(a, p), local(b, p)) * p.inv_width * p.inv_width;
     }
+    // The parts flattened in turn, each from its own start: where parts do not meet the
+    // polyline crosses the gap straight.
+    void append_flattened(double tolerance, std::vector<Vec3>& out) const override {
+        for (const Piece& p : pieces_) {
+            const Vec3 start = p.node->point(0.0);
+            if (!(start == out.back())) out.push_back(start);
+            p.node->append_flattened(tolerance, out);
+        }
+    }
     double u_at_length(double s) const noexcept override {
         if (!(s > 0.0) || !(length_ > 0.0)) return 0.0;
         if (s >= length_) return 1.0;
@@ -220,6 +282,11 @@ private:
         double inv_width;
         double s0;  // length before the piece
     };
+    Bounds3 compute_bounds() const override {
+        Bounds3 box;
+        for (const Piece& p : pieces_) box.add(p.node->bounds());
+        return box;
+    }
     void interior_breaks(std::vector<double>& out) const override {
         for (std::size_t i = 0; i < pieces_.size(); ++i) {
             const Piece& p = pieces_[i];
@@ -249,12 +316,43 @@ void check_point3(const char* where, const char* name, Vec3 p) {
     if (!is_finite(p)) throw Error(std::string(where) + ": " + name + ": not finite");
 }
 
-Path3 bezier3(Path3Kind kind, std::span<const Vec3> pts, const char* where) {
+// A node wrapped in its handle, with the arguments it was built from.
+Path3 wrap3(std::shared_ptr<Path3Node> node, Path3Spec spec) {
+    node->set_spec(std::move(spec));
+    return Path3Access::make(std::move(node));
+}
+
+Path3 bezier3(Path3Kind kind, std::span<const Vec3> pts, const char* where, Path3Spec spec) {
     static const char* const names[] = {"p0", "p1", "p2", "p3"};
     for (std::size_t i = 0; i < pts.size(); ++i) {
         check_point3(where, kind == Path3Kind::line ? (i == 0 ? "a" : "b") : names[i], pts[i]);
     }
-    return Path3Access::make(std::make_shared<Bezier3Node>(kind, std::vector<Bezier3Piece>{make_piece3(pts)}));
+    return wrap3(std::make_shared<Bezier3Node>(kind, std::vector<Bezier3Piece>{make_piece3(pts)}), std::move(spec));
+}
+
+void check_points3(const std::string& where, const char* name, std::span<const Vec3> points, std::size_t least) {
+    if (points.size() < least) {
+        throw Error(where + ": " + name + ": need at least " + std::to_string(least) + ", got " +
+                    std::to_string(points.size()));
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!is_finite(points[i])) throw Error(where + ": " + name + "[" + std::to_string(i) + "]: not finite");
+    }
+}
+
+// The unit axis and the unit start direction across it; `where` names the factory.
+void circle_frame3(const std::string& where, Vec3 axis, Vec3 start, Vec3& a, Vec3& e1, Vec3& e2) {
+    if (!is_finite(axis)) throw Error(where + ": axis: not finite");
+    if (!is_finite(start)) throw Error(where + ": start: not finite");
+    a = normalized(axis);
+    if (!(grape::length(a) > 0.5)) throw Error(where + ": axis: zero vector");
+    const Vec3 s = normalized(start);
+    if (!(grape::length(s) > 0.5)) throw Error(where + ": start: zero vector");
+    const Vec3 across = s - a * dot(s, a);
+    // A start within ~1e-8 rad of the axis leaves no reliable direction.
+    if (!(grape::length(across) > 1e-8)) throw Error(where + ": start: parallel to the axis");
+    e1 = normalized(across);
+    e2 = cross(a, e1);
 }
 
 }  // namespace
@@ -268,6 +366,13 @@ std::string_view to_string(Path3Kind kind) noexcept {
         case Path3Kind::catmull_rom: return "catmull_rom";
         case Path3Kind::helix: return "helix";
         case Path3Kind::complex: return "complex";
+        case Path3Kind::hermite: return "hermite";
+        case Path3Kind::linear_spline: return "linear_spline";
+        case Path3Kind::arc: return "arc";
+        case Path3Kind::projectile: return "projectile";
+        case Path3Kind::on_plane: return "on_plane";
+        case Path3Kind::reparametrized: return "reparametrized";
+        case Path3Kind::slice: return "slice";
     }
     return "unknown";
 }
@@ -278,17 +383,18 @@ Path3::Path3(std::shared_ptr<const detail::Path3Node> node) noexcept : node_(std
 
 Path3 Path3::line(Vec3 a, Vec3 b) {
     const Vec3 pts[] = {a, b};
-    return detail::bezier3(Path3Kind::line, pts, "Path3::line");
+    return detail::bezier3(Path3Kind::line, pts, "Path3::line", Line3Spec{a, b});
 }
 
 Path3 Path3::quadratic_bezier(Vec3 p0, Vec3 p1, Vec3 p2) {
     const Vec3 pts[] = {p0, p1, p2};
-    return detail::bezier3(Path3Kind::quadratic_bezier, pts, "Path3::quadratic_bezier");
+    return detail::bezier3(Path3Kind::quadratic_bezier, pts, "Path3::quadratic_bezier",
+                           QuadraticBezier3Spec{{p0, p1, p2}});
 }
 
 Path3 Path3::cubic_bezier(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3) {
     const Vec3 pts[] = {p0, p1, p2, p3};
-    return detail::bezier3(Path3Kind::cubic_bezier, pts, "Path3::cubic_bezier");
+    return detail::bezier3(Path3Kind::cubic_bezier, pts, "Path3::cubic_bezier", CubicBezier3Spec{{p0, p1, p2, p3}});
 }
 
 Path3 Path3::catmull_rom(std::span<const Vec3> points, CatmullRom type, bool closed) {
@@ -328,11 +434,93 @@ Path3 Path3::catmull_rom(std::span<const Vec3> points, CatmullRom type, bool clo
         const Vec3 pts[] = {p1, p1 + m1 / 3.0, p2 - m2 / 3.0, p2};
         pieces.push_back(detail::make_piece3(pts));
     }
-    return detail::Path3Access::make(std::make_shared<detail::Bezier3Node>(Path3Kind::catmull_rom, std::move(pieces)));
+    return detail::wrap3(std::make_shared<detail::Bezier3Node>(Path3Kind::catmull_rom, std::move(pieces)),
+                         CatmullRom3Spec{{points.begin(), points.end()}, type, closed});
 }
 
-Path3 Path3::helix(const HelixSpec& spec) {
-    return detail::Path3Access::make(std::make_shared<detail::Helix3Node>(spec));
+Path3 Path3::helix(const HelixSpec& h) {
+    const std::string where = "Path3::helix";
+    if (!is_finite(h.center)) throw Error(where + ": center: not finite");
+    if (!(std::isfinite(h.radius) && h.radius > 0.0)) throw Error(where + ": radius: must be finite and > 0, got " + detail::number_text(h.radius));
+    if (!std::isfinite(h.rise)) throw Error(where + ": rise: not finite");
+    if (!(std::isfinite(h.turns) && h.turns > 0.0)) throw Error(where + ": turns: must be finite and > 0, got " + detail::number_text(h.turns));
+    detail::Circular3Node::Frame f{};
+    detail::circle_frame3(where, h.axis, h.start, f.a, f.e1, f.e2);
+    f.center = h.center;
+    f.radius = h.radius;
+    f.theta0 = 0.0;
+    f.dtheta = 2.0 * pi * h.turns;
+    f.climb = h.rise * h.turns;
+    // L = turns·√((2πR)² + rise²).
+    f.length = h.turns * std::hypot(2.0 * pi * h.radius, h.rise);
+    return detail::wrap3(std::make_shared<detail::Circular3Node>(Path3Kind::helix, f), h);
+}
+
+Path3 Path3::arc(const Arc3Spec& spec) {
+    const std::string where = "Path3::arc";
+    if (!is_finite(spec.center)) throw Error(where + ": center: not finite");
+    if (!(std::isfinite(spec.radius) && spec.radius > 0.0)) throw Error(where + ": radius: must be finite and > 0, got " + detail::number_text(spec.radius));
+    if (!std::isfinite(spec.start_angle)) throw Error(where + ": start_angle: not finite");
+    if (!std::isfinite(spec.end_angle)) throw Error(where + ": end_angle: not finite");
+    detail::Circular3Node::Frame f{};
+    detail::circle_frame3(where, spec.axis, spec.start, f.a, f.e1, f.e2);
+    f.center = spec.center;
+    f.radius = spec.radius;
+    f.theta0 = spec.start_angle;
+    f.dtheta = spec.end_angle - spec.start_angle;
+    if (!std::isfinite(f.dtheta)) throw Error(where + ": end_angle: its difference from start_angle overflows a double");
+    f.climb = 0.0;
+    f.length = spec.radius * std::abs(f.dtheta);
+    return detail::wrap3(std::make_shared<detail::Circular3Node>(Path3Kind::arc, f), spec);
+}
+
+Path3 Path3::hermite(std::span<const Vec3> points, std::span<const Vec3> tangents, bool closed) {
+    const std::string where = "Path3::hermite";
+    detail::check_points3(where, "points", points, closed ? 3 : 2);
+    if (tangents.size() != points.size()) {
+        throw Error(where + ": tangents: need one per point (" + std::to_string(points.size()) + "), got " +
+                    std::to_string(tangents.size()));
+    }
+    detail::check_points3(where, "tangents", tangents, 0);
+    const std::size_t n = points.size(), segments = closed ? n : n - 1;
+    std::vector<detail::Bezier3Piece> pieces;
+    pieces.reserve(segments);
+    for (std::size_t i = 0; i < segments; ++i) {
+        const std::size_t j = (i + 1) % n;
+        const Vec3 pts[] = {points[i], points[i] + tangents[i] / 3.0, points[j] - tangents[j] / 3.0, points[j]};
+        pieces.push_back(detail::make_piece3(pts));
+    }
+    return detail::wrap3(std::make_shared<detail::Bezier3Node>(Path3Kind::hermite, std::move(pieces)),
+                         Hermite3Spec{{points.begin(), points.end()}, {tangents.begin(), tangents.end()}, closed});
+}
+
+Path3 Path3::linear_spline(std::span<const Vec3> points, bool closed) {
+    detail::check_points3("Path3::linear_spline", "points", points, closed ? 3 : 2);
+    const std::size_t n = points.size(), segments = closed ? n : n - 1;
+    std::vector<detail::Bezier3Piece> pieces;
+    pieces.reserve(segments);
+    for (std::size_t i = 0; i < segments; ++i) {
+        const Vec3 pts[] = {points[i], points[(i + 1) % n]};
+        pieces.push_back(detail::make_piece3(pts));
+    }
+    return detail::wrap3(std::make_shared<detail::Bezier3Node>(Path3Kind::linear_spline, std::move(pieces)),
+                         LinearSpline3Spec{{points.begin(), points.end()}, closed});
+}
+
+Path3 Path3::projectile(Vec3 position, Vec3 velocity, Vec3 acceleration, double seconds) {
+    const std::string where = "Path3::projectile";
+    detail::check_point3(where.c_str(), "position", position);
+    detail::check_point3(where.c_str(), "velocity", velocity);
+    detail::check_point3(where.c_str(), "acceleration", acceleration);
+    if (!(std::isfinite(seconds) && seconds > 0.0)) throw Error(where + ": seconds: must be finite and > 0, got " + detail::number_text(seconds));
+    // p + v·t + ½·g·t² over t in [0, T] is the quadratic Bézier p, p + v·T/2, p + v·T + g·T²/2.
+    const Vec3 pts[] = {position, position + velocity * (0.5 * seconds),
+                        position + velocity * seconds + acceleration * (0.5 * seconds * seconds)};
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (!is_finite(pts[i])) throw Error(where + ": seconds: the path's points overflow a double");
+    }
+    return detail::wrap3(std::make_shared<detail::Bezier3Node>(Path3Kind::projectile, std::vector<detail::Bezier3Piece>{detail::make_piece3(pts)}),
+                         Projectile3Spec{position, velocity, acceleration, seconds});
 }
 
 Path3 Path3::complex(std::vector<Path3> parts, std::vector<double> cues) {
@@ -348,7 +536,8 @@ Path3 Path3::complex(std::vector<Path3> parts, std::vector<double> cues) {
         if (i == 0 && cues[i] != 0.0) throw Error(name + "must be 0, got " + detail::number_text(cues[i]));
         if (i > 0 && cues[i] < cues[i - 1]) throw Error(name + "decreases (below cues[" + std::to_string(i - 1) + "])");
     }
-    return detail::Path3Access::make(std::make_shared<detail::Complex3Node>(std::move(parts), std::move(cues)));
+    Complex3Spec spec{parts, cues};
+    return detail::wrap3(std::make_shared<detail::Complex3Node>(std::move(parts), std::move(cues)), std::move(spec));
 }
 
 Path3 Path3::complex_by_length(std::vector<Path3> parts) {
@@ -416,5 +605,20 @@ double Path3::length_at(double u) const noexcept { return node_->length_at(std::
 double Path3::u_at_length(double s) const noexcept { return node_->u_at_length(s); }
 Vec3 Path3::point_at_length(double s) const noexcept { return node_->point(u_at_length(s)); }
 std::span<const double> Path3::breaks() const noexcept { return node_->breaks(); }
+const Bounds3& Path3::bounds() const noexcept { return node_->bounds(); }
+
+std::vector<Vec3> Path3::flatten(double tolerance) const {
+    if (!(std::isfinite(tolerance) && tolerance > 0.0)) {
+        throw Error("Path3::flatten: tolerance: must be finite and > 0, got " + detail::number_text(tolerance));
+    }
+    const Bounds3& b = node_->bounds();
+    const Vec3 size = b.size();
+    const double extent = std::max({std::abs(size.x), std::abs(size.y), std::abs(size.z), 0.0});
+    // Below 1e-12 of the size the rounding of the points themselves is the error.
+    tolerance = std::max(tolerance, 1e-12 * (std::isfinite(extent) ? extent : 0.0));
+    std::vector<Vec3> out{node_->point(0.0)};
+    node_->append_flattened(tolerance, out);
+    return out;
+}
 
 }  // namespace grape

@@ -4,6 +4,7 @@
 
 #include <grape/error.hpp>
 #include <grape/path.hpp>
+#include <grape/path3.hpp>
 #include <grape/scene.hpp>
 
 #include "json_pointer.hpp"
@@ -78,6 +79,12 @@ struct PathReader {
     Path read_any(const json& j, const std::string& pointer, int depth) const;  // read() without the depth 0 check
     Path read_kind(const json& j, const std::string& pointer, const std::string& kind, int depth) const;
 };
+
+/// A 3-D point [x, y, z] at `pointer`, every component finite.
+Vec3 vec3(const json& j, const std::string& pointer);
+/// A 3-D path object at `pointer` (scene_path3.cpp; docs/scene-format.md, "3-D paths"), inside
+/// `depth` complex paths.
+Path3 read_path3(const json& j, const std::string& pointer, int depth);
 
 ordered point_json(Vec2 p);
 ordered points_json(std::span<const Vec2> points);
