@@ -86,6 +86,16 @@ void Path3Node::append_flattened(double tolerance, std::vector<Vec3>& out) const
     constexpr int max_depth = 40;
     std::vector<Span> stack;
     for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) {
+        if (i > 0) {
+            // Where the pieces do not meet (parts of a complex path, seen through a slice or
+            // a reparametrization) the polyline ends this piece at its own end and crosses
+            // the gap straight. A jump below 1% of the tolerance is
+            // rounding or within the slack the chord test leaves: the next piece's start
+            // stands for both.
+            const Vec3 end = point_before(breaks_[i]), next = point(breaks_[i]);
+            if (distance(end, next) > 0.01 * tolerance) out.push_back(end);
+            out.push_back(next);
+        }
         stack.push_back({breaks_[i], breaks_[i + 1], 0});
         while (!stack.empty()) {
             const Span s = stack.back();
@@ -94,7 +104,7 @@ void Path3Node::append_flattened(double tolerance, std::vector<Vec3>& out) const
             const double bound = d2_bound(s.a, s.b);
             bool flat;
             if (std::isfinite(bound)) {
-                flat = bound * h * h / 8.0 <= tolerance;
+                flat = bound * h * h / 8.0 <= 0.99 * tolerance;
             } else {
                 const Vec3 pa = point(s.a), pb = point(s.b);
                 double worst = 0.0;
@@ -108,7 +118,7 @@ void Path3Node::append_flattened(double tolerance, std::vector<Vec3>& out) const
                 flat = s.depth >= 3 && worst <= 0.5 * tolerance;
             }
             if (flat || s.depth >= max_depth || !(h > 0.0)) {
-                out.push_back(point(s.b));
+                if (s.b < breaks_[i + 1] || i + 2 == breaks_.size()) out.push_back(point(s.b));
                 continue;
             }
             const double m = s.a + 0.5 * h;

@@ -25,6 +25,9 @@ public:
     virtual Vec3 d2(double u) const noexcept = 0;
     virtual Vec3 d3(double u) const noexcept = 0;
     virtual double length_at(double u) const noexcept;
+    // The limit of point from below u (u in (0, 1]): the end of the piece before a break,
+    // where parts of a complex path need not meet. Default: point(u) (continuous kinds).
+    virtual Vec3 point_before(double u) const noexcept { return point(u); }
     // An upper bound on |d2| over [a, b], a sub-interval of one piece (between two breaks).
     virtual double d2_bound(double a, double b) const noexcept = 0;
     virtual double u_at_length(double s) const noexcept;

@@ -63,6 +63,8 @@ public:
     void append_flattened(double tolerance, std::vector<Vec3>& out) const override {
         const std::vector<Vec2> flat = path_.flatten(tolerance / scale_);
         for (std::size_t i = 1; i < flat.size(); ++i) out.push_back(o_ + x_ * flat[i].x + y_ * flat[i].y);
+        // The 2-D end may be computed apart from point(1), to rounding.
+        if (flat.size() < 2) out.push_back(point(1.0)); else out.back() = point(1.0);
     }
 
 private:

@@ -61,6 +61,13 @@ public:
         const Bezier3Piece& s = at(u, t);
         return casteljau3(s.q, s.degree, t) * n_;
     }
+    // The piece ending at u, at its local t (exactly 1 at a break).
+    Vec3 point_before(double u) const noexcept override {
+        const double x = std::clamp(u, 0.0, 1.0) * n_;
+        const double i = std::clamp(std::ceil(x) - 1.0, 0.0, n_ - 1.0);
+        const Bezier3Piece& s = pieces_[static_cast<std::size_t>(i)];
+        return casteljau3(s.p, s.degree + 1, std::min(x - i, 1.0));
+    }
     Vec3 d2(double u) const noexcept override {
         double t;
         const Bezier3Piece& s = at(u, t);
@@ -231,6 +238,14 @@ public:
     Vec3 point(double u) const noexcept override {
         const Piece& p = at(u);
         return p.node->point(local(u, p));
+    }
+    // The piece that starts before u, at its end when u is the next piece's cue.
+    Vec3 point_before(double u) const noexcept override {
+        const auto it = std::lower_bound(starts_.begin(), starts_.end(), u);
+        const std::size_t i = it == starts_.begin() ? 0 : static_cast<std::size_t>(it - starts_.begin()) - 1;
+        const Piece& p = pieces_[i];
+        const bool at_end = i + 1 < pieces_.size() && u >= pieces_[i + 1].start;
+        return p.node->point_before(at_end ? 1.0 : local(u, p));
     }
     Vec3 d1(double u) const noexcept override {
         const Piece& p = at(u);

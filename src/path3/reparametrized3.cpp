@@ -34,6 +34,7 @@ public:
         return sp.v0 + model(sp, std::clamp((s - sp.s0) / sp.ds, 0.0, 1.0));
     }
     Vec3 point(double u) const noexcept override { return src_->point(source_u(u)); }
+    Vec3 point_before(double u) const noexcept override { return src_->point_before(source_u(u)); }
     Vec3 d1(double u) const noexcept override {
         const double v = source_u(u);
         const Vec3 x1 = src_->d1(v);
