@@ -125,8 +125,9 @@ private:
     void build() {
         const auto& br = src_->breaks();
         const std::size_t pieces = br.size() - 1;
-        // The span budget: ample for smooth pieces (a few spans each), bounded for any path.
-        max_spans_ = 4096 + 64 * pieces;
+        // The span budget: ample for smooth pieces (a few spans each), bounding the work of a
+        // build for any path (beyond it, spans solve u_at_length).
+        max_spans_ = 4096 + 16 * pieces;
         // The model is accepted when it misses the arc length by at most 1e-10·L, a tenth of
         // the contract, at the span's quarter points.
         target_ = 1e-10 * total_;
