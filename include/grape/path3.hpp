@@ -6,6 +6,7 @@
 
 #include <grape/export_path.hpp>
 #include <grape/path.hpp>
+#include <grape/path_query.hpp>
 #include <grape/vec3.hpp>
 
 #include <array>
@@ -280,6 +281,14 @@ private:
 /// exactly path.point(u1) at v = 1, derivatives by the chain rule, length and bounds those of
 /// the sub-range.
 GRAPE_PATH_API Path3 slice(const Path3& path, double u0, double u1);
+
+/// A smooth 3-D path through sampled points (a recorded flight, a tracked hand), as the 2-D
+/// fit_path makes one: cubic Béziers with continuous tangents, every input point within
+/// def.tolerance of the path, corners kept where successive chords turn by more than
+/// def.corner_angle (Schneider's algorithm), joined as a complex path with cues by length.
+/// Consecutive repeated points are dropped; throws grape::Error for fewer than 2 distinct
+/// points, a point that is not finite or a bad tolerance or angle.
+GRAPE_PATH_API Path3 fit_path(std::span<const Vec3> points, const FitPathDef& def = {});
 
 // --- what a path is: plain values -------------------------------------------------------
 
