@@ -299,7 +299,9 @@ TEST(Path3Kinds, ProjectileIsTheParabola) {
 TEST(Path3Kinds, OnPlaneLiftsEvery2DKind) {
     const Plane pl = test_plane();
     const Vec3 normal = normalized(cross(pl.x, pl.y));
-    for (const auto& [name, p2] : every_2d_kind()) {
+    for (const auto& entry : every_2d_kind()) {
+        const std::string& name = entry.first;
+        const Path& p2 = entry.second;
         const Path3 p = Path3::on_plane(p2, pl.origin, pl.x, pl.y);
         EXPECT_EQ(p.kind(), Path3Kind::on_plane);
         // Each component of o + X·x + Y·y rounds once per operation (or less with fused
@@ -352,7 +354,9 @@ TEST(Path3Kinds, OnPlaneThirdDerivative) {
 
 // Past the ends the path goes on along its end tangents; d2 and d3 are 0 there.
 TEST(Path3Kinds, ExtendsAlongTheEndTangents) {
-    for (const auto& [name, p] : every_3d_kind()) {
+    for (const auto& entry : every_3d_kind()) {
+        const std::string& name = entry.first;
+        const Path3& p = entry.second;
         const Vec3 p0 = p.point(0.0), p1 = p.point(1.0), t0 = p.d1(0.0), t1 = p.d1(1.0);
         for (const double u : {-0.5, -1e-3, 1.0 + 1e-3, 2.0}) {
             const Vec3 want = u < 0.0 ? p0 + t0 * u : p1 + t1 * (u - 1.0);
@@ -368,7 +372,9 @@ TEST(Path3Kinds, ExtendsAlongTheEndTangents) {
 // every sample that beats its neighbours is refined by golden section (to the rounding of
 // the coordinate near a flat extreme), and the box lies within 1e-12 of the size of them.
 TEST(Path3Kinds, BoundsAreTight) {
-    for (const auto& [name, p] : every_3d_kind()) {
+    for (const auto& entry : every_3d_kind()) {
+        const std::string& name = entry.first;
+        const Path3& p = entry.second;
         const Bounds3 box = p.bounds();
         const double scale = scale_of(p);
         // A coordinate rounds to a few ulp in evaluation: 16 ulp of the scale.
@@ -403,7 +409,9 @@ TEST(Path3Kinds, BoundsAreTight) {
 // Every point of the path lies within the tolerance of the polyline. The distance is taken
 // over a window of segments around the last nearest one: a window can only overstate it.
 TEST(Path3Kinds, FlattenStaysWithinTheTolerance) {
-    for (const auto& [name, p] : every_3d_kind()) {
+    for (const auto& entry : every_3d_kind()) {
+        const std::string& name = entry.first;
+        const Path3& p = entry.second;
         for (const double tol : {1e-2, 1e-5}) {
             const std::vector<Vec3> line = p.flatten(tol);
             ASSERT_GE(line.size(), 2u) << name;
@@ -491,7 +499,9 @@ void expect_arc_length_parametrized(const std::string& name, const Path3& p, int
 }  // namespace
 
 TEST(Path3Kinds, ReparametrizedIsArcLength) {
-    for (const auto& [name, p] : every_3d_kind()) {
+    for (const auto& entry : every_3d_kind()) {
+        const std::string& name = entry.first;
+        const Path3& p = entry.second;
         if (p.kind() == Path3Kind::reparametrized) continue;
         expect_arc_length_parametrized(name, p, 400, 47);
     }
@@ -516,7 +526,9 @@ TEST(Path3Kinds, ReparametrizedAtOneAndManySegments) {
 }
 
 TEST(Path3Kinds, SliceIsTheSubRange) {
-    for (const auto& [name, p] : every_3d_kind()) {
+    for (const auto& entry : every_3d_kind()) {
+        const std::string& name = entry.first;
+        const Path3& p = entry.second;
         for (const auto& [a, b] : {std::pair{0.0, 1.0}, std::pair{0.13, 0.77}, std::pair{0.5, 0.5 + 1e-3}}) {
             const Path3 s = slice(p, a, b);
             EXPECT_EQ(s.kind(), Path3Kind::slice);
@@ -544,7 +556,9 @@ TEST(Path3Kinds, SliceIsTheSubRange) {
 
 // from_spec(describe(p)) evaluates bit for bit like p, for every kind, nested ones included.
 TEST(Path3Kinds, DescribeRoundTripsBitForBit) {
-    for (const auto& [name, p] : every_3d_kind()) {
+    for (const auto& entry : every_3d_kind()) {
+        const std::string& name = entry.first;
+        const Path3& p = entry.second;
         const Path3Spec spec = describe(p);
         EXPECT_EQ(kind_of(spec), p.kind()) << name;
         const Path3 q = from_spec(spec);
