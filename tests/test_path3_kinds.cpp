@@ -320,6 +320,12 @@ TEST(Path3Kinds, OnPlaneLiftsEvery2DKind) {
             check("d2", p.d2(u), p2.d2(u), {}, u);
         }
         EXPECT_EQ(p.length(), length(pl.x) * p2.length()) << name;  // s is |x_axis|
+        // The closest point is proven (its gap) wherever the 2-D kind bounds its d2: every
+        // kind but a reparametrized one, complex and SVG paths through their parts.
+        if (p2.kind() != PathKind::reparametrized) {
+            const Closest3 c = closest_point(p, pl.origin + Vec3{3.0, -1.0, 2.0});
+            EXPECT_LE(c.gap, 1e-12 * (p.length() + c.distance)) << name;
+        }
         EXPECT_EQ(p.length_at(0.37), length(pl.x) * p2.length_at(0.37)) << name;
         EXPECT_NEAR(reference_length(p, 0.0, 1.0), p.length(), 1e-9 * p.length()) << name;
         // Torsion: d3 lies in the plane, so (r′ × r″)·r‴ is rounding: the cross product c
