@@ -6,6 +6,7 @@
 
 #include <grape/export_path.hpp>
 #include <grape/path.hpp>
+#include <grape/path_query.hpp>
 #include <grape/vec3.hpp>
 
 #include <array>
@@ -198,8 +199,10 @@ public:
     /// along this path (to 1e-9·length()), |d1| = length() and d2, d3 by the chain rule. Built
     /// once: a table of spans with the quintic Hermite model of the inverse of the arc length,
     /// each checked against quadrature; spans where the path stops (zero speed), or whose
-    /// model misses, solve u_at_length instead. Reparametrizing a reparametrized path returns
-    /// it unchanged.
+    /// model misses, solve u_at_length instead (at most 256 spans per piece bound the work).
+    /// Building costs ~0.4 ms for a cubic and ~4 s for a 10⁴-segment spline; evaluation is
+    /// a binary search and one polynomial (~0.1 µs). Reparametrizing a reparametrized path
+    /// returns it unchanged.
     Path3 reparametrized() const;
 
 private:
@@ -222,7 +225,9 @@ struct Closest3 {
 /// that cannot beat the best point found pruned, and the survivors polished by Newton steps
 /// on (point − query)·d1 = 0. The gap returned is within ~1e-13·(length + distance), except
 /// where a long stretch is equidistant from the query (a circle about it), where the work is
-/// capped (2¹⁵ intervals) and the gap is what was proven. Of exact ties the smaller u wins.
+/// capped (2¹⁵ intervals) and the gap is what was proven; and except on a lifted 2-D path
+/// reparametrized by arc length, whose d2 has no bound: nothing is pruned there, the work is
+/// capped likewise and the gap may be infinite. Of exact ties the smaller u wins.
 /// Noexcept and allocation-free.
 GRAPE_PATH_API Closest3 closest_point(const Path3& path, Vec3 query) noexcept;
 
@@ -280,6 +285,14 @@ private:
 /// exactly path.point(u1) at v = 1, derivatives by the chain rule, length and bounds those of
 /// the sub-range.
 GRAPE_PATH_API Path3 slice(const Path3& path, double u0, double u1);
+
+/// A smooth 3-D path through sampled points (a recorded flight, a tracked hand), as the 2-D
+/// fit_path makes one: cubic Béziers with continuous tangents, every input point within
+/// def.tolerance of the path, corners kept where successive chords turn by more than
+/// def.corner_angle (Schneider's algorithm), joined as a complex path with cues by length.
+/// Consecutive repeated points are dropped; throws grape::Error for fewer than 2 distinct
+/// points, a point that is not finite or a bad tolerance or angle.
+GRAPE_PATH_API Path3 fit_path(std::span<const Vec3> points, const FitPathDef& def = {});
 
 // --- what a path is: plain values -------------------------------------------------------
 

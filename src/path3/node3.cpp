@@ -12,22 +12,29 @@
 namespace grape::detail {
 
 void Path3Node::interior_breaks(std::vector<double>&) const {}
+void Path3Node::speed_kinks(std::vector<double>&) const {}
 
 void Path3Node::finish() {
     breaks_.clear();
     breaks_.push_back(0.0);
     interior_breaks(breaks_);
     breaks_.push_back(1.0);
+    // The quadrature's own cuts: the breaks and the points where the speed may have a kink
+    // inside a piece (a stop), so that no rule straddles one.
+    cuts_ = breaks_;
+    speed_kinks(cuts_);
+    std::sort(cuts_.begin(), cuts_.end());
+    cuts_.erase(std::unique(cuts_.begin(), cuts_.end()), cuts_.end());
     if (!closed_form_length()) {
         // The target is relative to the whole length, estimated by one rule per piece (as 2-D
         // paths do): 1e-14 of it leaves the sum of the pieces within ~1e-13.
         double estimate = 0.0;
         auto speed = [this](double u) noexcept { return grape::length(d1(u)); };
-        for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) estimate += gauss_legendre(speed, breaks_[i], breaks_[i + 1]);
+        for (std::size_t i = 0; i + 1 < cuts_.size(); ++i) estimate += gauss_legendre(speed, cuts_[i], cuts_[i + 1]);
         quad_tolerance_ = std::max(1e-14 * estimate, std::numeric_limits<double>::min());
-        cumulative_.assign(breaks_.size(), 0.0);
-        for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) {
-            cumulative_[i + 1] = cumulative_[i] + integrate_speed(breaks_[i], breaks_[i + 1]);
+        cumulative_.assign(cuts_.size(), 0.0);
+        for (std::size_t i = 0; i + 1 < cuts_.size(); ++i) {
+            cumulative_[i + 1] = cumulative_[i] + integrate_speed(cuts_[i], cuts_[i + 1]);
         }
         length_ = cumulative_.back();
     }
@@ -86,6 +93,16 @@ void Path3Node::append_flattened(double tolerance, std::vector<Vec3>& out) const
     constexpr int max_depth = 40;
     std::vector<Span> stack;
     for (std::size_t i = 0; i + 1 < breaks_.size(); ++i) {
+        if (i > 0) {
+            // Where the pieces do not meet (parts of a complex path, seen through a slice or
+            // a reparametrization) the polyline ends this piece at its own end and crosses
+            // the gap straight. A jump below 1% of the tolerance is
+            // rounding or within the slack the chord test leaves: the next piece's start
+            // stands for both.
+            const Vec3 end = point_before(breaks_[i]), next = point(breaks_[i]);
+            if (distance(end, next) > 0.01 * tolerance) out.push_back(end);
+            out.push_back(next);
+        }
         stack.push_back({breaks_[i], breaks_[i + 1], 0});
         while (!stack.empty()) {
             const Span s = stack.back();
@@ -94,7 +111,7 @@ void Path3Node::append_flattened(double tolerance, std::vector<Vec3>& out) const
             const double bound = d2_bound(s.a, s.b);
             bool flat;
             if (std::isfinite(bound)) {
-                flat = bound * h * h / 8.0 <= tolerance;
+                flat = bound * h * h / 8.0 <= 0.99 * tolerance;
             } else {
                 const Vec3 pa = point(s.a), pb = point(s.b);
                 double worst = 0.0;
@@ -108,7 +125,7 @@ void Path3Node::append_flattened(double tolerance, std::vector<Vec3>& out) const
                 flat = s.depth >= 3 && worst <= 0.5 * tolerance;
             }
             if (flat || s.depth >= max_depth || !(h > 0.0)) {
-                out.push_back(point(s.b));
+                if (s.b < breaks_[i + 1] || i + 2 == breaks_.size()) out.push_back(point(s.b));
                 continue;
             }
             const double m = s.a + 0.5 * h;
@@ -126,9 +143,9 @@ double Path3Node::integrate_speed(double a, double b) const noexcept {
 double Path3Node::length_at(double u) const noexcept {
     if (!(u > 0.0)) return 0.0;
     if (u >= 1.0) return length_;
-    const auto it = std::upper_bound(breaks_.begin(), breaks_.end(), u);
-    const auto i = static_cast<std::size_t>(it - breaks_.begin()) - 1;
-    return cumulative_[i] + integrate_speed(breaks_[i], u);
+    const auto it = std::upper_bound(cuts_.begin(), cuts_.end(), u);
+    const auto i = static_cast<std::size_t>(it - cuts_.begin()) - 1;
+    return cumulative_[i] + integrate_speed(cuts_[i], u);
 }
 
 double Path3Node::u_at_length(double s) const noexcept {
@@ -137,8 +154,8 @@ double Path3Node::u_at_length(double s) const noexcept {
     // The piece holding s, then Newton on length_at(u) − s (derivative: the speed), kept in
     // the piece by bisection.
     const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
-    const auto i = std::min(static_cast<std::size_t>(it - cumulative_.begin()) - 1, breaks_.size() - 2);
-    const double a = breaks_[i], b = breaks_[i + 1];
+    const auto i = std::min(static_cast<std::size_t>(it - cumulative_.begin()) - 1, cuts_.size() - 2);
+    const double a = cuts_[i], b = cuts_[i + 1];
     const double base = cumulative_[i];
     auto fd = [&](double u) noexcept {
         return std::pair<double, double>{base + integrate_speed(a, u) - s, grape::length(d1(u))};

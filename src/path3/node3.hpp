@@ -25,6 +25,9 @@ public:
     virtual Vec3 d2(double u) const noexcept = 0;
     virtual Vec3 d3(double u) const noexcept = 0;
     virtual double length_at(double u) const noexcept;
+    // The limit of point from below u (u in (0, 1]): the end of the piece before a break,
+    // where parts of a complex path need not meet. Default: point(u) (continuous kinds).
+    virtual Vec3 point_before(double u) const noexcept { return point(u); }
     // An upper bound on |d2| over [a, b], a sub-interval of one piece (between two breaks).
     virtual double d2_bound(double a, double b) const noexcept = 0;
     virtual double u_at_length(double s) const noexcept;
@@ -42,6 +45,9 @@ public:
 protected:
     // Interior u where derivatives may jump, increasing, inside (0, 1).
     virtual void interior_breaks(std::vector<double>& out) const;
+    // Appends u in (0, 1), in any order, where |d1| may have a kink inside a piece (a stop,
+    // where every component of d1 vanishes): the quadrature cuts there. Default: none.
+    virtual void speed_kinks(std::vector<double>& out) const;
     // Kinds with a closed-form length set it in length_ themselves and return true.
     virtual bool closed_form_length() { return false; }
     // Tight box over [0, 1]. Default: per piece and axis, the roots of that component of d1
@@ -57,7 +63,8 @@ private:
 
     Path3Kind kind_;
     std::vector<double> breaks_;
-    std::vector<double> cumulative_;  // length at each break
+    std::vector<double> cuts_;        // breaks and speed kinks, increasing
+    std::vector<double> cumulative_;  // length at each cut
     double quad_tolerance_ = 0.0;
     Bounds3 bounds_;
     Path3Spec spec_;

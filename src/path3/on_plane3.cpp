@@ -1,18 +1,34 @@
 // grape — a 2-D path lifted onto a plane in 3-D: the affine image of its point and derivatives.
 #include "node3.hpp"
 
-#include "../path/path_node.hpp"
+#include "../path/kinds.hpp"
 
 #include <grape/error.hpp>
 #include <grape/math.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace grape {
 namespace detail {
 namespace {
+
+// sup |x″| over [a, b] inside one smooth piece of a 2-D node. A complex node gives none itself:
+// the part holding the interval does, scaled by the chain rule. ∞ where unknown.
+double flat_d2_bound(const PathNode& n, double a, double b) noexcept {
+    if (const auto* c = dynamic_cast<const ComplexNode*>(&n)) {
+        const auto pieces = c->pieces();
+        if (pieces.empty()) return std::numeric_limits<double>::infinity();
+        const double m = 0.5 * (a + b);
+        const auto it = std::upper_bound(pieces.begin(), pieces.end(), m, [](double u, const auto& p) { return u < p.start; });
+        const auto& p = *(it == pieces.begin() ? it : it - 1);
+        auto local = [&p](double u) { return std::clamp((u - p.start) * p.inv_width, 0.0, 1.0); };
+        return flat_d2_bound(*p.node, local(a), local(b)) * p.inv_width * p.inv_width;
+    }
+    return n.derivative_bounds(a, b).d2;
+}
 
 class OnPlane3Node final : public Path3Node {
 public:
@@ -55,14 +71,17 @@ public:
     }
     double length_at(double u) const noexcept override { return scale_ * flat_->length_at(std::clamp(u, 0.0, 1.0)); }
     double u_at_length(double s) const noexcept override { return path_.u_at_length(s / scale_); }
-    // Distances scale by s, so |image(x″)| = s·|x″|. A 2-D kind without bounds gives ∞.
+    // Distances scale by s, so |image(x″)| = s·|x″|. A 2-D kind without bounds (a
+    // reparametrized one) gives ∞.
     double d2_bound(double a, double b) const noexcept override {
-        return scale_ * flat_->derivative_bounds(a, b).d2 * (1.0 + 1e-12);
+        return scale_ * flat_d2_bound(*flat_, a, b) * (1.0 + 1e-12);
     }
     // The 2-D flattening at tolerance / s, lifted: the map scales every distance by s.
     void append_flattened(double tolerance, std::vector<Vec3>& out) const override {
         const std::vector<Vec2> flat = path_.flatten(tolerance / scale_);
         for (std::size_t i = 1; i < flat.size(); ++i) out.push_back(o_ + x_ * flat[i].x + y_ * flat[i].y);
+        // The 2-D end may be computed apart from point(1), to rounding.
+        if (flat.size() < 2) out.push_back(point(1.0)); else out.back() = point(1.0);
     }
 
 private:

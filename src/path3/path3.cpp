@@ -61,6 +61,13 @@ public:
         const Bezier3Piece& s = at(u, t);
         return casteljau3(s.q, s.degree, t) * n_;
     }
+    // The piece ending at u, at its local t (exactly 1 at a break).
+    Vec3 point_before(double u) const noexcept override {
+        const double x = std::clamp(u, 0.0, 1.0) * n_;
+        const double i = std::clamp(std::ceil(x) - 1.0, 0.0, n_ - 1.0);
+        const Bezier3Piece& s = pieces_[static_cast<std::size_t>(i)];
+        return casteljau3(s.p, s.degree + 1, std::min(x - i, 1.0));
+    }
     Vec3 d2(double u) const noexcept override {
         double t;
         const Bezier3Piece& s = at(u, t);
@@ -88,6 +95,52 @@ private:
     void interior_breaks(std::vector<double>& out) const override {
         for (std::size_t i = 1; i < pieces_.size(); ++i) out.push_back(static_cast<double>(i) / n_);
     }
+    // A stop lies where every component of d1 vanishes, hence at a root of each: the roots of
+    // every component (as the 2-D cubic's breaks) hold every stop. Roots within 1e-9 of a
+    // piece's ends are left to the ends.
+    void speed_kinks(std::vector<double>& out) const override {
+        for (std::size_t i = 0; i < pieces_.size(); ++i) {
+            const Bezier3Piece& s = pieces_[i];
+            for (int axis = 0; axis < 3; ++axis) {
+                double r[2];
+                const int n = derivative_roots(s, axis, r);
+                for (int k = 0; k < n; ++k) {
+                    if (r[k] > 1e-9 && r[k] < 1.0 - 1e-9) out.push_back((static_cast<double>(i) + r[k]) / n_);
+                }
+            }
+        }
+    }
+    // The roots in (−∞, ∞) of one component of a piece's d1 (a Bernstein polynomial of degree
+    // ≤ 2); their count.
+    static int derivative_roots(const Bezier3Piece& s, int axis, double r[2]) noexcept {
+        auto c = [axis](Vec3 v) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
+        if (s.degree == 2) {
+            const double q0 = c(s.q[0]), q1 = c(s.q[1]);
+            if (q0 == q1) return 0;
+            r[0] = q0 / (q0 - q1);
+            return 1;
+        }
+        if (s.degree != 3) return 0;
+        // q0·(1−t)² + 2·q1·t(1−t) + q2·t² = a·t² + b·t + q0.
+        const double q0 = c(s.q[0]), q1 = c(s.q[1]), q2 = c(s.q[2]);
+        const double a = q0 - 2.0 * q1 + q2, b = 2.0 * (q1 - q0);
+        if (a == 0.0) {
+            if (b == 0.0) return 0;
+            r[0] = -q0 / b;
+            return 1;
+        }
+        const double disc = b * b - 4.0 * a * q0;
+        if (disc < 0.0) return 0;
+        // The root away from cancellation first, the other from the product of roots.
+        const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+        if (q == 0.0) {
+            r[0] = 0.0;
+            return 1;
+        }
+        r[0] = q / a;
+        r[1] = q0 / q;
+        return 2;
+    }
     // Per piece and axis, the roots in (0, 1) of that component of d1, a Bernstein polynomial
     // of degree ≤ 2, and the piece's ends.
     Bounds3 compute_bounds() const override {
@@ -99,29 +152,9 @@ private:
                 if (t > 0.0 && t < 1.0) box.add(casteljau3(s.p, s.degree + 1, t));
             };
             for (int axis = 0; axis < 3; ++axis) {
-                auto c = [axis](Vec3 v) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
-                if (s.degree == 2) {
-                    const double q0 = c(s.q[0]), q1 = c(s.q[1]);
-                    if (q0 != q1) add_at(q0 / (q0 - q1));
-                } else if (s.degree == 3) {
-                    // q0·(1−t)² + 2·q1·t(1−t) + q2·t² = a·t² + b·t + q0.
-                    const double q0 = c(s.q[0]), q1 = c(s.q[1]), q2 = c(s.q[2]);
-                    const double a = q0 - 2.0 * q1 + q2, b = 2.0 * (q1 - q0);
-                    if (a == 0.0) {
-                        if (b != 0.0) add_at(-q0 / b);
-                        continue;
-                    }
-                    const double disc = b * b - 4.0 * a * q0;
-                    if (disc < 0.0) continue;
-                    // The root away from cancellation first, the other from the product of roots.
-                    const double r = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-                    if (r != 0.0) {
-                        add_at(r / a);
-                        add_at(q0 / r);
-                    } else {
-                        add_at(0.0);
-                    }
-                }
+                double r[2];
+                const int n = derivative_roots(s, axis, r);
+                for (int k = 0; k < n; ++k) add_at(r[k]);
             }
         }
         return box;
@@ -231,6 +264,14 @@ public:
     Vec3 point(double u) const noexcept override {
         const Piece& p = at(u);
         return p.node->point(local(u, p));
+    }
+    // The piece that starts before u, at its end when u is the next piece's cue.
+    Vec3 point_before(double u) const noexcept override {
+        const auto it = std::lower_bound(starts_.begin(), starts_.end(), u);
+        const std::size_t i = it == starts_.begin() ? 0 : static_cast<std::size_t>(it - starts_.begin()) - 1;
+        const Piece& p = pieces_[i];
+        const bool at_end = i + 1 < pieces_.size() && u >= pieces_[i + 1].start;
+        return p.node->point_before(at_end ? 1.0 : local(u, p));
     }
     Vec3 d1(double u) const noexcept override {
         const Piece& p = at(u);

@@ -34,6 +34,7 @@ public:
         return sp.v0 + model(sp, std::clamp((s - sp.s0) / sp.ds, 0.0, 1.0));
     }
     Vec3 point(double u) const noexcept override { return src_->point(source_u(u)); }
+    Vec3 point_before(double u) const noexcept override { return src_->point_before(source_u(u)); }
     Vec3 d1(double u) const noexcept override {
         const double v = source_u(u);
         const Vec3 x1 = src_->d1(v);
@@ -124,13 +125,16 @@ private:
     void build() {
         const auto& br = src_->breaks();
         const std::size_t pieces = br.size() - 1;
-        // The span budget: ample for smooth pieces (a few spans each), bounded for any path.
-        max_spans_ = 4096 + 64 * pieces;
+        // The span budget, per piece so that a hard piece cannot starve the rest: ample for a
+        // smooth piece (a few spans), bounding the work of a build by the number of pieces
+        // (beyond it, the piece's remaining spans solve u_at_length).
+        max_spans_ = 256;
         // The model is accepted when it misses the arc length by at most 1e-10·L, a tenth of
         // the contract, at the span's quarter points.
         target_ = 1e-10 * total_;
         for (std::size_t i = 0; i < pieces; ++i) {
             const double a = br[i], b = br[i + 1];
+            piece_first_ = spans_.size();
             // Four spans per piece to start, so no check straddles all of a piece's shape.
             double va = a, sa = src_->length_at(a);
             for (int k = 1; k <= 4; ++k) {
@@ -170,7 +174,7 @@ private:
             return;
         }
         // Each split halves a span; 30 levels is far below a double's resolution of a piece.
-        if (depth < 30 && spans_.size() + 2 <= max_spans_) {
+        if (depth < 30 && spans_.size() - piece_first_ + 2 <= max_spans_) {
             const double vm = va + 0.5 * (vb - va);
             if (vm > va && vm < vb) {
                 const double sm = src_->length_at(vm);
@@ -201,7 +205,8 @@ private:
     const Path3Node* src_;
     double total_ = 0.0;
     double target_ = 0.0;
-    std::size_t max_spans_ = 0;
+    std::size_t max_spans_ = 0;    // per piece
+    std::size_t piece_first_ = 0;  // the first span of the piece being built
     std::vector<Span> spans_;
     std::vector<double> starts_;
 };

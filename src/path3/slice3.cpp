@@ -20,6 +20,7 @@ public:
         finish();
     }
     Vec3 point(double v) const noexcept override { return src_->point(map(v)); }
+    Vec3 point_before(double v) const noexcept override { return src_->point_before(map(v)); }
     Vec3 d1(double v) const noexcept override { return src_->d1(map(v)) * w_; }
     Vec3 d2(double v) const noexcept override { return src_->d2(map(v)) * w_ * w_; }
     Vec3 d3(double v) const noexcept override { return src_->d3(map(v)) * w_ * w_ * w_; }
