@@ -40,10 +40,10 @@ constexpr std::size_t ahead = timeline_ahead;
 constexpr std::size_t stages = 5;
 constexpr std::size_t stride = 2;
 
-struct Depth {
+struct FastDepth {
     int& depth;
-    explicit Depth(int& d) noexcept : depth(d) { ++depth; }
-    ~Depth() { --depth; }
+    explicit FastDepth(int& d) noexcept : depth(d) { ++depth; }
+    ~FastDepth() { --depth; }
 };
 
 // Where the timeline's local time and the child's position stand after `elapsed` seconds
@@ -402,7 +402,7 @@ void TimelineStore::step_slow(std::size_t i, double dt) {
     r.elapsed += dt;
     const double tau = std::clamp(r.base + r.elapsed * r.time_scale * r.direction, 0.0, total(r));
     if (tau != r.tau || r.dirty) {
-        Depth depth(depth_);
+        FastDepth depth(depth_);
         Base base(*this);
         if (!advance(slot, tau, true)) settle(slot);
     }

@@ -116,7 +116,7 @@ Color mix(const Color& a, const Color& b, double t, ColorSpace space) noexcept {
 
 namespace {
 
-[[noreturn]] void bad(std::string_view text, const std::string& why) {
+[[noreturn]] void bad_color(std::string_view text, const std::string& why) {
     throw Error("parse_color: \"" + std::string(text) + "\": " + why);
 }
 
@@ -130,7 +130,7 @@ int hex_digit(char c) noexcept {
 Color parse_hex(std::string_view text, std::string_view digits) {
     const std::size_t n = digits.size();
     if (n != 3 && n != 4 && n != 6 && n != 8)
-        bad(text, "a hex colour has 3, 4, 6 or 8 digits (got " + std::to_string(n) + ")");
+        bad_color(text, "a hex colour has 3, 4, 6 or 8 digits (got " + std::to_string(n) + ")");
     std::array<double, 4> v{0, 0, 0, 1};
     const std::size_t per = n <= 4 ? 1 : 2;
     for (std::size_t k = 0; k < n / per; ++k) {
@@ -141,7 +141,7 @@ Color parse_hex(std::string_view text, std::string_view digits) {
                 std::string why(1, '\'');  // appended, not operator+: g++ 12 -O3 warns falsely there
                 why += digits[k * per + j];
                 why += "' is not a hex digit";
-                bad(text, why);
+                bad_color(text, why);
             }
             value = value * 16 + d;
         }
@@ -165,7 +165,7 @@ double parse_component(std::string_view text, std::string_view item, bool is_alp
     double value = 0.0;
     const std::string what = is_alpha ? "alpha" : "component " + std::to_string(index + 1);
     if (!detail::parse_finite(item, value))
-        bad(text, what + " is not a number (\"" + std::string(item) + "\")");
+        bad_color(text, what + " is not a number (\"" + std::string(item) + "\")");
     if (percent) value /= 100.0;
     else if (!is_alpha) value /= 255.0;
     return std::clamp(value, 0.0, 1.0);
@@ -205,7 +205,7 @@ Color parse_function(std::string_view text, std::string_view body) {
         }
     }
     if (items.size() != 3)
-        bad(text, "rgb() takes 3 components and an optional alpha (got " + std::to_string(items.size()) +
+        bad_color(text, "rgb() takes 3 components and an optional alpha (got " + std::to_string(items.size()) +
                       (has_alpha ? " and an alpha)" : ")"));
     Color c;
     c.r = parse_component(text, items[0], false, 0);
@@ -219,17 +219,17 @@ Color parse_function(std::string_view text, std::string_view body) {
 
 Color parse_color(std::string_view text) {
     const std::string_view s = trim(text);
-    if (s.empty()) bad(text, "empty colour");
+    if (s.empty()) bad_color(text, "empty colour");
     if (s.front() == '#') return parse_hex(text, s.substr(1));
     std::string lower(s);
     for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     for (std::string_view name : {std::string_view("rgba("), std::string_view("rgb(")}) {
         if (lower.starts_with(name)) {
-            if (s.back() != ')') bad(text, "missing ')'");
+            if (s.back() != ')') bad_color(text, "missing ')'");
             return parse_function(text, s.substr(name.size(), s.size() - name.size() - 1));
         }
     }
-    bad(text, "expected #rgb, #rgba, #rrggbb, #rrggbbaa, rgb(...) or rgba(...)");
+    bad_color(text, "expected #rgb, #rgba, #rrggbb, #rrggbbaa, rgb(...) or rgba(...)");
 }
 
 namespace {

@@ -20,9 +20,12 @@
 #include <vector>
 
 namespace grape {
+// Named, so that in a unity build beside the scene loader (whose files use scene_io at
+// grape scope) its helpers are found only where asked for.
+namespace sheet_io {
 namespace {
 
-using json = nlohmann::ordered_json;
+using sheet_json = nlohmann::ordered_json;
 using detail::child;
 using detail::number_text;
 using detail::type_of;
@@ -34,23 +37,23 @@ constexpr double max_pixels = 1 << 24;
     throw Error("sprite sheet: " + (pointer.empty() ? std::string("/") : pointer) + ": " + why);
 }
 
-const json& object(const json& j, const std::string& pointer) {
+const sheet_json& object(const sheet_json& j, const std::string& pointer) {
     if (!j.is_object()) fail(pointer, "expected an object, got " + type_of(j));
     return j;
 }
 
-const json& required(const json& obj, const std::string& pointer, std::string_view key) {
+const sheet_json& required(const sheet_json& obj, const std::string& pointer, std::string_view key) {
     const auto it = obj.find(key);
     if (it == obj.end()) fail(pointer, "missing field \"" + std::string(key) + "\"");
     return *it;
 }
 
-const json* optional(const json& obj, std::string_view key) {
+const sheet_json* optional(const sheet_json& obj, std::string_view key) {
     const auto it = obj.find(key);
     return it == obj.end() ? nullptr : &*it;
 }
 
-double number(const json& j, const std::string& pointer) {
+double number(const sheet_json& j, const std::string& pointer) {
     if (!j.is_number()) fail(pointer, "expected a number, got " + type_of(j));
     const double v = j.get<double>();
     if (!std::isfinite(v)) fail(pointer, "number out of range");
@@ -58,7 +61,7 @@ double number(const json& j, const std::string& pointer) {
 }
 
 // A whole number of pixels in [lowest, 2^24].
-int pixels(const json& obj, const std::string& pointer, std::string_view key, double lowest) {
+int pixels(const sheet_json& obj, const std::string& pointer, std::string_view key, double lowest) {
     const std::string at = child(pointer, key);
     const double v = number(required(obj, pointer, key), at);
     if (v != std::floor(v)) fail(at, "expected a whole number of pixels (got " + number_text(v) + ")");
@@ -68,19 +71,19 @@ int pixels(const json& obj, const std::string& pointer, std::string_view key, do
     return static_cast<int>(v);
 }
 
-FrameRect rect(const json& j, const std::string& pointer, double lowest_size) {
+FrameRect rect(const sheet_json& j, const std::string& pointer, double lowest_size) {
     object(j, pointer);
     return {pixels(j, pointer, "x", -max_pixels), pixels(j, pointer, "y", -max_pixels), pixels(j, pointer, "w", lowest_size),
             pixels(j, pointer, "h", lowest_size)};
 }
 
-bool boolean(const json& obj, const std::string& pointer, std::string_view key, bool fallback) {
+bool boolean(const sheet_json& obj, const std::string& pointer, std::string_view key, bool fallback) {
     return detail::bool_member(obj, pointer, key, fallback, fail);
 }
 
-std::string string(const json& j, const std::string& pointer) { return detail::string_of(j, pointer, fail); }
+std::string string(const sheet_json& j, const std::string& pointer) { return detail::string_of(j, pointer, fail); }
 
-std::size_t frame_index(const json& obj, const std::string& pointer, std::string_view key, std::size_t count) {
+std::size_t frame_index(const sheet_json& obj, const std::string& pointer, std::string_view key, std::size_t count) {
     const std::string at = child(pointer, key);
     const double v = number(required(obj, pointer, key), at);
     if (v != std::floor(v) || v < 0) fail(at, "expected a frame index, a whole number >= 0 (got " + number_text(v) + ")");
@@ -92,7 +95,7 @@ std::size_t frame_index(const json& obj, const std::string& pointer, std::string
 
 std::string size_text(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
-SpriteFrame read_frame(const json& j, const std::string& pointer, std::string name, int sheet_w, int sheet_h) {
+SpriteFrame read_frame(const sheet_json& j, const std::string& pointer, std::string name, int sheet_w, int sheet_h) {
     object(j, pointer);
     SpriteFrame f;
     f.name = std::move(name);
@@ -112,7 +115,7 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
     // side, writes the cell as `frame` and the trimmed pixels' size in spriteSourceSize).
     int pixels_w = upright.width;
     int pixels_h = upright.height;
-    if (const json* s = optional(j, "spriteSourceSize")) {
+    if (const sheet_json* s = optional(j, "spriteSourceSize")) {
         const std::string at = child(pointer, "spriteSourceSize");
         const FrameRect r = rect(*s, at, 1);
         const int extra_w = upright.width - r.width;
@@ -134,7 +137,7 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
     }
     f.source_width = pixels_w;
     f.source_height = pixels_h;
-    if (const json* s = optional(j, "sourceSize")) {
+    if (const sheet_json* s = optional(j, "sourceSize")) {
         const std::string at = child(pointer, "sourceSize");
         object(*s, at);
         f.source_width = pixels(*s, at, "w", 1);
@@ -151,7 +154,7 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
                  std::to_string(f.offset_y) + "), outside the " + size_text(f.source_width, f.source_height) +
                  " sourceSize");
     }
-    if (const json* d = optional(j, "duration")) {
+    if (const sheet_json* d = optional(j, "duration")) {
         const std::string at = child(pointer, "duration");
         f.duration_ms = number(*d, at);
         if (!(f.duration_ms > 0.0)) fail(at, "must be positive, milliseconds (got " + number_text(f.duration_ms) + ")");
@@ -159,7 +162,7 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
     // TexturePacker's pivot (`anchor` in its PixiJS format): a fraction of the sprite's size,
     // from its top-left. A kept-position crop's sprite is the crop, where it sat in the art.
     const char* pivot_key = optional(j, "pivot") ? "pivot" : "anchor";
-    if (const json* p = optional(j, pivot_key)) {
+    if (const sheet_json* p = optional(j, pivot_key)) {
         const std::string at = child(pointer, pivot_key);
         object(*p, at);
         const double px = number(required(*p, at, "x"), child(at, "x"));
@@ -171,7 +174,7 @@ SpriteFrame read_frame(const json& j, const std::string& pointer, std::string na
 }
 
 // Both tools write the scale as a string of a decimal number ("1", "0.5"); a number is taken too.
-double sheet_scale(const json& j, const std::string& pointer) {
+double sheet_scale(const sheet_json& j, const std::string& pointer) {
     double v = 0.0;
     if (j.is_string()) {
         const std::string s = j.get<std::string>();
@@ -183,7 +186,7 @@ double sheet_scale(const json& j, const std::string& pointer) {
     return v;
 }
 
-ClipDirection direction(const json& j, const std::string& pointer) {
+ClipDirection direction(const sheet_json& j, const std::string& pointer) {
     const std::string s = string(j, pointer);
     if (s == "forward") return ClipDirection::forward;
     if (s == "reverse") return ClipDirection::reverse;
@@ -193,7 +196,7 @@ ClipDirection direction(const json& j, const std::string& pointer) {
 }
 
 // Aseprite writes "repeat" as a string of digits ("3"); a number is taken too.
-int repeat(const json& j, const std::string& pointer) {
+int repeat(const sheet_json& j, const std::string& pointer) {
     double v = 0.0;
     if (j.is_string()) {
         const std::string s = j.get<std::string>();
@@ -274,7 +277,7 @@ const PackedSprite* sprite_of_tag(const std::string& tag, const std::vector<Pack
     return found;
 }
 
-SpriteClip read_tag(const json& j, const std::string& pointer, std::size_t count, const std::vector<PackedSprite>& sprites) {
+SpriteClip read_tag(const sheet_json& j, const std::string& pointer, std::size_t count, const std::vector<PackedSprite>& sprites) {
     object(j, pointer);
     SpriteClip c;
     c.name = string(required(j, pointer, "name"), child(pointer, "name"));
@@ -293,17 +296,17 @@ SpriteClip read_tag(const json& j, const std::string& pointer, std::size_t count
     if (c.to < c.from) {
         fail(child(pointer, "to"), std::to_string(c.to - first) + " is before from (" + std::to_string(c.from - first) + ")");
     }
-    if (const json* d = optional(j, "direction")) c.direction = direction(*d, child(pointer, "direction"));
-    if (const json* r = optional(j, "repeat")) c.repeat = repeat(*r, child(pointer, "repeat"));
+    if (const sheet_json* d = optional(j, "direction")) c.direction = direction(*d, child(pointer, "direction"));
+    if (const sheet_json* r = optional(j, "repeat")) c.repeat = repeat(*r, child(pointer, "repeat"));
     return c;
 }
 
-SpriteSlice read_slice(const json& j, const std::string& pointer, std::size_t count) {
+SpriteSlice read_slice(const sheet_json& j, const std::string& pointer, std::size_t count) {
     object(j, pointer);
     SpriteSlice s;
     s.name = string(required(j, pointer, "name"), child(pointer, "name"));
     const std::string keys_at = child(pointer, "keys");
-    const json& keys = required(j, pointer, "keys");
+    const sheet_json& keys = required(j, pointer, "keys");
     if (!keys.is_array()) fail(keys_at, "expected an array, got " + type_of(keys));
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const std::string at = child(keys_at, k);
@@ -311,7 +314,7 @@ SpriteSlice read_slice(const json& j, const std::string& pointer, std::size_t co
         SliceKey key;
         key.frame = frame_index(keys[k], at, "frame", count);
         key.bounds = rect(required(keys[k], at, "bounds"), child(at, "bounds"), 0);
-        if (const json* p = optional(keys[k], "pivot")) {
+        if (const sheet_json* p = optional(keys[k], "pivot")) {
             const std::string pivot_at = child(at, "pivot");
             object(*p, pivot_at);
             key.has_pivot = true;
@@ -327,17 +330,17 @@ SpriteSlice read_slice(const json& j, const std::string& pointer, std::size_t co
     return s;
 }
 
-SpriteSheet read_sheet(const json& root) {
+SpriteSheet read_sheet(const sheet_json& root) {
     object(root, "");
-    const json& meta = object(required(root, "", "meta"), "/meta");
-    const json& size = object(required(meta, "/meta", "size"), "/meta/size");
+    const sheet_json& meta = object(required(root, "", "meta"), "/meta");
+    const sheet_json& size = object(required(meta, "/meta", "size"), "/meta/size");
     SpriteSheetDef def;
     def.width = pixels(size, "/meta/size", "w", 1);
     def.height = pixels(size, "/meta/size", "h", 1);
-    if (const json* image = optional(meta, "image")) def.image = string(*image, "/meta/image");
-    if (const json* scale = optional(meta, "scale")) def.scale = sheet_scale(*scale, "/meta/scale");
+    if (const sheet_json* image = optional(meta, "image")) def.image = string(*image, "/meta/image");
+    if (const sheet_json* scale = optional(meta, "scale")) def.scale = sheet_scale(*scale, "/meta/scale");
 
-    const json& frames = required(root, "", "frames");
+    const sheet_json& frames = required(root, "", "frames");
     if (frames.is_object()) {
         for (const auto& [key, value] : frames.items()) {
             def.frames.push_back(read_frame(value, child("/frames", key), key, def.width, def.height));
@@ -347,7 +350,7 @@ SpriteSheet read_sheet(const json& root) {
             const std::string at = child("/frames", k);
             std::string name;
             if (frames[k].is_object()) {
-                if (const json* n = optional(frames[k], "filename")) name = string(*n, child(at, "filename"));
+                if (const sheet_json* n = optional(frames[k], "filename")) name = string(*n, child(at, "filename"));
             }
             def.frames.push_back(read_frame(frames[k], at, std::move(name), def.width, def.height));
         }
@@ -357,14 +360,14 @@ SpriteSheet read_sheet(const json& root) {
     if (def.frames.empty()) fail("/frames", "a sheet needs at least one frame");
 
     const std::size_t count = def.frames.size();
-    if (const json* tags = optional(meta, "frameTags")) {
+    if (const sheet_json* tags = optional(meta, "frameTags")) {
         if (!tags->is_array()) fail("/meta/frameTags", "expected an array, got " + type_of(*tags));
         const std::vector<PackedSprite> sprites = packed_sprites(def.frames);
         for (std::size_t k = 0; k < tags->size(); ++k) {
             def.clips.push_back(read_tag((*tags)[k], child("/meta/frameTags", k), count, sprites));
         }
     }
-    if (const json* slices = optional(meta, "slices")) {
+    if (const sheet_json* slices = optional(meta, "slices")) {
         if (!slices->is_array()) fail("/meta/slices", "expected an array, got " + type_of(*slices));
         for (std::size_t k = 0; k < slices->size(); ++k) def.slices.push_back(read_slice((*slices)[k], child("/meta/slices", k), count));
     }
@@ -385,26 +388,29 @@ SpriteSheet read_sheet(const json& root) {
     return SpriteSheet(std::move(def));
 }
 
-json rect_json(const FrameRect& r) { return {{"x", r.x}, {"y", r.y}, {"w", r.width}, {"h", r.height}}; }
+sheet_json rect_json(const FrameRect& r) { return {{"x", r.x}, {"y", r.y}, {"w", r.width}, {"h", r.height}}; }
 
-json duration_json(double ms) {
+sheet_json duration_json(double ms) {
     if (ms == std::floor(ms) && ms < 9e15) return static_cast<std::int64_t>(ms);
     return ms;
 }
 
 }  // namespace
+}  // namespace sheet_io
+
+using sheet_io::sheet_json;
 
 SpriteSheet load_sprite_sheet(std::string_view text) {
-    json root;
+    sheet_json root;
     try {
-        root = json::parse(text.begin(), text.end());
-    } catch (const json::parse_error& e) {
+        root = sheet_json::parse(text.begin(), text.end());
+    } catch (const sheet_json::parse_error& e) {
         throw Error("sprite sheet: JSON syntax error at byte " + std::to_string(e.byte) + ": " +
                     std::string(e.what()).substr(std::string(e.what()).find(':') + 2));
-    } catch (const json::exception& e) {
+    } catch (const sheet_json::exception& e) {
         throw Error(std::string("sprite sheet: invalid JSON: ") + e.what());
     }
-    return read_sheet(root);
+    return sheet_io::read_sheet(root);
 }
 
 SpriteSheet load_sprite_sheet_file(const std::filesystem::path& file) {
@@ -421,18 +427,18 @@ std::filesystem::path sprite_sheet_image_path(const SpriteSheet& sheet, const st
 }
 
 std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) {
-    json frames = layout == SheetJsonLayout::hash ? json::object() : json::array();
+    sheet_json frames = layout == SheetJsonLayout::hash ? sheet_json::object() : sheet_json::array();
     std::set<std::string> names;
     for (std::size_t k = 0; k < sheet.frame_count(); ++k) {
         const SpriteFrame& f = sheet.frame(k);
-        json j;
+        sheet_json j;
         if (layout == SheetJsonLayout::array) j["filename"] = f.name;
-        j["frame"] = rect_json({f.rect.x, f.rect.y, f.width(), f.height()});
+        j["frame"] = sheet_io::rect_json({f.rect.x, f.rect.y, f.width(), f.height()});
         j["rotated"] = f.rotated;
         j["trimmed"] = f.trimmed();
-        j["spriteSourceSize"] = rect_json({f.offset_x, f.offset_y, f.width(), f.height()});
+        j["spriteSourceSize"] = sheet_io::rect_json({f.offset_x, f.offset_y, f.width(), f.height()});
         j["sourceSize"] = {{"w", f.source_width}, {"h", f.source_height}};
-        j["duration"] = duration_json(f.duration_ms);
+        j["duration"] = sheet_io::duration_json(f.duration_ms);
         if (layout == SheetJsonLayout::hash) {
             if (f.name.empty() || !names.insert(f.name).second) {
                 throw Error("save_sprite_sheet: the hash layout needs unique, non-empty frame names (frame " +
@@ -446,11 +452,11 @@ std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) 
     const char* directions[] = {"forward", "reverse", "pingpong", "pingpong_reverse"};
     // On a sheet of several sprites a tag that names its sprite counts that sprite's frames, as
     // the reader has it.
-    const std::vector<PackedSprite> sprites = packed_sprites(sheet.frames());
-    json tags = json::array();
+    const std::vector<sheet_io::PackedSprite> sprites = sheet_io::packed_sprites(sheet.frames());
+    sheet_json tags = sheet_json::array();
     for (const SpriteClip& c : sheet.clips()) {
         std::size_t first = 0;
-        if (const PackedSprite* sprite = sprite_of_tag(c.name, sprites)) {
+        if (const sheet_io::PackedSprite* sprite = sheet_io::sprite_of_tag(c.name, sprites)) {
             if (c.from < sprite->first || c.to >= sprite->first + sprite->count) {
                 throw Error("save_sprite_sheet: clip '" + c.name + "' names sprite '" + sprite->title + "' (sheet frames " +
                             std::to_string(sprite->first) + " to " + std::to_string(sprite->first + sprite->count - 1) +
@@ -458,31 +464,31 @@ std::string save_sprite_sheet(const SpriteSheet& sheet, SheetJsonLayout layout) 
             }
             first = sprite->first;
         }
-        json t = {{"name", c.name}, {"from", c.from - first}, {"to", c.to - first},
+        sheet_json t = {{"name", c.name}, {"from", c.from - first}, {"to", c.to - first},
                   {"direction", directions[static_cast<int>(c.direction)]}};
         if (c.repeat > 0) t["repeat"] = std::to_string(c.repeat);  // a string, as Aseprite writes it
         tags.push_back(std::move(t));
     }
-    json slices = json::array();
+    sheet_json slices = sheet_json::array();
     for (const SpriteSlice& s : sheet.slices()) {
-        json keys = json::array();
+        sheet_json keys = sheet_json::array();
         for (const SliceKey& key : s.keys) {
-            json k = {{"frame", key.frame}, {"bounds", rect_json(key.bounds)}};
+            sheet_json k = {{"frame", key.frame}, {"bounds", sheet_io::rect_json(key.bounds)}};
             if (key.has_pivot) k["pivot"] = {{"x", key.pivot.x}, {"y", key.pivot.y}};
             keys.push_back(std::move(k));
         }
         slices.push_back({{"name", s.name}, {"keys", std::move(keys)}});
     }
-    json meta = {{"app", "grape"},
+    sheet_json meta = {{"app", "grape"},
                  {"version", "1"},
                  {"image", sheet.image()},
                  {"format", "RGBA8888"},
                  {"size", {{"w", sheet.width()}, {"h", sheet.height()}}},
-                 {"scale", number_text(sheet.scale())},
+                 {"scale", detail::number_text(sheet.scale())},
                  {"frameTags", std::move(tags)},
-                 {"layers", json::array()},
+                 {"layers", sheet_json::array()},
                  {"slices", std::move(slices)}};
-    const json root = {{"frames", std::move(frames)}, {"meta", std::move(meta)}};
+    const sheet_json root = {{"frames", std::move(frames)}, {"meta", std::move(meta)}};
     return root.dump(1) + "\n";
 }
 
