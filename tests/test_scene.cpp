@@ -615,7 +615,10 @@ std::string read_text(const std::filesystem::path& file) {
 TEST(SceneFiles, DocumentationExampleAndSchemaAgreeWithTheLoader) {
     const auto root = std::filesystem::path(__FILE__).parent_path().parent_path();
     const std::string doc = read_text(root / "docs" / "scene-format.md");
-    const auto begin = doc.find("```json\n");
+    // The complete example (the 3-D path section before it has blocks of single paths).
+    const auto section = doc.find("## A complete example");
+    ASSERT_NE(section, std::string::npos);
+    const auto begin = doc.find("```json\n", section);
     ASSERT_NE(begin, std::string::npos);
     const auto end = doc.find("```", begin + 8);
     const Scene example = grape::load_scene(doc.substr(begin + 8, end - begin - 8));

@@ -103,7 +103,11 @@ private:
     double twist_ = 0.0;
     double length_ = 0.0;
     std::vector<Blend> blends_;
+    // Modes ends, closed and reference_up read the arc length at u: panels of u on which a
+    // 5-point Gauss rule is resolved to rounding, with the length from u = 0 to each start.
+    std::vector<double> arc_u_, arc_s_;
 
+    double arc_length_at(double u) const noexcept;
     static RotationMinimizingFrames make_rmf(const Path3& path, const FramesDef& def);
     double reference_roll(double u) const noexcept;
 };

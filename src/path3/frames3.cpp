@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -41,6 +42,41 @@ double cone_angle_f3(Vec3 t, Vec3 w) noexcept {
     return std::atan2(length(cross(t, w)), std::abs(dot(t, w)));
 }
 
+// 5-point Gauss–Legendre rule for the length of path on [a, b]: exact for a speed that is a
+// polynomial of degree 9, and on a panel where the halves agree with the whole to rounding.
+double gauss_length_f3(const Path3& path, double a, double b) noexcept {
+    static constexpr double x[5] = {0.0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640, -0.9061798459386640};
+    static constexpr double w[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665, 0.2369268850561891,
+                                    0.2369268850561891};
+    const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
+    double sum = 0.0;
+    for (int k = 0; k < 5; ++k) sum += w[k] * length(path.d1(mid + half * x[k]));
+    return sum * half;
+}
+
+// Panels of [a, b] (inside one piece) on which the rule agrees with its two halves within
+// `allowed` per unit of u or within the rounding of the speed (64 ulp of `speed`, the piece's
+// mean speed, per unit of u: near a stop the speed is |d1| of nearly cancelling terms, and its
+// rounding does not shrink with the panel). Work is bounded: at most 40 halvings (a cusp, where
+// the speed has a kink the rule cannot resolve) and 4096 panels a piece.
+void arc_panels_f3(const Path3& path, double a, double b, double whole, double allowed, double speed, int depth,
+                   std::size_t& budget, std::vector<double>& u, std::vector<double>& len) {
+    const double m = 0.5 * (a + b);
+    const double left = gauss_length_f3(path, a, m), right = gauss_length_f3(path, m, b);
+    const double resolved =
+        (b - a) * std::max(allowed, 64 * std::numeric_limits<double>::epsilon() * speed) +
+        64 * std::numeric_limits<double>::epsilon() * whole;
+    if (depth >= 40 || budget <= 2 || std::abs(left + right - whole) <= resolved || !(a < m && m < b)) {
+        u.push_back(a);
+        len.push_back(left + right);
+        if (budget > 0) --budget;
+        return;
+    }
+    --budget;
+    arc_panels_f3(path, a, m, left, allowed, speed, depth + 1, budget, u, len);
+    arc_panels_f3(path, m, b, right, allowed, speed, depth + 1, budget, u, len);
+}
+
 }  // namespace
 
 RotationMinimizingFrames Frames3::make_rmf(const Path3& path, const FramesDef& def) {
@@ -70,6 +106,29 @@ Frames3::Frames3(Path3 path, const FramesDef& def)
     : path_(std::move(path)), mode_(def.mode), up_(normalized(def.up)), rmf_(make_rmf(path_, def)),
       length_(path_.length()) {
     const std::string where = "Frames3: ";
+    if (mode_ == FrameMode::ends || mode_ == FrameMode::closed || mode_ == FrameMode::reference_up) {
+        // Each piece from its exact start length (length_at at a break), so the panels' sums
+        // carry no rounding from one piece into the next; within 1e-15 of the length per u.
+        const auto breaks = path_.breaks();
+        std::vector<double> len;
+        for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+            const std::size_t first = arc_u_.size();
+            const double whole = gauss_length_f3(path_, breaks[i], breaks[i + 1]);
+            const double width = breaks[i + 1] - breaks[i];
+            std::size_t budget = 4096;
+            arc_panels_f3(path_, breaks[i], breaks[i + 1], whole, 1e-15 * length_, width > 0.0 ? whole / width : 0.0, 0,
+                          budget, arc_u_, len);
+            double s = path_.length_at(breaks[i]);
+            for (std::size_t k = first; k < arc_u_.size(); ++k) {
+                arc_s_.push_back(s);
+                s += len[k];
+            }
+        }
+        if (arc_u_.empty()) {
+            arc_u_.push_back(0.0);
+            arc_s_.push_back(0.0);
+        }
+    }
     if (mode_ == FrameMode::ends || mode_ == FrameMode::closed) {
         const Frame3 end = rmf_.frame(1.0);
         Vec3 target;
@@ -168,7 +227,7 @@ Frame3 Frames3::frame(double u) const noexcept {
         return rmf_.frame(u);
     case FrameMode::ends:
     case FrameMode::closed: {
-        const double share = length_ > 0.0 ? path_.length_at(u) / length_ : u;
+        const double share = length_ > 0.0 ? arc_length_at(u) / length_ : u;
         return rolled_f3(rmf_.frame(u), twist_ * share);
     }
     case FrameMode::frenet: {
@@ -185,7 +244,7 @@ Frame3 Frames3::frame(double u) const noexcept {
         double psi = b.psi0;
         if (span > 0.0) {
             // Cubic Hermite in arc length: values and rates at both ends.
-            const double t = std::clamp((path_.length_at(u) - b.s0) / span, 0.0, 1.0);
+            const double t = std::clamp((arc_length_at(u) - b.s0) / span, 0.0, 1.0);
             const double t2 = t * t, t3 = t2 * t;
             psi = (2 * t3 - 3 * t2 + 1) * b.psi0 + (t3 - 2 * t2 + t) * span * b.rate0 + (3 * t2 - 2 * t3) * b.psi1 +
                   (t3 - t2) * span * b.rate1;
@@ -198,6 +257,12 @@ Frame3 Frames3::frame(double u) const noexcept {
     f.normal = across_f3(up_, f.tangent);
     f.binormal = cross(f.tangent, f.normal);
     return f;
+}
+
+double Frames3::arc_length_at(double u) const noexcept {
+    const auto it = std::upper_bound(arc_u_.begin(), arc_u_.end(), u);
+    const std::size_t j = it == arc_u_.begin() ? 0 : static_cast<std::size_t>(it - arc_u_.begin()) - 1;
+    return arc_s_[j] + gauss_length_f3(path_, arc_u_[j], u);
 }
 
 const Path3& Frames3::path() const noexcept { return path_; }
