@@ -26,10 +26,12 @@ set(ENV{PKG_CONFIG_PATH} "")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-static-libgcc -static-libstdc++ -static")
 set(CMAKE_SHARED_LINKER_FLAGS_INIT "-static-libgcc -static-libstdc++ -static")
 
-# ctest and gtest_discover_tests run the .exe files through Wine.
+# ctest and gtest_discover_tests run the .exe files through Wine, by scripts/wine-run: it runs
+# a program again when Wine itself failed to start it (see there).
 find_program(GRAPE_WINE NAMES wine64 wine PATHS /usr/lib/wine)
 if(GRAPE_WINE)
-  set(CMAKE_CROSSCOMPILING_EMULATOR ${GRAPE_WINE})
+  get_filename_component(wine_run ${CMAKE_CURRENT_LIST_DIR}/../scripts/wine-run ABSOLUTE)
+  set(CMAKE_CROSSCOMPILING_EMULATOR ${wine_run})
 endif()
 
 set(GRAPE_WITH_RENDER OFF CACHE STRING "cairo has no MinGW build in Debian")
