@@ -4,6 +4,7 @@
 // random rotations; and typed animations of a Quat member through the engine.
 #include <grape/anim.hpp>
 #include <grape/quat.hpp>
+#include <grape/quat_spline.hpp>
 
 #include "error_text.hpp"
 #include "seeds.hpp"
@@ -318,6 +319,390 @@ TEST(QuatTween, ByUnderYoyoReturnsToTheStart) {
         EXPECT_LE(quat_distance(ship.orientation, start * grape::from_axis_angle({0, 0, 1}, u)), 64 * eps) << k;
     }
     EXPECT_EQ(ship.orientation, start);
+}
+
+// ---- Euler angles ----
+
+constexpr grape::EulerOrder all_orders[] = {grape::EulerOrder::xyz, grape::EulerOrder::xzy, grape::EulerOrder::yxz,
+                                            grape::EulerOrder::yzx, grape::EulerOrder::zxy, grape::EulerOrder::zyx};
+// The axes of each order, written out again for the reference.
+Vec3 order_axis(grape::EulerOrder o, int which) {
+    static const char* names[] = {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx"};
+    const char c = names[static_cast<int>(o)][which];
+    return c == 'x' ? Vec3{1, 0, 0} : c == 'y' ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+}
+// Intrinsic: the product of turns about the fixed axes in the order's order.
+Quat reference_euler(const grape::EulerAngles& a, grape::EulerOrder o) {
+    return grape::from_axis_angle(order_axis(o, 0), a.first) * grape::from_axis_angle(order_axis(o, 1), a.second) *
+           grape::from_axis_angle(order_axis(o, 2), a.third);
+}
+double angle_gap(double a, double b) { return std::abs(std::remainder(a - b, 2 * pi)); }
+
+TEST(Euler, RoundTripsInEveryOrderAwayFromTheLock) {
+    std::mt19937_64 rng(grape::testing::test_seed(31));
+    std::uniform_real_distribution<double> full(-pi, pi), half(-pi / 2 + 1e-3, pi / 2 - 1e-3);
+    for (grape::EulerOrder o : all_orders) {
+        for (int i = 0; i < 20000; ++i) {
+            const grape::EulerAngles a{full(rng), half(rng), full(rng)};
+            const Quat q = grape::from_euler(a, o);
+            EXPECT_LE(quat_distance(q, reference_euler(a, o)), 8 * eps);
+            const grape::EulerAngles b = grape::to_euler(q, o);
+            // Second: an atan2 of two magnitudes with errors of ~2 ulp, then −π/2: 16 ulp of π/2.
+            EXPECT_NEAR(b.second, a.second, 16 * eps * pi / 2) << static_cast<int>(o) << " " << i;
+            // First and third: sums of two half angles, each an atan2 of components with errors
+            // of ~2 ulp over a magnitude of at least cos(second)/√2: 16 ulp / cos(second).
+            const double tol = 16 * eps / std::cos(a.second) + 8 * eps;
+            EXPECT_LE(angle_gap(b.first, a.first), tol) << static_cast<int>(o) << " " << i;
+            EXPECT_LE(angle_gap(b.third, a.third), tol) << static_cast<int>(o) << " " << i;
+            EXPECT_LE(std::abs(b.first), pi);
+            EXPECT_LE(std::abs(b.third), pi);
+        }
+    }
+    // The names say what they mean: yaw about z, then pitch about the turned y.
+    const Quat ypr = grape::from_euler({pi / 2, -pi / 4, 0.0}, grape::EulerOrder::zyx);
+    // Yaw takes +x to +y; a pitch of −π/4 about the turned y (now −x) lifts the nose to +z.
+    EXPECT_LE(vec_distance(grape::rotate(ypr, {1, 0, 0}), Vec3{0, std::sqrt(0.5), std::sqrt(0.5)}), 4 * eps);
+}
+
+TEST(Euler, EveryRotationRoundTripsIncludingNearTheLock) {
+    std::mt19937_64 rng(grape::testing::test_seed(32));
+    std::uniform_real_distribution<double> full(-pi, pi), tiny(-1e-6, 1e-6);
+    for (grape::EulerOrder o : all_orders) {
+        for (int i = 0; i < 20000; ++i) {
+            // Half of them within 1e-6 rad of the lock, where rotation-matrix methods lose
+            // digits (errors of ε/cos(second)).
+            const Quat q = i % 2 ? random_rotation(rng)
+                                 : grape::from_euler({full(rng), (i % 4 ? 1 : -1) * (pi / 2) + tiny(rng), full(rng)}, o);
+            const grape::EulerAngles a = grape::to_euler(q, o);
+            EXPECT_LE(std::abs(a.second), pi / 2);
+            // Half-angle sums and differences keep the rotation to rounding at any distance to
+            // the lock: 32 ulp. Within the lock branch the rotation error is below 5e-12.
+            EXPECT_LE(quat_distance(grape::from_euler(a, o), q), i % 2 ? 32 * eps : 32 * eps) << static_cast<int>(o) << " " << i;
+        }
+    }
+}
+
+TEST(Euler, GimbalLockIsResolvedDeterministically) {
+    std::mt19937_64 rng(grape::testing::test_seed(33));
+    std::uniform_real_distribution<double> full(-pi, pi);
+    for (grape::EulerOrder o : all_orders) {
+        for (int i = 0; i < 2000; ++i) {
+            const double second = i % 2 ? pi / 2 : -pi / 2;
+            const Quat q = grape::from_euler({full(rng), second, full(rng)}, o);
+            const grape::EulerAngles a = grape::to_euler(q, o);
+            EXPECT_EQ(a.third, 0.0) << static_cast<int>(o) << " " << i;  // the whole turn in first
+            EXPECT_NEAR(a.second, second, 16 * eps);
+            // The lock branch drops what is left of the split: within 5e-12 rad, plus rounding.
+            EXPECT_LE(rotation_angle(grape::from_euler(a, o), q), 1e-11) << static_cast<int>(o) << " " << i;
+            // q and −q give the same angles.
+            const grape::EulerAngles b = grape::to_euler(-q, o);
+            EXPECT_EQ(b.third, 0.0);
+            EXPECT_LE(angle_gap(a.first, b.first), 8 * eps);
+        }
+    }
+    grape::testing::expect_error([] { (void)grape::from_euler({0, std::nan(""), 0}, grape::EulerOrder::xyz); },
+                                 {"from_euler", "second", "not finite"});
+}
+
+// ---- integration ----
+
+TEST(Quat, IntegratingAConstantAngularVelocityStaysUnit) {
+    // 10⁶ steps of integrate (a step rotation, multiplied on, then renormalized): |q| stays 1
+    // within 4 ulp, as each step's renormalization leaves it within ~1 ulp whatever came before.
+    const Vec3 omega{0.3, -1.1, 0.7};
+    const double dt = 1e-3;
+    Quat q = grape::from_axis_angle({1, 2, 3}, 0.4);
+    const Quat q0 = q;
+    double worst = 0.0;
+    const int steps = 1000000;
+    for (int k = 0; k < steps; ++k) {
+        q = grape::integrate(q, omega, dt);
+        worst = std::max(worst, std::abs(grape::length(q) - 1.0));
+    }
+    EXPECT_LE(worst, 4 * eps);
+    // A constant ω is integrated exactly but for rounding: after T = 1000 the orientation is
+    // exp(ωT)·q0. Each step adds ~4 ulp of error at random: a random walk of 10⁶ steps grows
+    // to ~√10⁶·4 ulp = 1e-12; 1e-10 leaves room for a systematic part.
+    const Quat exact = grape::from_rotation_vector(omega * (dt * steps)) * q0;
+    EXPECT_LE(rotation_angle(q, exact), 1e-10);
+}
+
+// ---- squad ----
+
+TEST(Squad, PassesThroughItsKeys) {
+    std::mt19937_64 rng(grape::testing::test_seed(41));
+    for (int i = 0; i < 2000; ++i) {
+        Quat k[4];
+        for (Quat& q : k) q = random_rotation(rng);
+        for (int j = 1; j < 4; ++j)
+            if (grape::dot(k[j - 1], k[j]) < 0.0) k[j] = -k[j];
+        const Quat s1 = grape::squad_control(k[0], k[1], k[2]), s2 = grape::squad_control(k[1], k[2], k[3]);
+        EXPECT_EQ(grape::squad(k[1], k[2], s1, s2, 0.0), k[1]);
+        EXPECT_EQ(grape::squad(k[1], k[2], s1, s2, 1.0), k[2]);
+        EXPECT_NEAR(grape::length(grape::squad(k[1], k[2], s1, s2, 0.37)), 1.0, 16 * eps);
+    }
+    // Keys on one great circle at equal steps: the control points are the keys themselves
+    // (the two logs cancel) and squad is slerp.
+    const Vec3 n = grape::normalized(Vec3{1, -2, 2});
+    const Quat a = grape::from_axis_angle(n, 0.1), b = grape::from_axis_angle(n, 0.6), c = grape::from_axis_angle(n, 1.1),
+               d = grape::from_axis_angle(n, 1.6);
+    const Quat sb = grape::squad_control(a, b, c), sc = grape::squad_control(b, c, d);
+    EXPECT_LE(quat_distance(sb, b), 8 * eps);
+    EXPECT_LE(quat_distance(grape::squad(b, c, sb, sc, 0.3), grape::from_axis_angle(n, 0.75)), 16 * eps);
+}
+
+// ---- the C² spline ----
+
+// Angular velocity (world axes) from orientations only, one-sided and second order: with
+// r(s) the rotation vector of q(t)·q(t ∓ s)⁻¹ = ±sω ∓ … , (4r(δ) − r(2δ))/(2δ) cancels the
+// δ² term. Error: truncation ~δ²|ω″|/3, rounding ~6 ulp/δ.
+Vec3 fd_omega(const grape::QuatSpline& s, double t, double delta, double side) {
+    const Quat q = s.orientation(t);
+    const Vec3 r1 = grape::rotation_vector(q * grape::conjugate(s.orientation(t - side * delta)));
+    const Vec3 r2 = grape::rotation_vector(q * grape::conjugate(s.orientation(t - side * 2 * delta)));
+    return (4.0 * r1 - r2) * (side / (2.0 * delta));
+}
+// Angular acceleration from the analytic angular velocity, one-sided and second order:
+// (3ω(t) − 4ω(t ∓ δ) + ω(t ∓ 2δ))/(±2δ). Error: truncation ~δ²|ω‴|/3, rounding ~8 ulp·|ω|/δ.
+Vec3 fd_alpha(const grape::QuatSpline& s, double t, double delta, double side) {
+    return (3.0 * s.angular_velocity(t) - 4.0 * s.angular_velocity(t - side * delta) +
+            s.angular_velocity(t - side * 2 * delta)) *
+           (side / (2.0 * delta));
+}
+
+struct SplineCase {
+    std::vector<double> t;
+    std::vector<Quat> q;
+};
+// n keys at uneven steps in [0.5, 1.5], each a turn of up to max_turn from the one before.
+SplineCase random_case(std::mt19937_64& rng, int n, double max_turn) {
+    std::uniform_real_distribution<double> step(0.5, 1.5), turn(0.0, max_turn);
+    SplineCase c;
+    double t = -1.0;
+    Quat q = random_rotation(rng);
+    for (int i = 0; i < n; ++i) {
+        c.t.push_back(t);
+        c.q.push_back(q);
+        t += step(rng);
+        q = grape::from_axis_angle(random_unit(rng), turn(rng)) * q;
+    }
+    return c;
+}
+
+TEST(QuatSpline, HitsItsKeysExactly) {
+    std::mt19937_64 rng(grape::testing::test_seed(51));
+    for (int c = 0; c < 200; ++c) {
+        const SplineCase k = random_case(rng, 2 + c % 9, 2.5);
+        const grape::QuatSpline s(k.t, k.q);
+        for (std::size_t i = 0; i < k.t.size(); ++i) {
+            // Keys are turned to their neighbour's side (exact) and normalized: the random keys,
+            // products of unit quaternions, are unit within ~2 ulp, and the division rounds once.
+            EXPECT_LE(quat_distance(s.orientation(k.t[i]), k.q[i]), 4 * eps) << c << " key " << i;
+            EXPECT_EQ(s.orientation(k.t[i]), s.key(i));
+            // Arriving from the left: the end of the segment before, whose middle factor was
+            // solved to land there. A step of δ moves q by |ω|δ/2; then rounding of the three
+            // factors' product, 16 ulp.
+            if (i > 0) {
+                const double delta = 0x1p-40 * (k.t[i] - k.t[i - 1]);
+                const double w = grape::length(s.angular_velocity(k.t[i]));
+                EXPECT_LE(quat_distance(s.orientation(k.t[i] - delta), s.key(i)), w * delta / 2 + 16 * eps) << c << " key " << i;
+            }
+        }
+    }
+}
+
+TEST(QuatSpline, AngularVelocityIsContinuousAtKeys) {
+    std::mt19937_64 rng(grape::testing::test_seed(52));
+    // δ minimizes δ²|ω″|/3 + 6 ulp/δ for |ω″| of order 10: δ = (9 ulp/10)^(1/3) ≈ 6e-6; both
+    // one-sided estimates are then within ~3e-10 of ω, so they agree within 1e-9.
+    const double delta = 6e-6;
+    for (int c = 0; c < 100; ++c) {
+        const SplineCase k = random_case(rng, 3 + c % 7, 1.5);
+        const grape::QuatSpline s(k.t, k.q);
+        for (std::size_t i = 1; i + 1 < k.t.size(); ++i) {
+            const Vec3 left = fd_omega(s, k.t[i], delta, 1.0), right = fd_omega(s, k.t[i], delta, -1.0);
+            EXPECT_LE(vec_distance(left, right), 1e-9) << c << " key " << i;
+            // The analytic angular velocity agrees with both, and with the solved one.
+            EXPECT_LE(vec_distance(s.angular_velocity(k.t[i]), left), 1e-9) << c << " key " << i;
+            EXPECT_LE(vec_distance(s.angular_velocity(k.t[i]), s.key_angular_velocity(i)), 64 * eps * (1 + grape::length(left)));
+        }
+        // And between keys, against central differences of the orientation (error δ²|ω″|/6 +
+        // 4 ulp/δ).
+        std::uniform_real_distribution<double> tt(k.t.front() + 0.01, k.t.back() - 0.01);
+        for (int j = 0; j < 20; ++j) {
+            const double t = tt(rng);
+            const Vec3 central = grape::rotation_vector(s.orientation(t + delta) * grape::conjugate(s.orientation(t - delta))) /
+                                 (2 * delta);
+            EXPECT_LE(vec_distance(s.angular_velocity(t), central), 1e-9) << c << " t " << t;
+        }
+    }
+}
+
+TEST(QuatSpline, AngularAccelerationIsContinuousAtKeysUnlikeSquad) {
+    std::mt19937_64 rng(grape::testing::test_seed(53));
+    // δ = 1e-5: truncation δ²|ω‴|/3 ≈ 3e-11·|ω‴| (|ω‴| of order 100 here: 3e-9), rounding
+    // ~8 ulp·|ω|/δ ≈ 2e-10·|ω|: the two one-sided estimates agree within 1e-7.
+    const double delta = 1e-5;
+    double squad_jump = 0.0;
+    for (int c = 0; c < 100; ++c) {
+        const SplineCase k = random_case(rng, 3 + c % 7, 1.5);
+        const grape::QuatSpline s(k.t, k.q);
+        for (std::size_t i = 1; i + 1 < k.t.size(); ++i) {
+            const Vec3 left = fd_alpha(s, k.t[i], delta, 1.0), right = fd_alpha(s, k.t[i], delta, -1.0);
+            EXPECT_LE(vec_distance(left, right), 1e-7) << c << " key " << i << " |α| " << grape::length(left);
+        }
+        // Natural ends: no angular acceleration at the first and last keys.
+        EXPECT_LE(grape::length(fd_alpha(s, k.t.front(), delta, -1.0)), 1e-7) << c;
+        EXPECT_LE(grape::length(fd_alpha(s, k.t.back(), delta, 1.0)), 1e-7) << c;
+    }
+    // The same check finds squad's jumps (squad is C¹ only), so it has teeth: squad over unit
+    // steps through keys 0.8 rad apart, its angular velocity from central differences.
+    for (int c = 0; c < 20; ++c) {
+        SplineCase k = random_case(rng, 4, 1.0);
+        for (int j = 1; j < 4; ++j)
+            if (grape::dot(k.q[j - 1], k.q[j]) < 0.0) k.q[j] = -k.q[j];
+        const Quat s1 = grape::squad_control(k.q[0], k.q[1], k.q[2]), s2 = grape::squad_control(k.q[1], k.q[2], k.q[3]);
+        const Quat s0 = grape::squad_control(k.q[0], k.q[0], k.q[1]);
+        const auto omega = [&](int seg, double u) {  // per unit of u
+            const double h = 1e-6;
+            const auto at = [&](double v) {
+                return seg == 0 ? grape::squad(k.q[0], k.q[1], s0, s1, v) : grape::squad(k.q[1], k.q[2], s1, s2, v);
+            };
+            return grape::rotation_vector(at(u + h) * grape::conjugate(at(u - h))) / (2 * h);
+        };
+        // α at the join from each side, one-sided from the segment's own formula.
+        const double d = 1e-3;
+        const Vec3 left = (3.0 * omega(0, 1.0) - 4.0 * omega(0, 1.0 - d) + omega(0, 1.0 - 2 * d)) / (2 * d);
+        const Vec3 right = -(3.0 * omega(1, 0.0) - 4.0 * omega(1, d) + omega(1, 2 * d)) / (2 * d);
+        squad_jump = std::max(squad_jump, vec_distance(left, right));
+    }
+    EXPECT_GT(squad_jump, 1e-2);
+}
+
+// A natural cubic spline through (t_i, y_i), written here in the second-derivative form
+// (M_i, the usual textbook one; the library solves for slopes instead).
+struct NaturalCubic {
+    std::vector<double> t, y, m;
+    NaturalCubic(std::vector<double> tt, std::vector<double> yy) : t(std::move(tt)), y(std::move(yy)), m(t.size(), 0.0) {
+        const std::size_t n = t.size();
+        std::vector<double> a(n), b(n), c(n), r(n);
+        b[0] = 1;
+        b[n - 1] = 1;
+        for (std::size_t i = 1; i + 1 < n; ++i) {
+            const double h0 = t[i] - t[i - 1], h1 = t[i + 1] - t[i];
+            a[i] = h0 / 6;
+            b[i] = (h0 + h1) / 3;
+            c[i] = h1 / 6;
+            r[i] = (y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0;
+        }
+        for (std::size_t i = 1; i < n; ++i) {
+            const double f = a[i] / b[i - 1];
+            b[i] -= f * c[i - 1];
+            r[i] -= f * r[i - 1];
+        }
+        m[n - 1] = r[n - 1] / b[n - 1];
+        for (std::size_t i = n - 1; i-- > 0;) m[i] = (r[i] - c[i] * m[i + 1]) / b[i];
+    }
+    std::pair<double, double> operator()(double x) const {  // value and slope
+        std::size_t i = 0;
+        while (i + 2 < t.size() && x > t[i + 1]) ++i;
+        const double h = t[i + 1] - t[i], A = (t[i + 1] - x) / h, B = (x - t[i]) / h;
+        const double v = A * y[i] + B * y[i + 1] + ((A * A * A - A) * m[i] + (B * B * B - B) * m[i + 1]) * h * h / 6;
+        const double d = (y[i + 1] - y[i]) / h + (-(3 * A * A - 1) * m[i] + (3 * B * B - 1) * m[i + 1]) * h / 6;
+        return {v, d};
+    }
+};
+
+TEST(QuatSpline, AboutOneAxisIsTheNaturalCubicSplineOfTheAngle) {
+    std::mt19937_64 rng(grape::testing::test_seed(54));
+    std::uniform_real_distribution<double> step(0.3, 2.0), turn(-2.5, 2.5);
+    for (int c = 0; c < 100; ++c) {
+        const Vec3 n = random_unit(rng);
+        std::vector<double> t{0.0}, angle{turn(rng)};
+        std::vector<Quat> keys;
+        for (int i = 1; i < 2 + c % 8; ++i) {
+            t.push_back(t.back() + step(rng));
+            angle.push_back(angle.back() + turn(rng));  // steps under π: the short way
+        }
+        for (double a : angle) keys.push_back(grape::from_axis_angle(n, a));
+        const grape::QuatSpline s(t, keys);
+        const NaturalCubic ref(t, angle);
+        const Quat sign = grape::dot(s.key(0), keys[0]) < 0 ? Quat{-1, 0, 0, 0} : Quat{};
+        for (int j = 0; j <= 200; ++j) {
+            const double x = std::min(t.back(), t.front() + (t.back() - t.front()) * j / 200.0);  // not past the end
+            const auto [a, da] = ref(x);
+            // Both sides are the same cubic up to rounding in the angle (~1e-15·|angle| ≤ 20)
+            // and the half-angle sines: 1e-13.
+            EXPECT_LE(quat_distance(s.orientation(x), sign * grape::from_axis_angle(n, a)), 1e-13) << c << " x " << x;
+            EXPECT_LE(vec_distance(s.angular_velocity(x), n * da), 1e-12 * (1 + std::abs(da))) << c << " x " << x;
+        }
+        EXPECT_LE(s.iterations(), 3);  // linear: the first solve is the answer
+    }
+}
+
+TEST(QuatSpline, QAndMinusQAreTheSameKey) {
+    std::mt19937_64 rng(grape::testing::test_seed(55));
+    std::bernoulli_distribution flip(0.5);
+    for (int c = 0; c < 100; ++c) {
+        SplineCase k = random_case(rng, 2 + c % 8, 2.0);
+        const grape::QuatSpline s(k.t, k.q);
+        for (std::size_t i = 1; i < k.q.size(); ++i)
+            if (flip(rng)) k.q[i] = -k.q[i];
+        const bool first = flip(rng);
+        if (first) k.q[0] = -k.q[0];
+        const grape::QuatSpline f(k.t, k.q);
+        // Negation is exact, and the alignment undoes it: the same numbers, or all negated.
+        for (int j = 0; j <= 100; ++j) {
+            const double x = k.t.front() - 0.1 + (k.t.back() - k.t.front() + 0.2) * j / 100.0;
+            EXPECT_EQ(f.orientation(x), first ? -s.orientation(x) : s.orientation(x)) << c << " x " << x;
+            EXPECT_EQ(f.angular_velocity(x), s.angular_velocity(x)) << c << " x " << x;
+        }
+    }
+}
+
+TEST(QuatSpline, ClampsOutsideItsKeysAndValidates) {
+    const Quat a = grape::from_axis_angle({0, 0, 1}, 0.5), b = grape::from_axis_angle({0, 1, 0}, 1.0),
+               c = grape::from_axis_angle({1, 0, 0}, -0.7);
+    const grape::QuatSpline s({1.0, 2.0, 4.0}, {a, b, c});
+    EXPECT_EQ(s.orientation(0.0), s.key(0));
+    EXPECT_EQ(s.orientation(-1e300), s.key(0));
+    EXPECT_EQ(s.orientation(std::nan("")), s.key(0));
+    EXPECT_EQ(s.orientation(5.0), s.key(2));
+    EXPECT_EQ(s.angular_velocity(0.5), Vec3{});
+    EXPECT_EQ(s.angular_velocity(4.5), Vec3{});
+    EXPECT_GT(grape::length(s.angular_velocity(1.0)), 0.1);
+    EXPECT_EQ(s.size(), 3u);
+    EXPECT_EQ(s.parameter(2), 4.0);
+    // Two keys: natural ends give a constant angular velocity, which is slerp.
+    const grape::QuatSpline two({0.0, 2.0}, {a, b});
+    for (double x : {0.3, 1.0, 1.7})
+        EXPECT_LE(quat_distance(two.orientation(x), grape::slerp(a, b, x / 2.0)), 16 * eps) << x;
+    // One key: constant.
+    const grape::QuatSpline one({3.0}, {b});
+    EXPECT_EQ(one.orientation(10.0), b);
+    EXPECT_EQ(one.angular_velocity(3.0), Vec3{});
+
+    using grape::testing::expect_error;
+    expect_error([&] { grape::QuatSpline({}, {}); }, {"QuatSpline", "keys", "empty"});
+    expect_error([&] { grape::QuatSpline({0.0}, {a, b}); }, {"QuatSpline", "params", "1", "2 keys"});
+    expect_error([&] { grape::QuatSpline({0.0, 0.0}, {a, b}); }, {"QuatSpline", "params[1]", "not greater"});
+    expect_error([&] { grape::QuatSpline({0.0, std::nan("")}, {a, b}); }, {"QuatSpline", "params[1]", "not finite"});
+    expect_error([&] { grape::QuatSpline({-1e308, 1e308}, {a, b}); }, {"QuatSpline", "params[1]", "not finite"});
+    expect_error([&] { grape::QuatSpline({0.0, 1.0}, {a, Quat{0, 0, 0, 0}}); }, {"QuatSpline", "keys[1]", "zero"});
+    expect_error([&] { grape::QuatSpline({0.0, 1.0}, {Quat{std::nan(""), 0, 0, 0}, a}); }, {"QuatSpline", "keys[0]", "not finite"});
+}
+
+TEST(QuatSpline, TheSolveConvergesInAFewIterations) {
+    std::mt19937_64 rng(grape::testing::test_seed(56));
+    int worst = 0;
+    for (int c = 0; c < 200; ++c) {
+        const SplineCase k = random_case(rng, 2 + c % 30, 2.5);
+        const grape::QuatSpline s(k.t, k.q);
+        worst = std::max(worst, s.iterations());
+    }
+    // Turns of up to 2.5 rad between keys at steps in [0.5, 1.5]: measured 12; the bound is
+    // max_iterations.
+    EXPECT_LE(worst, 30);
 }
 
 }  // namespace
