@@ -8,6 +8,7 @@
 #pragma once
 
 #include <grape/export_math.hpp>
+#include <grape/math.hpp>
 #include <grape/vec3.hpp>
 
 #include <cmath>

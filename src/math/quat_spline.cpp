@@ -69,7 +69,7 @@ struct SplineBlock {
 };
 // The inverse by cofactors (the blocks are well conditioned: near the linear solution each is
 // −2(1/h + 1/h′)·I plus terms of the size of the turns).
-SplineBlock inverse(const SplineBlock& a) noexcept {
+SplineBlock spline_inverse(const SplineBlock& a) noexcept {
     const auto& m = a.m;
     SplineBlock r;
     r.m[0][0] = m[1][1] * m[2][2] - m[1][2] * m[2][1];
@@ -198,12 +198,12 @@ QuatSpline::QuatSpline(std::vector<double> params, std::vector<Quat> keys)
         // Solve J·Δ = −F (block Thomas: J is diagonally dominant near the linear solution).
         for (std::size_t i = 0; i < n; ++i) f[i] = -f[i];
         for (std::size_t i = 1; i < n; ++i) {
-            const SplineBlock g = lower[i] * inverse(diag[i - 1]);
+            const SplineBlock g = lower[i] * spline_inverse(diag[i - 1]);
             diag[i] = diag[i] - g * upper[i - 1];
             f[i] -= g * f[i - 1];
         }
-        f[n - 1] = inverse(diag[n - 1]) * f[n - 1];
-        for (std::size_t i = n - 1; i-- > 0;) f[i] = inverse(diag[i]) * (f[i] - upper[i] * f[i + 1]);
+        f[n - 1] = spline_inverse(diag[n - 1]) * f[n - 1];
+        for (std::size_t i = n - 1; i-- > 0;) f[i] = spline_inverse(diag[i]) * (f[i] - upper[i] * f[i + 1]);
         double step = 0.0, size = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             velocity_[i] += f[i];
