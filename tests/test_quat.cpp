@@ -722,6 +722,16 @@ TEST(QuatSpline, TheSolveConvergesInAFewIterations) {
     // about seven digits once near (forward-difference Jacobian), so after the linear start
     // 4 to 6 steps; measured 6 over 1000 such cases, 8 with turns up to 3.1 rad.
     EXPECT_LE(worst, 8);
+    // Steps of 1.18 and 1.02 before one of 41.76 with turns of 2 to 3 rad (found by a random
+    // search over such spacings): the solve does not settle, and the refusal says why.
+    grape::testing::expect_error(
+        [] {
+            grape::QuatSpline({0.0, 1.18, 2.2, 43.96},
+                              {Quat{}, Quat{0.45359612142557731, 0.81250003598138643, 0.30468751349301987, 0.20312500899534661},
+                               Quat{0.42862900587189812, 0.66934109322799173, 0.31375607680128825, 0.51943892856801677},
+                               Quat{0.035867868083649723, 0.91254392149047314, -0.40740007581674587, -0.0015051958120467779}});
+        },
+        {"QuatSpline", "keys", "did not converge"});
 }
 
 }  // namespace

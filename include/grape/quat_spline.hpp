@@ -30,8 +30,11 @@ namespace grape {
 /// every inner key too (C²) and vanishes at both ends (natural ends): a nonlinear system whose
 /// linear part is the tridiagonal system of a natural cubic spline's slopes. It is solved by
 /// that linear solve, then Newton's method on the block-tridiagonal Jacobian (3×3 blocks by
-/// forward differences, nine residuals a step), to rounding: typically 3 to 6 steps, O(n)
-/// each. Keys about one fixed axis give exactly a natural cubic spline of the angle.
+/// forward differences, nine residuals a step; steps halved while they do not lower the
+/// residual), to rounding: 4 to 6 steps, O(n) each, for keys up to 3 rad apart at steps within
+/// a factor 3 of each other. Very uneven steps next to large turns (a 3 rad turn in a step a
+/// hundredth of its neighbour's) ask for a curve that loops, and the solve may refuse them.
+/// Keys about one fixed axis give exactly a natural cubic spline of the angle.
 ///
 /// Keys are normalized and each is replaced by its negative where that is nearer the previous
 /// one, so q and −q are the same key and the curve turns the short way (under half a turn)
@@ -44,7 +47,8 @@ public:
     /// Throws grape::Error naming the argument: fewer than one key; `params` and `keys` of
     /// different sizes; a parameter not finite or not greater than the one before; a key not
     /// finite or zero; a solve that does not converge within max_iterations (keys so far apart,
-    /// and so unevenly spaced, that the curve would loop).
+    /// and so unevenly spaced, that the curve would loop: add keys between them, or space them
+    /// more evenly).
     QuatSpline(std::vector<double> params, std::vector<Quat> keys);
 
     /// The most iterations of the C² solve, bounding the work of a construction (O(n) each).

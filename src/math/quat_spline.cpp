@@ -169,8 +169,18 @@ QuatSpline::QuatSpline(std::vector<double> params, std::vector<Quat> keys)
     for (std::size_t i = 0; i < n; ++i) velocity_[i] += f[i];  // the linear solution
     double previous = std::numeric_limits<double>::infinity();
     bool converged = false;
+    std::vector<Vec3> residual_at_start(n);
+    const auto norm_of = [&](const std::vector<Vec3>& r) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double w = std::max(i < m ? h[i] : 0.0, i > 0 ? h[i - 1] : 0.0);
+            sum += length_squared(r[i]) * (w * w);
+        }
+        return sum;
+    };
     for (iterations_ = 1; iterations_ <= max_iterations; ++iterations_) {
         residual(velocity_, f);
+        residual_at_start = f;
         for (int color = 0; color < 3; ++color) {
             for (int k = 0; k < 3; ++k) {
                 std::fill(eta.begin(), eta.end(), 0.0);
@@ -204,15 +214,39 @@ QuatSpline::QuatSpline(std::vector<double> params, std::vector<Quat> keys)
         }
         f[n - 1] = spline_inverse(diag[n - 1]) * f[n - 1];
         for (std::size_t i = n - 1; i-- > 0;) f[i] = spline_inverse(diag[i]) * (f[i] - upper[i] * f[i + 1]);
+        // Damped: the step is halved (up to 20 times) while it does not lower the residual's
+        // norm, rows weighted by their longer step (a Newton step is a descent direction for
+        // any such fixed weighting). Far from the solution, with uneven spacing and large turns,
+        // the full step can overshoot into a worse region.
+        // Steps that move no control by more than 1e-3 rad are left whole: there the residual
+        // is quadratic in the step to within 1e-6 of itself, and near the solution rounding noise
+        // would otherwise read as growth.
+        double full = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+            full = std::max(full, length(f[i]) * std::max(i < m ? h[i] : 0.0, i > 0 ? h[i - 1] : 0.0) / 6.0);
+        const double before = norm_of(residual_at_start);
+        double lambda = 1.0;
+        for (int halvings = 0;; ++halvings) {
+            for (std::size_t i = 0; i < n; ++i) v2[i] = velocity_[i] + f[i] * lambda;
+            if (full <= 1e-3) break;
+            residual(v2, f2);
+            const double after = norm_of(f2);
+            if (after <= before || halvings == 20) break;
+            lambda *= 0.5;
+        }
         double step = 0.0, size = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
-            velocity_[i] += f[i];
+            velocity_[i] = v2[i];
             // Steps measured as the half angles they move a control by (v·h/6).
             const double hi = std::max(i < m ? h[i] : 0.0, i > 0 ? h[i - 1] : 0.0);
-            step = std::max(step, length(f[i]) * hi / 6.0);
+            step = std::max(step, length(f[i]) * lambda * hi / 6.0);
             size = std::max(size, length(velocity_[i]) * hi / 6.0);
         }
         if (!std::isfinite(step)) break;
+        if (lambda < 1.0) {  // not yet in Newton's region: the tests below are for full steps
+            previous = std::numeric_limits<double>::infinity();
+            continue;
+        }
         // Converged to rounding: a step below 2⁻⁵⁰ of the controls, or one that no longer
         // shrinks tenfold once below 1e-12 of them (rounding noise in the residual).
         if (step <= 0x1p-50 * std::max(size, 1e-300) || (step <= 1e-12 * size && step > 0.1 * previous)) {
