@@ -90,7 +90,7 @@ public:
     std::size_t cone_count() const noexcept;
     /// Arc length over [0, u] (u clamped to [0, 1]) from the table of panels built once (see
     /// below): within ~1e-15 of the length per unit of u of Path3::length_at, in ~0.1 µs (a
-    /// binary search and one 5-point Gauss rule) instead of ~2.4 µs.
+    /// binary search and one 5-point Gauss rule: ~0.17 µs on an 8-point spline) instead of ~1.5–2.4 µs.
     double length_at(double u) const noexcept;
 
 private:

@@ -71,7 +71,7 @@ private:
 /// Frames along a path rolled about the tangent by a RollTrack in arc length: the base frame
 /// (any Frames3 mode; rotation-minimizing by default) turned by roll_at(s(u)), normal toward
 /// binormal for a positive roll. The arc length s(u) is read from the Frames3's panel table
-/// (Frames3::length_at, ~0.1 µs), not Path3::length_at (~2.4 µs).
+/// (Frames3::length_at, ~0.2 µs), not Path3::length_at (~1.5–2.4 µs).
 class GRAPE_ANIM_API RolledFrames3 {
 public:
     /// The frames `frames` rolled by `roll`.
@@ -81,7 +81,7 @@ public:
 
     /// The rolled frame at u (clamped to [0, 1]).
     Frame3 frame(double u) const noexcept;
-    /// The rolled frame at arc length s (u from Path3::u_at_length, ~2.4 µs).
+    /// The rolled frame at arc length s (u from Path3::u_at_length: several µs; prefer frame(u)).
     Frame3 frame_at_length(double s) const noexcept;
     /// The roll added at u, radians.
     double roll(double u) const noexcept;
