@@ -510,6 +510,27 @@ TEST(Engine, NumberAnimationsReportTheirValuesToACallback) {
     EXPECT_EQ(a.value(), Vec2{});   // not a 2-D animation
 }
 
+TEST(Engine, NumberAnimationsFollowASplinePathND) {
+    // A uniform Catmull–Rom PathND through three keyframes: at u = ½ the middle keyframe
+    // exactly, at u = ¼ the Hermite midpoint (p0 + p1)/2 + (m0 − m1)/8 with the tangents
+    // m0 = p1 − p0 (mirrored end) and m1 = (p2 − p0)/2.
+    Engine engine;
+    std::vector<double> last;
+    const std::vector<double> k{0, 10, 1, 20, 3, 40};
+    const grape::PathND keys = grape::PathND::catmull_rom(2, k);
+    Animation a = engine.create_animation(keys, 2.0, {}, [&](std::span<const double> v) { last.assign(v.begin(), v.end()); });
+    engine.tick(0.5);  // u = ¼
+    ASSERT_EQ(last.size(), 2u);
+    for (std::size_t d = 0; d < 2; ++d) {
+        const double m0 = k[2 + d] - k[d], m1 = 0.5 * (k[4 + d] - k[d]);
+        EXPECT_NEAR(last[d], 0.5 * (k[d] + k[2 + d]) + (m0 - m1) / 8.0, 1e-13) << d;
+    }
+    engine.tick(0.5);  // u = ½
+    EXPECT_EQ(last[0], 1.0);
+    EXPECT_EQ(last[1], 20.0);
+    (void)a;
+}
+
 TEST(Engine, CallbackAnimationsAndHeading) {
     Engine engine;
     const grape::CirclePath circle({0, 0}, 1.0, 0.0, grape::pi);

@@ -89,6 +89,10 @@ public:
     double twist() const noexcept;
     /// Mode reference_up: how many stretches inside the cone were found.
     std::size_t cone_count() const noexcept;
+    /// Arc length over [0, u] (u clamped to [0, 1]) from the table of panels built once (see
+    /// below): within ~1e-15 of the length per unit of u of Path3::length_at, in ~0.1 µs (a
+    /// binary search and one 5-point Gauss rule: ~0.17 µs on an 8-point spline) instead of ~1.5–2.4 µs.
+    double length_at(double u) const noexcept;
 
 private:
     struct Blend {
@@ -104,8 +108,8 @@ private:
     double twist_ = 0.0;
     double length_ = 0.0;
     std::vector<Blend> blends_;
-    // Modes ends, closed and reference_up read the arc length at u: panels of u on which a
-    // 5-point Gauss rule is resolved to rounding, with the length from u = 0 to each start.
+    // The arc length at u (length_at; modes ends, closed and reference_up): panels of u on
+    // which a 5-point Gauss rule is resolved to rounding, with the length from u = 0 to each start.
     std::vector<double> arc_u_, arc_s_;
 
     double arc_length_at(double u) const noexcept;

@@ -1,4 +1,4 @@
-// grape — the Path handle (evaluation at and beyond the ends, length, flattening), Path1D, PathND.
+// grape — the Path handle (evaluation at and beyond the ends, length, flattening), Path1D.
 #include "path_checks.hpp"
 
 #include <cstdio>
@@ -109,71 +109,10 @@ Path Path::reparametrized() const {
 
 PathKind Path::kind() const noexcept { return node_->kind(); }
 
-// --- Path1D, PathND -----------------------------------------------------------------------
+// --- Path1D ------------------------------------------------------------------------------
 
 Path1D::Path1D(double from, double to) : from_(from), to_(to) {
     require_finite("Path1D", "from", from, "to", to);
-}
-
-namespace {
-
-std::vector<double> checked_keys(std::size_t dimension, std::span<const double> keys) {
-    const char* who = "PathND";
-    if (dimension == 0) fail(who, "dimension must be at least 1 (got 0)");
-    if (keys.size() % dimension != 0) {
-        fail(who, "keyframes must hold a multiple of dimension " + std::to_string(dimension) + " values (got " +
-                      std::to_string(keys.size()) + ")");
-    }
-    if (keys.size() / dimension < 2) {
-        fail(who, "keyframes needs at least 2 keyframes (got " + std::to_string(keys.size() / dimension) + ")");
-    }
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-        if (!std::isfinite(keys[i])) {
-            fail(who, "keyframes[" + std::to_string(i) + "] must be finite (got " + text(keys[i]) + ")");
-        }
-    }
-    return {keys.begin(), keys.end()};
-}
-
-std::vector<double> joined(std::span<const double> from, std::span<const double> to) {
-    if (from.size() != to.size()) {
-        fail("PathND", "from and to must have the same size (got " + std::to_string(from.size()) + " and " +
-                           std::to_string(to.size()) + ")");
-    }
-    std::vector<double> keys(from.begin(), from.end());
-    keys.insert(keys.end(), to.begin(), to.end());
-    return keys;
-}
-
-}  // namespace
-
-PathND::PathND(std::span<const double> from, std::span<const double> to)
-    : PathND(from.size(), std::span<const double>(joined(from, to))) {}
-
-PathND::PathND(std::size_t dimension, std::span<const double> keyframes)
-    : dimension_(dimension), keys_(checked_keys(dimension, keyframes)) {}
-
-void PathND::point(double u, std::span<double> out) const noexcept {
-    const std::size_t segments = keyframe_count() - 1;
-    double t;
-    // Outside [0, 1] the end segments extend linearly (t leaves [0, 1]).
-    std::size_t i = detail::segment_of(u * static_cast<double>(segments), segments, t);
-    if (u < 0.0) t = u * static_cast<double>(segments);
-    if (u > 1.0) t = 1.0 + (u - 1.0) * static_cast<double>(segments);
-    const double* a = keys_.data() + i * dimension_;
-    const double* b = a + dimension_;
-    const std::size_t n = std::min(out.size(), dimension_);
-    for (std::size_t k = 0; k < n; ++k) out[k] = a[k] + (b[k] - a[k]) * t;
-}
-
-void PathND::d1(double u, std::span<double> out) const noexcept {
-    const std::size_t segments = keyframe_count() - 1;
-    double t;
-    const std::size_t i = detail::segment_of(u * static_cast<double>(segments), segments, t);
-    const double* a = keys_.data() + i * dimension_;
-    const double* b = a + dimension_;
-    const std::size_t n = std::min(out.size(), dimension_);
-    for (std::size_t k = 0; k < n; ++k) out[k] = (b[k] - a[k]) * static_cast<double>(segments);
 }
 
 }  // namespace grape

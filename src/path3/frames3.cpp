@@ -106,7 +106,7 @@ Frames3::Frames3(Path3 path, const FramesDef& def)
     : path_(std::move(path)), mode_(def.mode), up_(normalized(def.up)), rmf_(make_rmf(path_, def)),
       length_(path_.length()) {
     const std::string where = "Frames3: ";
-    if (mode_ == FrameMode::ends || mode_ == FrameMode::closed || mode_ == FrameMode::reference_up) {
+    {
         // Each piece from its exact start length (length_at at a break), so the panels' sums
         // carry no rounding from one piece into the next; within 1e-15 of the length per u.
         const auto breaks = path_.breaks();
@@ -263,6 +263,12 @@ double Frames3::arc_length_at(double u) const noexcept {
     const auto it = std::upper_bound(arc_u_.begin(), arc_u_.end(), u);
     const std::size_t j = it == arc_u_.begin() ? 0 : static_cast<std::size_t>(it - arc_u_.begin()) - 1;
     return arc_s_[j] + gauss_length_f3(path_, arc_u_[j], u);
+}
+
+double Frames3::length_at(double u) const noexcept {
+    if (!(u > 0.0)) return 0.0;  // NaN too
+    if (u >= 1.0) return length_;
+    return arc_length_at(u);
 }
 
 const Path3& Frames3::path() const noexcept { return path_; }
