@@ -529,8 +529,9 @@ Animation Engine::animate(Target&& target, M member, Tween<detail::member_value_
     static_assert(std::is_invocable_r_v<V, const Interp&, const V&, const V&, double>,
                   "animate: no interpolation for this type: give it a lerp(a, b, t) found beside it, specialize "
                   "grape::Interpolate, or pass an interpolator taking (V, V, double)");
-    if constexpr (!detail::addable<V>) {
-        if (tween.mode == ValueMode::relative) throw Error("animate: grape::by needs a type with +");
+    if constexpr (!detail::relative_value<V>) {
+        if (tween.mode == ValueMode::relative)
+            throw Error("animate: grape::by needs a type with + (or Interpolate<V>::compose)");
     }
     T* now = Form::now(target);
     if (!now) throw Error("animate: the linked target is gone");

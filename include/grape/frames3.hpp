@@ -4,6 +4,7 @@
 
 #include <grape/export_path.hpp>
 #include <grape/path3.hpp>
+#include <grape/quat.hpp>
 #include <grape/vec3.hpp>
 
 #include <cstddef>
@@ -111,5 +112,11 @@ private:
     static RotationMinimizingFrames make_rmf(const Path3& path, const FramesDef& def);
     double reference_roll(double u) const noexcept;
 };
+
+/// The orientation of a frame: the rotation taking (1, 0, 0) to its tangent, (0, 1, 0) to its
+/// normal and (0, 0, 1) to its binormal (from_basis_unchecked: frames of a Frames3 or a
+/// RotationMinimizingFrames are orthonormal within a few ulp), w ≥ 0. An object modelled
+/// facing +x with +y up then moves along the path facing forward with its up on the normal.
+inline Quat from_frame(const Frame3& f) noexcept { return from_basis_unchecked(f.tangent, f.normal, f.binormal); }
 
 }  // namespace grape

@@ -42,7 +42,9 @@ V call_lerp(const V& a, const V& b, double t) {
 /// The customization point: `lerp(a, b, t)` for V (specialize for types you cannot add a
 /// lerp beside). A specialization may also give `static P prepare(const V& a, const V& b)`,
 /// P callable as `V(double t)` with P(t) == lerp(a, b, t): animations then prepare their ends
-/// once (colours convert them to linear light once, not at every update).
+/// once (colours convert them to linear light once, not at every update); and `static V
+/// compose(const V& from, const V& amount)`, the end of grape::by(amount) in place of
+/// from + amount (grape/quat.hpp: rotations compose).
 template <class V>
 struct Interpolate {
     /// The unqualified `lerp(a, b, t)`: one of grape's overloads or V's own, found beside V.
@@ -141,6 +143,14 @@ template <class V>
 concept addable = requires(const V& a, const V& b) {
     { a + b } -> std::convertible_to<V>;
 };
+/// Interpolate<V>::compose(from, amount) gives the end of by(amount) (rotations compose, they do not add).
+template <class V>
+concept composable = requires(const V& a, const V& b) {
+    { Interpolate<V>::compose(a, b) } -> std::convertible_to<V>;
+};
+/// A type grape::by works for: it composes, or it has +.
+template <class V>
+concept relative_value = composable<V> || addable<V>;
 
 /// Member `member` of a T (derived from C), from → to through `interp`.
 /// An interpolator that can prepare its ends once: interp.prepare(a, b)(t).
@@ -181,7 +191,9 @@ struct MemberTrack final : ValueTrack {
     void start(void* o) override {
         if (mode == ValueMode::from_to) return;
         from = object(o).*member;
-        if constexpr (addable<V>) {
+        if constexpr (composable<V>) {
+            if (mode == ValueMode::relative) to = static_cast<V>(Interpolate<V>::compose(from, amount));
+        } else if constexpr (addable<V>) {
             if (mode == ValueMode::relative) to = static_cast<V>(from + amount);
         }
         prepare();
@@ -203,7 +215,8 @@ template <class V>
 Tween<V> to(V to) {
     return Tween<V>(V{}, std::move(to), ValueMode::from_current);
 }
-/// By `amount` from the member's value when the first play begins (V needs `+`).
+/// By `amount` from the member's value when the first play begins: to from + amount, or to
+/// Interpolate<V>::compose(from, amount) where V has it (a Quat composes: from · amount).
 template <class V>
 Tween<V> by(V amount) {
     return Tween<V>(V{}, std::move(amount), ValueMode::relative);
