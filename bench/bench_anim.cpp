@@ -400,11 +400,11 @@ void BM_grape_property_double(benchmark::State& state) {
 }
 
 // 3-D: N animations along K shared 3-D cubic Béziers (the same timing as grape_cubic: quad-in-out,
-// repeating, yoyo, 1–3 s plays), writing x, y, z (plain) and also a Basis3 from each path's
+// repeating, yoyo, 1–3 s plays), writing x, y, z (plain) and also a Basis from each path's
 // rotation-minimizing frame, its table built once per shape and shared (oriented).
 struct Body3 {
     double x = 0, y = 0, z = 0;
-    grape::Basis3 orientation;
+    grape::Basis orientation;
 };
 
 void grape3_engine(benchmark::State& state, bool oriented, const char* name) {

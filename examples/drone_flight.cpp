@@ -8,7 +8,7 @@
 
 struct Drone {
     double x = 0, y = 0, z = 0;
-    grape::Basis3 orientation;  // where the model's axes point
+    grape::Basis orientation;  // where the model's axes point
 };
 
 int main() {

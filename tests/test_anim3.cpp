@@ -29,11 +29,15 @@ using grape::Vec3;
 
 struct Body {
     double x = 0, y = 0, z = 0;
-    grape::Basis3 orientation;
+    grape::Basis orientation;
 };
 struct FloatBody {
     float x = 0, y = 0, z = 0;
     grape::Frame3 orientation;
+};
+struct QuatBody {
+    double x = 0, y = 0, z = 0;
+    grape::Quat orientation;
 };
 struct Plain {
     double x = 0, y = 0, z = 0;
@@ -162,6 +166,38 @@ TEST(Anim3, ForwardAxisFollowsTheTangent) {
         const Vec3 level = grape::normalized(Vec3{t.x, t.y, 0.0});
         EXPECT_EQ(body.orientation.y, (Vec3{0, 0, 1})) << k;
         EXPECT_TRUE(grape::approx_equal(body.orientation.z, level, 1e-12)) << k;
+    }
+}
+
+// A Quat member: the quaternion of the basis a Basis member gets (from_basis_unchecked of the
+// same columns, bit for bit); it turns the model's forward axis onto the tangent (a rotation
+// of a unit vector by a unit quaternion: a few ulp, 1e-12 is far above).
+TEST(Anim3, QuaternionOrientation) {
+    const Path3 path = track();
+    for (const Align3 align : {Align3::frame, Align3::world}) {
+        Engine engine;
+        QuatBody q;
+        Body b;
+        const Motion3Def motion{.align = align, .frames = {.mode = grape::FrameMode::frenet}, .forward = Axis3::neg_z};
+        const AnimationDef def{.curve = grape::Curve::cubic_in_out(), .repeat = 3, .yoyo = true};
+        engine.create_3d_animation(q, path, 1.0, def, motion);
+        engine.create_3d_animation(b, path, 1.0, def, motion);
+        for (int k = 1; k < 64 * 4; ++k) {
+            engine.tick(1.0 / 64);
+            const grape::Quat want = grape::from_basis_unchecked(b.orientation.x, b.orientation.y, b.orientation.z);
+            EXPECT_EQ(q.orientation.w, want.w) << k;
+            EXPECT_EQ(q.orientation.x, want.x) << k;
+            EXPECT_EQ(q.orientation.y, want.y) << k;
+            EXPECT_EQ(q.orientation.z, want.z) << k;
+            EXPECT_TRUE(grape::approx_equal(grape::rotate(q.orientation, {0, 0, -1}), -b.orientation.z, 1e-12)) << k;
+            if (align == Align3::frame) {
+                const double tau = (k % 64) / 64.0;
+                const bool backward = (k / 64) % 2 == 1;
+                const double u = grape::Curve::cubic_in_out()(backward ? 1.0 - tau : tau);
+                const Vec3 travel = path.tangent(u) * (backward ? -1.0 : 1.0);
+                EXPECT_TRUE(grape::approx_equal(grape::rotate(q.orientation, {0, 0, -1}), travel, 1e-12)) << k;
+            }
+        }
     }
 }
 

@@ -314,7 +314,7 @@ public:
     /// `duration` seconds (> 0 and finite) per play, timed by `def` exactly as a 2-D animation
     /// (curve, delay, repeat, yoyo, reversed, time scale, range; def.heading and def.offset are
     /// 2-D only and refused). With `motion.align` other than none, the target's `orientation`
-    /// member (grape::Frame3 or grape::Basis3) receives the orientation at each update (see
+    /// member (grape::Frame3, grape::Basis or grape::Quat) receives the orientation at each update (see
     /// Motion3Def). At curve progress u the position is path.point(at) plus the offsets along
     /// frame(at), at = range_start + u·(range_end − range_start), the frame's table built once
     /// at creation; updates then allocate nothing. A T deriving from grape::Animated is linked.
@@ -475,7 +475,7 @@ detail::Layout3 Engine::layout3_of(const T& object) noexcept {
         using O = std::remove_cvref_t<decltype(object.orientation)>;
         static_assert(detail::orient3_member_of<O>() != detail::Orient3Member::none,
                       "create_3d_animation: target.orientation receives the orientation and must be a "
-                      "grape::Frame3 or a grape::Basis3");
+                      "grape::Frame3, a grape::Basis or a grape::Quat");
         l.orientation = detail::offset_in(object, object.orientation);
         l.member = detail::orient3_member_of<O>();
     }

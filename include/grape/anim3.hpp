@@ -2,13 +2,14 @@
 // path's moving frame, or upright in the world), which of the model's axes face forward and up,
 // and offsets from the path along the frame. Engine::create_3d_animation (anim.hpp) takes it.
 //
-//   struct Drone { double x, y, z; grape::Basis3 orientation; } drone;
+//   struct Drone { double x, y, z; grape::Quat orientation; } drone;  // or a Basis, a Frame3
 //   engine.create_3d_animation(drone, track, 4.0, {.repeat = -1},
 //                              {.align = grape::Align3::frame, .forward = grape::Axis3::neg_z});
 #pragma once
 
 #include <grape/frames3.hpp>
 #include <grape/path3.hpp>
+#include <grape/quat.hpp>
 #include <grape/vec3.hpp>
 
 #include <cstddef>
@@ -55,14 +56,6 @@ constexpr Vec3 axis_vector(Axis3 a) noexcept {
     return {};
 }
 
-/// A rotation as the world images of the model's axes (the columns of its matrix): a point q
-/// of the model lands at position + x·q.x + y·q.y + z·q.z. Right-handed and orthonormal.
-struct Basis3 {
-    Vec3 x{1, 0, 0};  ///< where the model's +x points
-    Vec3 y{0, 1, 0};  ///< where the model's +y points
-    Vec3 z{0, 0, 1};  ///< where the model's +z points
-};
-
 /// Constant speed for a 3-D animation, in world units per second of animation time: the path
 /// is reparametrized by arc length once, at creation, and each play lasts length / speed.
 struct Speed {
@@ -72,7 +65,9 @@ struct Speed {
 /// How a 3-D animation places and turns its target beyond its timing (AnimationDef); fill with
 /// designated initializers. Every field is checked at creation (grape::Error names it).
 struct Motion3Def {
-    Align3 align = Align3::none;  ///< what the `orientation` member receives (needs one unless none)
+    /// What the target's `orientation` member (a grape::Frame3, grape::Basis or grape::Quat)
+    /// receives; any alignment but none needs one.
+    Align3 align = Align3::none;
     /// The frame for Align3::frame and for the offsets, built once at creation (on the path
     /// played: the reparametrized one in speed mode).
     FramesDef frames{};
@@ -82,7 +77,8 @@ struct Motion3Def {
     std::shared_ptr<const Frames3> shared_frames{};
     Vec3 world_up{0.0, 0.0, 1.0};  ///< Align3::world: the world's up; finite, not zero
     /// The model's axis that faces along the path (the frame's tangent): +z for models that
-    /// face +z, neg_z for the OpenGL camera convention. Basis3 and quaternion members only.
+    /// face +z, neg_z for the OpenGL camera convention. Basis and Quat members only (a Frame3
+    /// member gets the frame itself).
     Axis3 forward = Axis3::pos_z;
     /// The model's axis that takes the frame's normal (Align3::world: world_up); it must be
     /// perpendicular to `forward`. The third axis follows (right-handed).
@@ -110,7 +106,8 @@ struct Layout3 {
 template <class M>
 constexpr Orient3Member orient3_member_of() noexcept {
     if constexpr (std::is_same_v<M, Frame3>) return Orient3Member::frame;
-    else if constexpr (std::is_same_v<M, Basis3>) return Orient3Member::basis;
+    else if constexpr (std::is_same_v<M, Basis>) return Orient3Member::basis;
+    else if constexpr (std::is_same_v<M, Quat>) return Orient3Member::quat;
     else return Orient3Member::none;
 }
 }  // namespace detail

@@ -65,7 +65,7 @@ void validate_motion3(const std::string& w, const AnimationDef& def, const Motio
     if (!std::isfinite(m.binormal_offset))
         throw Error(w + ": binormal_offset must be finite (got " + number_text(m.binormal_offset) + ")");
     if (bound && m.align != Align3::none && layout.member == Orient3Member::none)
-        throw Error(w + ": align needs an `orientation` member in the target (a grape::Frame3 or a grape::Basis3)");
+        throw Error(w + ": align needs an `orientation` member in the target (a grape::Frame3, grape::Basis or grape::Quat)");
 }
 
 }  // namespace
@@ -190,9 +190,15 @@ void EngineImpl::write_3d(const Hot& h, Extra& e, double u) const noexcept {
             *reinterpret_cast<Frame3*>(o) = Frame3{p, tangent, normal, binormal};
             break;
         case Orient3Member::basis:
-            *reinterpret_cast<Basis3*>(o) = Basis3{picked3(t.pick[0], tangent, normal, binormal),
+            *reinterpret_cast<Basis*>(o) = Basis{picked3(t.pick[0], tangent, normal, binormal),
                                                   picked3(t.pick[1], tangent, normal, binormal),
                                                   picked3(t.pick[2], tangent, normal, binormal)};
+            break;
+        case Orient3Member::quat:
+            // the basis is orthonormal within a few ulp by construction (a frame, or ±level and up)
+            *reinterpret_cast<Quat*>(o) = from_basis_unchecked(picked3(t.pick[0], tangent, normal, binormal),
+                                                               picked3(t.pick[1], tangent, normal, binormal),
+                                                               picked3(t.pick[2], tangent, normal, binormal));
             break;
         default: break;
     }

@@ -20,7 +20,7 @@ struct Track3 {
     double normal_offset = 0.0;
     double binormal_offset = 0.0;
     // Model axis i (x, y, z) takes ±(tangent, normal, binormal)[|pick[i]| − 1]: a signed pick,
-    // so that a Basis3 is the frame's vectors themselves, bit for bit.
+    // so that a Basis is the frame's vectors themselves, bit for bit.
     std::array<std::int8_t, 3> pick{};
     Vec3 position{};                        // the position last evaluated (Animation::value3)
 };

@@ -66,7 +66,8 @@ void EngineImpl::members_of(std::uint32_t dense, F&& f) const noexcept {
         f(h.target + l.z, bytes);
         if (e->p3->align != Align3::none) {
             if (l.member == Orient3Member::frame) f(h.target + l.orientation, sizeof(Frame3));
-            else if (l.member == Orient3Member::basis) f(h.target + l.orientation, sizeof(Basis3));
+            else if (l.member == Orient3Member::basis) f(h.target + l.orientation, sizeof(Basis));
+            else if (l.member == Orient3Member::quat) f(h.target + l.orientation, sizeof(Quat));
         }
     } else if (e && e->nd) {
         for (const MemberRef& m : e->members) f(h.target + m.offset, m.is_float ? sizeof(float) : sizeof(double));
