@@ -1,6 +1,9 @@
 // 3-D animations: the engine's updates against direct evaluation of the path and its frames, speed
 // mode against arc length, offsets, axis remaps, plays, timelines, allocation-free ticks, errors.
 #include <grape/anim.hpp>
+#ifdef GRAPE_TEST_SCRIPTS
+#include <grape/script.hpp>
+#endif
 #include <grape/stagger.hpp>
 #include <grape/timeline.hpp>
 
@@ -262,6 +265,52 @@ TEST(Anim3, TimelinePlacementAndStagger) {
     for (int k = 0; k < 32; ++k) engine.tick(1.0 / 64);  // 0.5 s
     for (std::size_t i = 0; i < 3; ++i) expect_same({dots[i].x, dots[i].y, dots[i].z}, path.point(0.5 - 0.25 * i), int(i));
 }
+
+// A range that runs back (0.75 → 0.25) at time scale 2: u = 0.75 − 0.5·τ with τ = 2t/duration,
+// exact at 1/64 s ticks; the model faces its travel (the range runs backwards): −tangent.
+TEST(Anim3, RangeAndTimeScale) {
+    const Path3 path = track();
+    Engine engine;
+    Body body;
+    const Frames3 reference(path, FramesDef{});
+    const Animation a = engine.create_3d_animation(body, path, 2.0, {.time_scale = 2.0, .range_start = 0.75, .range_end = 0.25},
+                                                   {.align = Align3::frame});
+    for (int k = 1; k < 64; ++k) {
+        engine.tick(1.0 / 64);
+        const double u = 0.75 + (k / 64.0) * (0.25 - 0.75);
+        expect_same({body.x, body.y, body.z}, path.point(u), k);
+        expect_same(body.orientation.z, -reference.frame(u).tangent, k);
+    }
+    engine.tick(1.0 / 64);
+    expect_same({body.x, body.y, body.z}, path.point(0.25), 64);
+    EXPECT_FALSE(a.alive());
+}
+
+#ifdef GRAPE_TEST_SCRIPTS
+// A script awaits a 3-D animation until it completes, then starts the next leg.
+grape::Script legs(Engine& engine, Plain& p, const Path3& path, int& done) {
+    co_await engine.create_3d_animation(p, path, 0.5);
+    ++done;
+    co_await engine.create_3d_animation(p, path, 0.5, {.reversed = true});
+    ++done;
+}
+
+TEST(Anim3, ScriptsAwaitThem) {
+    const Path3 path = track();
+    Engine engine;
+    Plain p;
+    int done = 0;
+    grape::Script s = legs(engine, p, path, done);
+    s.start(engine);
+    for (int k = 0; k < 32; ++k) engine.tick(1.0 / 64);
+    EXPECT_EQ(done, 1);
+    expect_same({p.x, p.y, p.z}, path.point(1.0), 32);
+    for (int k = 0; k < 40; ++k) engine.tick(1.0 / 64);
+    EXPECT_EQ(done, 2);
+    expect_same({p.x, p.y, p.z}, path.point(0.0), 72);
+    EXPECT_TRUE(s.done());
+}
+#endif
 
 // Linked targets stop once gone; kill_animations_of finds 3-D animations.
 TEST(Anim3, LinkedTargetsAndKill) {
