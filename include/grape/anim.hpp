@@ -115,7 +115,7 @@ public:
     bool paused() const noexcept;  ///< alive and held by pause()
 
     /// The current 2-D position; while waiting, where the first play starts (the path's start,
-    /// or its end for a reversed animation); {0, 0} if not alive, N-D or typed.
+    /// or its end for a reversed animation); {0, 0} if not alive, N-D, typed or 3-D (value3()).
     Vec2 value() const noexcept;
     /// The current position of a 3-D animation (offsets included); while waiting, where the
     /// first play starts; {0, 0, 0} if not alive or not 3-D.
@@ -123,7 +123,8 @@ public:
     /// The current values of an N-D animation (empty if not alive or 2-D).
     std::span<const double> values() const noexcept;
     /// Direction of travel in radians, atan2 of the path's derivative at the current point,
-    /// turned by π while playing backwards (0 if not alive).
+    /// turned by π while playing backwards (0 if not alive or 3-D: a 3-D target's orientation
+    /// member has its direction).
     double heading() const noexcept;
     /// Curve progress of the current play (the path parameter u; may leave [0, 1]).
     double progress() const noexcept;
