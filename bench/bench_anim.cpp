@@ -3,7 +3,8 @@
 // reparametrized cubic Béziers; tweeny doing the same journeys on two floats (linear and
 // quad-in-out); and a hand-written loop over plain structs with the same arithmetic (the
 // floor). Paths are shared: K = 1024 distinct shapes (scenes::bench_paths; GRAPE_BENCH_PATHS
-// sets fewer), animation i takes shape i % K. Reports ns per animation update and bytes per
+// sets fewer), animation i takes shape i % K. 3-D rows (grape3_*) do the same along 3-D cubics,
+// plain and with the frame's orientation. Reports ns per animation update and bytes per
 // animation, then a summary with the ratios.
 #include <grape/anim.hpp>
 #include <grape/color.hpp>
@@ -398,6 +399,48 @@ void BM_grape_property_double(benchmark::State& state) {
     benchmark::DoNotOptimize(targets.data());
 }
 
+// 3-D: N animations along K shared 3-D cubic Béziers (the same timing as grape_cubic: quad-in-out,
+// repeating, yoyo, 1–3 s plays), writing x, y, z (plain) and also a Basis from each path's
+// rotation-minimizing frame, its table built once per shape and shared (oriented).
+struct Body3 {
+    double x = 0, y = 0, z = 0;
+    grape::Basis orientation;
+};
+
+void grape3_engine(benchmark::State& state, bool oriented, const char* name) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<grape::Path3> paths;
+    std::vector<std::shared_ptr<const grape::Frames3>> frames;
+    for (std::size_t k = 0; k < distinct_paths; ++k) {
+        const double a = static_cast<double>(k) / static_cast<double>(distinct_paths);
+        paths.push_back(grape::Path3::cubic_bezier({0, 0, 0}, {100 * a, 200, 50}, {300, 200 * a, 100 - 50 * a},
+                                                   {400, 100 * a, 200}));
+        if (oriented) frames.push_back(std::make_shared<const grape::Frames3>(paths.back(), grape::FramesDef{.up = {0, 0, 1}}));
+    }
+    std::vector<Body3> targets(n);
+    const long long before = live_bytes.load();
+    auto engine = std::make_unique<grape::Engine>();
+    const grape::AnimationDef def{.curve = grape::Curve::quad_in_out(), .repeat = -1, .yoyo = true};
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t k = i % paths.size();
+        grape::Motion3Def motion;
+        if (oriented) {
+            motion.align = grape::Align3::frame;
+            motion.shared_frames = frames[k];
+        }
+        engine->create_3d_animation(targets[i], paths[k], grape::scenes::bench_duration(i), def, motion);
+    }
+    const double bytes = static_cast<double>(live_bytes.load() - before) / static_cast<double>(n);
+    engine->tick(frame);
+    run(state, name, bytes, [&] {
+        engine->tick(frame);
+        benchmark::ClobberMemory();
+    });
+    benchmark::DoNotOptimize(targets.data());
+}
+void BM_grape3_cubic(benchmark::State& s) { grape3_engine(s, false, "grape3_cubic"); }
+void BM_grape3_cubic_frame(benchmark::State& s) { grape3_engine(s, true, "grape3_cubic_frame"); }
+
 void sizes(benchmark::internal::Benchmark* b) {
     b->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);  // --benchmark_min_time applies (0.5 s by default)
 }
@@ -426,6 +469,8 @@ BENCHMARK(BM_grape_color_oklab)->Apply(sizes);
 BENCHMARK(BM_grape_user_type)->Apply(sizes);
 BENCHMARK(BM_grape_typed_double)->Apply(sizes);
 BENCHMARK(BM_grape_property_double)->Apply(sizes);
+BENCHMARK(BM_grape3_cubic)->Apply(sizes);
+BENCHMARK(BM_grape3_cubic_frame)->Apply(sizes);
 
 }  // namespace
 
@@ -456,7 +501,7 @@ int main(int argc, char** argv) {
                                  "grape_reparam_random_cubic_spread", "grape_svg_spread", "grape_reparam_svg_spread",
                                  "tweeny_linear", "tweeny_quad", "grape_color",
                                  "grape_color_oklab", "grape_user_type", "grape_typed_double",
-                                 "grape_property_double", "wall_one_pass", "wall_two_phase_1", "wall_parallel_2",
+                                 "grape_property_double", "grape3_cubic", "grape3_cubic_frame", "wall_one_pass", "wall_two_phase_1", "wall_parallel_2",
                                  "wall_frame_one_pass", "wall_frame_parallel_2"}) {
             const auto it = results.find(key(name, n));
             if (it == results.end()) continue;
@@ -510,6 +555,8 @@ int main(int argc, char** argv) {
     for (std::int64_t n : {1000, 100000, 1000000}) {
         ratios("grape_linear", "traffic_floor", n, "linear / memory-traffic floor");
         ratios("tweeny_quad", "grape_linear", n, "tweeny quad / linear");
+        ratios("grape3_cubic", "grape_cubic", n, "3-D cubic / 2-D cubic");
+        ratios("grape3_cubic_frame", "grape_cubic", n, "3-D cubic + frame / 2-D cubic");
         ratios("wall_one_pass", "wall_parallel_2", n, "one-pass / parallel 2 threads");
         ratios("wall_one_pass", "wall_two_phase_1", n, "one-pass / two-phase 1 thread");
         ratios("wall_frame_one_pass", "wall_frame_parallel_2", n, "frame: one-pass / parallel 2");

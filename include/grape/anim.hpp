@@ -47,6 +47,7 @@
 // Curves they play may be shared between them (see path.hpp and curve.hpp).
 #pragma once
 
+#include <grape/anim3.hpp>
 #include <grape/anim_timing.hpp>
 #include <grape/curve.hpp>
 #include <grape/error.hpp>
@@ -114,12 +115,16 @@ public:
     bool paused() const noexcept;  ///< alive and held by pause()
 
     /// The current 2-D position; while waiting, where the first play starts (the path's start,
-    /// or its end for a reversed animation); {0, 0} if not alive, N-D or typed.
+    /// or its end for a reversed animation); {0, 0} if not alive, N-D, typed or 3-D (value3()).
     Vec2 value() const noexcept;
+    /// The current position of a 3-D animation (offsets included); while waiting, where the
+    /// first play starts; {0, 0, 0} if not alive or not 3-D.
+    Vec3 value3() const noexcept;
     /// The current values of an N-D animation (empty if not alive or 2-D).
     std::span<const double> values() const noexcept;
     /// Direction of travel in radians, atan2 of the path's derivative at the current point,
-    /// turned by π while playing backwards (0 if not alive).
+    /// turned by π while playing backwards (0 if not alive or 3-D: a 3-D target's orientation
+    /// member has its direction).
     double heading() const noexcept;
     /// Curve progress of the current play (the path parameter u; may leave [0, 1]).
     double progress() const noexcept;
@@ -306,6 +311,39 @@ public:
         requires detail::wrapped_target<std::remove_cvref_t<Target>>
     Animation create_2d_animation(Target&& target, const Path& path, double duration, const AnimationDef& def = {});
 
+    /// Moves `target.x`, `target.y` and `target.z` (all double or all float) along a 3-D path for
+    /// `duration` seconds (> 0 and finite) per play, timed by `def` exactly as a 2-D animation
+    /// (curve, delay, repeat, yoyo, reversed, time scale, range; def.heading and def.offset are
+    /// 2-D only and refused). With `motion.align` other than none, the target's `orientation`
+    /// member (grape::Frame3, grape::Basis or grape::Quat) receives the orientation at each update (see
+    /// Motion3Def). At curve progress u the position is path.point(at) plus the offsets along
+    /// frame(at), at = range_start + u·(range_end − range_start), the frame's table built once
+    /// at creation; updates then allocate nothing. A T deriving from grape::Animated is linked.
+    /// Throws grape::Error naming the field for a bad duration, def or motion.
+    template <class T>
+        requires(!detail::wrapped_target<std::remove_cv_t<T>>)
+    Animation create_3d_animation(T& target, const Path3& path, double duration, const AnimationDef& def = {},
+                                  const Motion3Def& motion = {});
+    /// The same at constant speed: plays path.reparametrized() (built here, once) for
+    /// length / speed seconds per play, so that with a linear curve the distance travelled
+    /// along the path grows by speed·dt (to the reparametrization's 1e-9·length). Throws
+    /// grape::Error for a speed that is not positive and finite or a path of length 0.
+    template <class T>
+        requires(!detail::wrapped_target<std::remove_cv_t<T>>)
+    Animation create_3d_animation(T& target, const Path3& path, Speed speed, const AnimationDef& def = {},
+                                  const Motion3Def& motion = {});
+    /// The 3-D forms on a linked target (std::shared_ptr, grape::linked, grape::element,
+    /// grape::accessor; see target.hpp): stops cleanly once the target is gone.
+    template <class Target>
+        requires detail::wrapped_target<std::remove_cvref_t<Target>>
+    Animation create_3d_animation(Target&& target, const Path3& path, double duration, const AnimationDef& def = {},
+                                  const Motion3Def& motion = {});
+    /// The linked form at constant speed.
+    template <class Target>
+        requires detail::wrapped_target<std::remove_cvref_t<Target>>
+    Animation create_3d_animation(Target&& target, const Path3& path, Speed speed, const AnimationDef& def = {},
+                                  const Motion3Def& motion = {});
+
     /// Drives `member` of the target (any type `Interpolate` knows: double, float, Vec2, Color,
     /// your own through a lerp; see value.hpp) as `tween` says: grape::from_to(a, b), grape::to(b)
     /// (from the member's value when the first play begins) or grape::by(d) (by d from that
@@ -357,6 +395,11 @@ private:
                               std::ptrdiff_t rotation_offset, const Path& path, double duration,
                               const AnimationDef& def, bool rotation_float = false,
                               std::unique_ptr<detail::TargetRef> ref = nullptr);
+    Animation create_bound_3d(void* object, const detail::Layout3& layout, std::unique_ptr<detail::TargetRef> ref,
+                              const Path3& path, double duration, const Speed* speed, const AnimationDef& def,
+                              const Motion3Def& motion);
+    template <class T>
+    static detail::Layout3 layout3_of(const T& object) noexcept;
     Animation create_bound_value(void* object, std::unique_ptr<detail::TargetRef> ref,
                                  std::unique_ptr<detail::ValueTrack> track, double duration, const AnimationDef& def);
     std::size_t kill_in(const void* object, std::size_t bytes);
@@ -415,6 +458,65 @@ Animation Engine::create_2d_animation(Target&& target, const Path& path, double 
     }
     return create_bound_2d(now, detail::offset_in(*now, now->x), detail::offset_in(*now, now->y), std::is_same_v<X, float>,
                            rotation, path, duration, def, rotation_float, Form::ref(target));
+}
+
+template <class T>
+detail::Layout3 Engine::layout3_of(const T& object) noexcept {
+    using X = std::remove_cvref_t<decltype(object.x)>;
+    using Y = std::remove_cvref_t<decltype(object.y)>;
+    using Z = std::remove_cvref_t<decltype(object.z)>;
+    static_assert(std::is_same_v<X, Y> && std::is_same_v<X, Z> && (std::is_same_v<X, double> || std::is_same_v<X, float>),
+                  "create_3d_animation: target.x, target.y and target.z must all be double or all float");
+    detail::Layout3 l;
+    l.x = detail::offset_in(object, object.x);
+    l.y = detail::offset_in(object, object.y);
+    l.z = detail::offset_in(object, object.z);
+    l.is_float = std::is_same_v<X, float>;
+    if constexpr (requires { object.orientation; }) {
+        using O = std::remove_cvref_t<decltype(object.orientation)>;
+        static_assert(detail::orient3_member_of<O>() != detail::Orient3Member::none,
+                      "create_3d_animation: target.orientation receives the orientation and must be a "
+                      "grape::Frame3, a grape::Basis or a grape::Quat");
+        l.orientation = detail::offset_in(object, object.orientation);
+        l.member = detail::orient3_member_of<O>();
+    }
+    return l;
+}
+
+template <class T>
+    requires(!detail::wrapped_target<std::remove_cv_t<T>>)
+Animation Engine::create_3d_animation(T& target, const Path3& path, double duration, const AnimationDef& def,
+                                      const Motion3Def& motion) {
+    return create_bound_3d(&target, layout3_of(target), detail::TargetForm<T>::ref(target), path, duration, nullptr, def,
+                           motion);
+}
+
+template <class T>
+    requires(!detail::wrapped_target<std::remove_cv_t<T>>)
+Animation Engine::create_3d_animation(T& target, const Path3& path, Speed speed, const AnimationDef& def,
+                                      const Motion3Def& motion) {
+    return create_bound_3d(&target, layout3_of(target), detail::TargetForm<T>::ref(target), path, 0.0, &speed, def,
+                           motion);
+}
+
+template <class Target>
+    requires detail::wrapped_target<std::remove_cvref_t<Target>>
+Animation Engine::create_3d_animation(Target&& target, const Path3& path, double duration, const AnimationDef& def,
+                                      const Motion3Def& motion) {
+    using Form = detail::TargetForm<std::remove_cvref_t<Target>>;
+    auto* now = Form::now(target);
+    if (!now) throw Error("create_3d_animation: the linked target is gone");
+    return create_bound_3d(now, layout3_of(*now), Form::ref(target), path, duration, nullptr, def, motion);
+}
+
+template <class Target>
+    requires detail::wrapped_target<std::remove_cvref_t<Target>>
+Animation Engine::create_3d_animation(Target&& target, const Path3& path, Speed speed, const AnimationDef& def,
+                                      const Motion3Def& motion) {
+    using Form = detail::TargetForm<std::remove_cvref_t<Target>>;
+    auto* now = Form::now(target);
+    if (!now) throw Error("create_3d_animation: the linked target is gone");
+    return create_bound_3d(now, layout3_of(*now), Form::ref(target), path, 0.0, &speed, def, motion);
 }
 
 template <class Target, class M, class Interp>

@@ -90,7 +90,7 @@ bool Animation::paused() const noexcept {
 Vec2 Animation::value() const noexcept {
     const auto r = record();
     if (!r) return {};
-    if (const detail::Extra* e = r.impl->extra(slot_); e && (e->nd || e->value)) return {};
+    if (const detail::Extra* e = r.impl->extra(slot_); e && (e->nd || e->value || e->p3)) return {};
     return r.impl->value_of(r.dense);
 }
 

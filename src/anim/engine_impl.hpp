@@ -27,6 +27,7 @@ struct TimelineStoreDelete {
     void operator()(TimelineStore* store) const noexcept;  // timeline.cpp, where the type is complete
 };
 class TickPool;
+struct Track3;  // engine_3d.hpp
 struct TickPoolDelete {
     void operator()(TickPool* pool) const noexcept;  // engine_parallel.cpp
 };
@@ -171,6 +172,7 @@ struct Extra {
     double range_start = 0.0;             // AnimationDef::range_start, range_end, offset: the
     double range_end = 1.0;               // path's u = range_start + u·(range_end − range_start),
     double offset = 0.0;                  // drawn `offset` beside the path
+    std::shared_ptr<Track3> p3;           // 3-D animations (engine_3d.cpp)
     double repeat_gap = 0.0;              // repeat delay in plays (its record has flag_listens,
                                           // so play ends take the slow path that reads it)
 };
@@ -348,6 +350,12 @@ private:
 public:
     Animation create_value(void* object, std::unique_ptr<TargetRef> ref, std::unique_ptr<ValueTrack> track,
                            double duration, const AnimationDef& def);
+    // --- 3-D animations (engine_3d.cpp) ---
+    Animation create_3d(void* object, const Layout3& layout, std::unique_ptr<TargetRef> ref, const Path3& path,
+                        double duration, const Speed* speed, const AnimationDef& def, const Motion3Def& motion);
+    // Writes the state at eased progress u (after begin_write).
+    void write_3d(const Hot& h, Extra& e, double u) const noexcept;
+    Vec3 value3_of(std::uint32_t dense) const noexcept;
     std::size_t kill_in(std::uintptr_t lo, std::uintptr_t hi);
     std::vector<Animation> find_in(std::uintptr_t lo, std::uintptr_t hi);
     // The scale time_scale() returns for the record in `slot` (set at creation and by

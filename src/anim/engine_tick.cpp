@@ -52,6 +52,15 @@ void EngineImpl::write_state(std::uint32_t dense) {
     }
     Extra& e = extras_.find(cold_[dense].slot)->second;  // node-based: stable while handlers run
     if (!begin_write(dense, e, u)) return;  // linked targets, the first play's start, typed values
+    if (e.p3) {
+        write_3d(h, e, u);
+        if (e.on_update) {
+            const auto handler = e.on_update;
+            Dispatch d(*this);
+            (*handler)();
+        }
+        return;
+    }
     if (e.nd) {
         e.nd->point(along_range(e, u), e.values);
         char* base = h.target;

@@ -7,6 +7,7 @@
 // bytes [lo, hi) looks at keys from lo − widest_ (the widest record indexed) to hi and checks
 // each candidate's members, so its cost is the records near the object, not all of them.
 #include "engine_impl.hpp"
+#include "engine_3d.hpp"
 
 #include <grape/error.hpp>
 
@@ -57,6 +58,17 @@ void EngineImpl::members_of(std::uint32_t dense, F&& f) const noexcept {
     const Extra* e = (h.flags & flag_custom) ? extra(cold_[dense].slot) : nullptr;
     if (e && e->value) {
         f(h.target + e->value->offset, e->value->size);
+    } else if (e && e->p3) {
+        const Layout3& l = e->p3->layout;
+        const std::size_t bytes = l.is_float ? sizeof(float) : sizeof(double);
+        f(h.target + l.x, bytes);
+        f(h.target + l.y, bytes);
+        f(h.target + l.z, bytes);
+        if (e->p3->align != Align3::none) {
+            if (l.member == Orient3Member::frame) f(h.target + l.orientation, sizeof(Frame3));
+            else if (l.member == Orient3Member::basis) f(h.target + l.orientation, sizeof(Basis));
+            else if (l.member == Orient3Member::quat) f(h.target + l.orientation, sizeof(Quat));
+        }
     } else if (e && e->nd) {
         for (const MemberRef& m : e->members) f(h.target + m.offset, m.is_float ? sizeof(float) : sizeof(double));
     } else {
