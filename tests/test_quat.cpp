@@ -418,7 +418,7 @@ TEST(Quat, IntegratingAConstantAngularVelocityStaysUnit) {
     double worst = 0.0;
     const int steps = 1000000;
     for (int k = 0; k < steps; ++k) {
-        q = grape::integrate(q, omega, dt);
+        q = grape::integrate_rotation(q, omega, dt);
         worst = std::max(worst, std::abs(grape::length(q) - 1.0));
     }
     EXPECT_LE(worst, 4 * eps);

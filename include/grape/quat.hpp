@@ -91,7 +91,7 @@ GRAPE_MATH_API Vec3 rotation_vector(const Quat& q) noexcept;
 /// constant for `dt`: normalized(from_rotation_vector(omega·dt) · q). Exact for a constant
 /// omega up to rounding, which the renormalization keeps from growing: |q| stays 1 within a
 /// few ulp over any number of steps.
-GRAPE_MATH_API Quat integrate(const Quat& q, Vec3 omega, double dt) noexcept;
+GRAPE_MATH_API Quat integrate_rotation(const Quat& q, Vec3 omega, double dt) noexcept;
 
 /// The three axes of a rotation: where it takes (1, 0, 0), (0, 1, 0) and (0, 0, 1); the columns
 /// of its matrix.

@@ -75,7 +75,7 @@ Quat from_rotation_vector(Vec3 r) noexcept { return detail::exp_half(0.5 * r); }
 
 Vec3 rotation_vector(const Quat& q) noexcept { return 2.0 * detail::log_half(q.w < 0.0 ? -q : q); }
 
-Quat integrate(const Quat& q, Vec3 omega, double dt) noexcept {
+Quat integrate_rotation(const Quat& q, Vec3 omega, double dt) noexcept {
     return normalized(from_rotation_vector(omega * dt) * q);
 }
 
