@@ -214,6 +214,9 @@ TEST(Bank, StraightLineIsLevelAndTheClampHolds) {
     expect_error([&] { bank_track(line, {.max_angle = 2.0}); }, {"max_angle"});
     expect_error([&] { bank_track(line, {.samples = 1}); }, {"samples"});
     expect_error([&] { bank_track(line, {.up = {0, 0, 0}}); }, {"up"});
+    expect_error([&] { (void)bank_angle(line, 0.5, {.speed = -1.0}); }, {"bank_angle", "speed"});
+    expect_error([&] { (void)bank_angle(line, 0.5, {.gravity = std::nan("")}); }, {"bank_angle", "gravity"});
+    expect_error([&] { (void)bank_angle(line, 0.5, {.up = {0, 0, 0}}); }, {"bank_angle", "up"});
 }
 
 TEST(Bank, SmoothingRemovesTheJumpAtAJoin) {

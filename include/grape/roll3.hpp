@@ -111,8 +111,9 @@ struct BankDef {
 /// handed about the tangent, normal toward binormal) of a frame whose normal is world up tilts
 /// it toward the horizontal part of the direction to the centre of curvature, so a vehicle
 /// leans into the curve. 0 where κ = 0, where the path is vertical, or where the centre lies
-/// straight above or below. Throws nothing; a def that bank_track would refuse gives NaN.
-GRAPE_ANIM_API double bank_angle(const Path3& path, double u, const BankDef& def) noexcept;
+/// straight above or below. Throws grape::Error naming the field of def that is out of range
+/// (speed, gravity, max_angle, up).
+GRAPE_ANIM_API double bank_angle(const Path3& path, double u, const BankDef& def);
 
 /// A RollTrack of the bank: `samples` keys evenly spaced in arc length, each bank_angle there
 /// (averaged over the window when `smoothing` > 0, the window shrinking to the path at its

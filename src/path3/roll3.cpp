@@ -140,12 +140,24 @@ Frame3 RolledFrames3::frame_at_length(double s) const noexcept {
     return turned_roll3(frames_.frame(frames_.path().u_at_length(s)), roll_.roll_at(s));
 }
 
-double bank_angle(const Path3& path, double u, const BankDef& def) noexcept {
-    if (!(def.speed >= 0.0) || !std::isfinite(def.speed) || !(def.gravity > 0.0) || !std::isfinite(def.gravity) ||
-        !(def.max_angle >= 0.0 && def.max_angle <= 0.5 * std::numbers::pi) || !is_finite(def.up) ||
-        length(def.up) == 0.0) {
-        return std::nan("");
+namespace {
+
+// The fields bank_angle and bank_track share; throws grape::Error naming the first bad one.
+void check_bank3(const std::string& where, const BankDef& def) {
+    if (!std::isfinite(def.speed) || !(def.speed >= 0.0)) {
+        throw Error(where + "speed: must be finite and >= 0 (got " + detail::number_text(def.speed) + ")");
     }
+    if (!std::isfinite(def.gravity) || !(def.gravity > 0.0)) {
+        throw Error(where + "gravity: must be finite and > 0 (got " + detail::number_text(def.gravity) + ")");
+    }
+    if (!(def.max_angle >= 0.0 && def.max_angle <= 0.5 * std::numbers::pi)) {
+        throw Error(where + "max_angle: must be in [0, pi/2] (got " + detail::number_text(def.max_angle) + ")");
+    }
+    if (!is_finite(def.up) || length(def.up) == 0.0) throw Error(where + "up: not finite or zero");
+}
+
+// The bank at u for a def already checked.
+double bank3(const Path3& path, double u, const BankDef& def) noexcept {
     const Frenet3 f = path.frenet(u);
     if (!f.normal_defined) return 0.0;
     const Vec3 w = normalized(def.up);
@@ -159,18 +171,16 @@ double bank_angle(const Path3& path, double u, const BankDef& def) noexcept {
     return std::copysign(std::min(bank, def.max_angle), lateral);
 }
 
+}  // namespace
+
+double bank_angle(const Path3& path, double u, const BankDef& def) {
+    check_bank3("bank_angle: ", def);
+    return bank3(path, u, def);
+}
+
 RollTrack bank_track(const Path3& path, const BankDef& def) {
     const std::string where = "bank_track: ";
-    if (!std::isfinite(def.speed) || !(def.speed >= 0.0)) {
-        throw Error(where + "speed: must be finite and >= 0 (got " + detail::number_text(def.speed) + ")");
-    }
-    if (!std::isfinite(def.gravity) || !(def.gravity > 0.0)) {
-        throw Error(where + "gravity: must be finite and > 0 (got " + detail::number_text(def.gravity) + ")");
-    }
-    if (!(def.max_angle >= 0.0 && def.max_angle <= 0.5 * std::numbers::pi)) {
-        throw Error(where + "max_angle: must be in [0, pi/2] (got " + detail::number_text(def.max_angle) + ")");
-    }
-    if (!is_finite(def.up) || length(def.up) == 0.0) throw Error(where + "up: not finite or zero");
+    check_bank3(where, def);
     if (!std::isfinite(def.smoothing) || !(def.smoothing >= 0.0)) {
         throw Error(where + "smoothing: must be finite and >= 0 (got " + detail::number_text(def.smoothing) + ")");
     }
@@ -179,14 +189,14 @@ RollTrack bank_track(const Path3& path, const BankDef& def) {
     }
     const double total = path.length();
     if (!(total > 0.0)) {
-        const RollKey only{0.0, bank_angle(path, 0.0, def)};
+        const RollKey only{0.0, bank3(path, 0.0, def)};
         return RollTrack(std::span<const RollKey>(&only, 1));
     }
     const std::size_t n = def.samples;
     std::vector<RollKey> keys(n);
     for (std::size_t k = 0; k < n; ++k) {
         const double s = k + 1 == n ? total : total * static_cast<double>(k) / static_cast<double>(n - 1);
-        keys[k] = {s, bank_angle(path, path.u_at_length(s), def)};
+        keys[k] = {s, bank3(path, path.u_at_length(s), def)};
     }
     const double step = total / static_cast<double>(n - 1);
     const auto half = static_cast<std::size_t>(std::floor(0.5 * def.smoothing / step));
