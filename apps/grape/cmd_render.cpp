@@ -170,8 +170,12 @@ void run_render(const RenderOptions& o) {
         // A single picture replaces its file only when complete (an old one survives a failure).
         // A frame is registered once written: one that fails leaves what was at its name (an
         // interruption while it is written removes its temporary, never the file it would replace).
-        canvas.write(file);
-        if (o.frames_given) written.add(file);
+        {
+            // Committed and registered with no interruption between the two (see there).
+            const detail::InterruptsDeferred uncut;
+            canvas.write(file);
+            if (o.frames_given) written.add(file);
+        }
         if (f == 0 && frames > 1 && !o.force) {
             // The first frame's size times the frame count, against the free space left.
             const double first = static_cast<double>(std::filesystem::file_size(file, ec));

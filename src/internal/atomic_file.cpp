@@ -12,6 +12,7 @@
 #else
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <pthread.h>
 #include <unistd.h>
 #endif
 
@@ -20,6 +21,7 @@
 #include <cerrno>
 #include <climits>
 #include <csignal>
+#include <cstring>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -368,6 +370,26 @@ void StagingFolder::commit() {
 }
 
 // ------------------------------------------------------------------------------- RunFiles
+
+#ifdef _WIN32
+InterruptsDeferred::InterruptsDeferred() noexcept : saved_{} {}
+InterruptsDeferred::~InterruptsDeferred() = default;
+#else
+InterruptsDeferred::InterruptsDeferred() noexcept : saved_{} {
+    static_assert(sizeof(sigset_t) <= sizeof(saved_), "sigset_t does not fit");
+    sigset_t block, old;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &block, &old);
+    std::memcpy(saved_, &old, sizeof old);
+}
+InterruptsDeferred::~InterruptsDeferred() {
+    sigset_t old;
+    std::memcpy(&old, saved_, sizeof old);
+    pthread_sigmask(SIG_SETMASK, &old, nullptr);  // a signal that waited is delivered now
+}
+#endif
 
 RunFiles::~RunFiles() {
     for (CleanupEntry* e : entries_) unregister(e);

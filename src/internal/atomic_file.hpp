@@ -91,6 +91,22 @@ private:
 /// single-threaded programs such as the grape tool; call once at start.
 void remove_files_on_interrupt();
 
+/// While one lives, SIGINT and SIGTERM wait (POSIX: blocked on this thread, delivered when it
+/// ends): for a step that must not be cut in two, such as a file committed and then added to
+/// a RunFiles (cut between the two, the committed file would be neither a temporary nor a
+/// run's file, and would stay). On Windows, where Ctrl-C runs its handler on a thread of its
+/// own, it does nothing.
+class InterruptsDeferred {
+public:
+    InterruptsDeferred() noexcept;
+    ~InterruptsDeferred();
+    InterruptsDeferred(const InterruptsDeferred&) = delete;
+    InterruptsDeferred& operator=(const InterruptsDeferred&) = delete;
+
+private:
+    unsigned char saved_[256];  // the previous signal mask (a sigset_t fits: 128 bytes on glibc)
+};
+
 /// The files one multi-file run creates (the frames of `grape render --frames`): all of them
 /// are removed if the run fails (destroyed without keep()) or is interrupted.
 class RunFiles {
