@@ -192,8 +192,8 @@ PathND PathND::catmull_rom(std::size_t dimension, std::span<const double> keyfra
         const double* p2 = p1 + d;
         // Phantom points mirror the neighbour at the ends.
         for (std::size_t k = 0; k < d; ++k) {
-            p0[k] = i > 0 ? p1[k - d] : 2.0 * p1[k] - p2[k];
-            p3[k] = i + 2 < n ? p2[k + d] : 2.0 * p2[k] - p1[k];
+            p0[k] = i > 0 ? keys[(i - 1) * d + k] : 2.0 * p1[k] - p2[k];  // the key before p1
+            p3[k] = i + 2 < n ? keys[(i + 2) * d + k] : 2.0 * p2[k] - p1[k];  // the key after p2
         }
         const double d01 = spacing(p0.data(), p1), d12 = spacing(p1, p2), d23 = spacing(p2, p3.data());
         // Barry–Goldman tangents in knot units, scaled to the segment's local t by d12.
