@@ -59,11 +59,11 @@ struct SceneBank {
 /// along the frame, as Engine::create_3d_animation plays them, plus an optional roll about the
 /// tangent (keys in arc length, or automatic banking) on top of the frame.
 struct GRAPE_SCENE_API SceneAnimation3 {
-    std::string name;          ///< label ("" allowed); timelines place it by name ("animation3")
-    Path3 path;                ///< where
-    std::string path_name;     ///< the NamedPath3 it uses; "" when the path is given inline
-    Curve curve;               ///< when (default linear)
-    std::string curve_name;    ///< the NamedCurve it uses; "" when given by its own name
+    std::string name{};        ///< label ("" allowed); timelines place it by name ("animation3")
+    Path3 path{};              ///< where
+    std::string path_name{};   ///< the NamedPath3 it uses; "" when the path is given inline
+    Curve curve{};             ///< when (default linear)
+    std::string curve_name{};  ///< the NamedCurve it uses; "" when given by its own name
     double duration = 1.0;     ///< seconds per play, > 0 (unused when speed > 0)
     /// Constant speed, units per second (> 0; 0: off): the path is played reparametrized by
     /// arc length and each play lasts path.length() / speed (JSON "speed" instead of "duration").
@@ -86,9 +86,9 @@ struct GRAPE_SCENE_API SceneAnimation3 {
     double binormal_offset = 0.0;  ///< world units along the (rolled) frame's binormal
     /// Roll about the tangent keyed by arc length of the path (s, radians), joined linearly;
     /// empty: none. Needs align frame.
-    std::vector<RollKey> roll;
+    std::vector<RollKey> roll{};
     bool banked = false;       ///< automatic banking (`bank`) instead of roll keys; needs frame mode up
-    SceneBank bank;            ///< banking, when `banked`
+    SceneBank bank{};          ///< banking, when `banked`
 
     /// Seconds per play: path.length() / speed in speed mode, else duration.
     double seconds() const noexcept;
