@@ -97,5 +97,16 @@ check("a 2-D path name on a plane", {"kind": "on_plane", "path": "track", "origi
                                      "y_axis": [0, 0, 1]}, False, path3)
 check("a projectile without seconds", {"kind": "projectile", "position": [0, 0, 0], "velocity": [1, 0, 0],
                                        "acceleration": [0, 0, -9.8]}, False, path3)
+# 3-D animations: duration or speed, a frame, roll or bank, placed in timelines as animation3.
+anim3 = {"name": "c", "path": line3, "speed": 2, "align": "frame", "frame": {"mode": "up", "up": [0, 0, 1]}}
+check("a 3-D animation in a timeline", {"animations3": [anim3], "timelines": [{"name": "t", "children": [{"animation3": "c"}]}]}, True)
+check("a 3-D animation on a named 3-D path", {"paths3": [{"name": "l", "path": line3}],
+      "animations3": [dict(anim3, path="l", bank={"speed": 3})]}, True)
+check("a 3-D animation with duration and speed", {"animations3": [dict(anim3, duration=1)]}, False)
+check("a 3-D animation with neither duration nor speed", {"animations3": [{"path": line3}]}, False)
+check("a 3-D animation with roll and bank", {"animations3": [dict(anim3, roll=[[0, 1]], bank={"speed": 3})]}, False)
+check("a misspelt 3-D animation field", {"animations3": [dict(anim3, allign="frame")]}, False)
+check("a 3-D animation with an unknown axis", {"animations3": [dict(anim3, axes={"forward": "z"})]}, False)
+check("a 3-D animation with a 2-D path", {"animations3": [dict(anim3, path=line)]}, False)
 sys.exit(1 if failures else 0)
 PY
