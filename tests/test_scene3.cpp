@@ -4,6 +4,7 @@
 #include <grape/anim.hpp>
 #include <grape/error.hpp>
 #include <grape/scene.hpp>
+#include <grape/scene_values.hpp>
 
 #include "error_text.hpp"
 #include "seeds.hpp"
@@ -352,6 +353,66 @@ TEST(Scene3Errors, NameThePointer) {
         {R"({"animations3": [{"name": "a", "path": )" + line + R"(, "duration": 1}],
              "timelines": [{"name": "t", "children": [{"animation3": "a"}, {"animation3": "a"}]}]})",
          "/timelines/0/children/1/animation3", "already placed"},
+    };
+    for (const Case& c : cases) {
+        const std::string what = grape::testing::error_text([&] { (void)grape::load_scene(c.json); });
+        EXPECT_EQ(what.rfind("scene: " + c.pointer + ": ", 0), 0u) << c.json << "\n" << what;
+        EXPECT_NE(what.find(c.why), std::string::npos) << c.json << "\n" << what;
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// vec3 and quat properties: lerp and slerp against closed forms, the quaternion kept as written
+// (save → load → save) and evaluated normalized, errors by pointer.
+TEST(Scene3Properties, Vec3AndQuatTween) {
+    const std::string text = R"({"properties": [
+        {"name": "v", "type": "vec3", "value": [0, 0, 0]},
+        {"name": "q", "type": "quat", "value": [2, 0, 0, 0]}],
+      "tweens": [
+        {"property": "v", "to": [4, 8, -2], "duration": 2},
+        {"property": "v", "by": [1, 1, 1], "duration": 1, "delay": 2},
+        {"property": "q", "to": [1, 0, 0, 1], "duration": 1}]})";
+    const Scene scene = grape::load_scene(text);
+    const std::string once = grape::save_scene(scene);
+    EXPECT_EQ(grape::save_scene(grape::load_scene(once)), once);
+    expect_same_quat(std::get<Quat>(grape::load_scene(once).properties[1].value), Quat{2, 0, 0, 0}, "saved as written");
+    const grape::SceneTiming timing(scene);
+    const grape::SceneProperties values(scene, timing);
+    // Linear: at 0.5 s a quarter of the way (exact in binary); the relative tween starts at its
+    // entry from where the first ended, [4, 8, −2], and moves by [1, 1, 1]: at 2.5 s half of it.
+    expect_same_vec3(std::get<Vec3>(values.value(0, 0.5)), {1, 2, -0.5}, "v at 0.5");
+    expect_same_vec3(std::get<Vec3>(values.value(0, 2.5)), {4.5, 8.5, -1.5}, "v at 2.5");
+    // The identity to a quarter turn about z: at 0.5 s an eighth of a turn, (cos π/8, 0, 0,
+    // sin π/8). Within 4e-16: slerp's sinc weights and the normalization round to an ulp or
+    // two of components below 1.
+    const Quat q = std::get<Quat>(values.value(1, 0.5));
+    EXPECT_NEAR(q.w, std::cos(grape::pi / 8), 4e-16);
+    EXPECT_NEAR(q.z, std::sin(grape::pi / 8), 4e-16);
+    EXPECT_EQ(q.x, 0.0);
+    EXPECT_EQ(q.y, 0.0);
+    // Before the tween: the property's value normalized, exactly the identity.
+    expect_same_quat(std::get<Quat>(values.value(1, -1.0)), Quat{}, "q before");
+    // The other sign of the same end turns the same way (the shortest arc): the same rotation.
+    const Scene flipped = grape::load_scene(R"({"properties": [{"name": "q", "type": "quat", "value": [1, 0, 0, 0]}],
+        "tweens": [{"property": "q", "to": [-1, 0, 0, -1], "duration": 1}]})");
+    const grape::SceneTiming flipped_timing(flipped);
+    const Quat r = std::get<Quat>(grape::SceneProperties(flipped, flipped_timing).value(0, 0.5));
+    EXPECT_LT(grape::distance(grape::rotate(r, {1, 0, 0}), grape::rotate(q, {1, 0, 0})), 1e-15);
+
+    struct Case {
+        std::string json, pointer, why;
+    };
+    const std::vector<Case> cases{
+        {R"({"properties": [{"name": "q", "type": "quat", "value": [0, 0, 0, 0]}]})", "/properties/0/value", "must not be zero"},
+        {R"({"properties": [{"name": "q", "type": "quat", "value": [1, 0, 0]}]})", "/properties/0/value", "[w, x, y, z]"},
+        {R"({"properties": [{"name": "v", "type": "vec3", "value": [1, 0]}]})", "/properties/0/value", "[x, y, z]"},
+        {R"({"properties": [{"name": "q", "type": "quat", "value": [1, 0, 0, 0]}],
+             "tweens": [{"property": "q", "by": [1, 0, 0, 0], "duration": 1}]})", "/tweens/0/by", "cannot move by an amount"},
+        {R"({"properties": [{"name": "v", "type": "vec3", "value": [1, 0, 0]}],
+             "tweens": [{"property": "v", "to": [1, 0], "duration": 1}]})", "/tweens/0/to", "[x, y, z]"},
     };
     for (const Case& c : cases) {
         const std::string what = grape::testing::error_text([&] { (void)grape::load_scene(c.json); });

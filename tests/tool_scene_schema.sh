@@ -73,6 +73,11 @@ check("a colour property", tweens(props=({"name": "c", "type": "color", "value":
 check("a colour space on a number", tweens(props=({"name": "x", "value": 0, "space": "oklab"},)), False)
 check("a vec2 property holding a number", tweens(props=({"name": "p", "type": "vec2", "value": 0},)), False)
 check("a turn on a vec2", tweens(props=({"name": "p", "type": "vec2", "value": [0, 0], "turn": "every"},)), False)
+check("vec3 and quat properties with tweens", tweens({"property": "v", "from": [0, 0, 0], "to": [1, 2, 3], "duration": 1},
+      {"property": "v", "by": [1, 0, 0], "duration": 1}, {"property": "q", "to": [0, 0, 0, 1], "duration": 1},
+      props=({"name": "v", "type": "vec3", "value": [0, 0, 1]}, {"name": "q", "type": "quat", "value": [1, 0, 0, 0]})), True)
+check("a vec3 property holding a vec2", tweens(props=({"name": "v", "type": "vec3", "value": [0, 0]},)), False)
+check("a quat property holding three numbers", tweens(props=({"name": "q", "type": "quat", "value": [1, 0, 0]},)), False)
 # 3-D path objects (the schema's $defs/path3): the format's examples marked <!-- path3 -->.
 path3 = jsonschema.Draft202012Validator({"$schema": schema["$schema"], "$defs": schema["$defs"], "$ref": "#/$defs/path3"})
 for i, text in enumerate(blocks3):

@@ -41,6 +41,9 @@ std::string vec3_text(Vec3 p) { return "[" + json_number(p.x) + ", " + json_numb
 std::string value_text(const SceneValue& v) {
     if (const double* d = std::get_if<double>(&v)) return json_number(*d);
     if (const Vec2* p = std::get_if<Vec2>(&v)) return "[" + json_number(p->x) + ", " + json_number(p->y) + "]";
+    if (const Vec3* p = std::get_if<Vec3>(&v)) return vec3_text(*p);
+    if (const Quat* q = std::get_if<Quat>(&v))
+        return "[" + json_number(q->w) + ", " + json_number(q->x) + ", " + json_number(q->y) + ", " + json_number(q->z) + "]";
     const Color& c = std::get<Color>(v);
     return "[" + json_number(c.r) + ", " + json_number(c.g) + ", " + json_number(c.b) + ", " + json_number(c.a) + "]";
 }

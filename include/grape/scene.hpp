@@ -85,10 +85,12 @@ enum class ScenePropertyType {
     angle,   ///< a double in radians (or degrees, SceneProperty::degrees), turning as `shortest` says
     vec2,    ///< a Vec2
     color,   ///< a Color (sRGB-encoded components), mixed in `space`
+    vec3,    ///< a Vec3, mixed by lerp
+    quat,    ///< a Quat (an orientation [w, x, y, z], not zero; evaluated normalized), mixed by slerp on the shortest arc
 };
 
-/// A property's value: a double (number, angle), a Vec2 or a Color, as its type says.
-using SceneValue = std::variant<double, Vec2, Color>;
+/// A property's value: a double (number, angle), a Vec2, a Color, a Vec3 or a Quat, as its type says.
+using SceneValue = std::variant<double, Vec2, Color, Vec3, Quat>;
 
 /// A typed value of the scene that tweens drive (a tint, an angle, a scale), like a member
 /// the engine's `animate` drives.
