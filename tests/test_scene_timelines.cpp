@@ -64,6 +64,7 @@ void build_in_engine(const Scene& s, grape::Engine& engine, std::vector<grape::V
                 case grape::SceneTimelineChildKind::label: t.label(c.name, c.at); break;
                 case grape::SceneTimelineChildKind::gap: t.gap(c.gap, c.at); break;
                 case grape::SceneTimelineChildKind::tween: break;  // properties: test_scene_values.cpp
+                case grape::SceneTimelineChildKind::animation3: break;  // 3-D animations: test_scene3.cpp
             }
         }
         timelines[k] = t;

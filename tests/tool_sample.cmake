@@ -177,6 +177,40 @@ elseif(CASE STREQUAL "duplicate_names")
   file(WRITE "${work}/dup.json" "${dup}")
   run(sample "${work}/dup.json" --at 0)
   expect_error([=[/animations/2 and /animations/3 are both named "c"]=])
+elseif(CASE STREQUAL "three_d")
+  # 3-D animations by hand: p (4 s along x to 8) a position only, 2 at 1 s; q (4 s from
+  # (8, 0, 0) back to the origin, delayed 1 s by timeline t) turned by its rotation-minimizing
+  # frame with the model's +x forward and +z up: tangent −x, normal +z, so the model turns by
+  # π about z, the quaternion (0, 0, 0, ±1) (w ≥ 0, so the sign is the z part's), with the
+  # position 8 − 2·(t − 1). Every number is exact; zeros may print as -0.
+  file(WRITE "${work}/three_d.json" [=[{"animations3": [
+  {"name": "p", "path": {"kind": "line", "points": [[0, 0, 0], [8, 0, 0]]}, "duration": 4},
+  {"name": "q", "path": {"kind": "line", "points": [[8, 0, 0], [0, 0, 0]]}, "duration": 4, "align": "frame",
+   "axes": {"forward": "+x", "up": "+z"}}],
+ "animations": [{"name": "flat", "path": {"kind": "linear", "start": [0, 0], "end": [4, 0]}, "duration": 4}],
+ "timelines": [{"name": "t", "delay": 1, "children": [{"animation3": "q"}]}]}
+]=])
+  run(sample "${work}/three_d.json" --at 1,3)
+  expect_status_0()
+  set(z "-?0")
+  set(pose "{\"position\": \\[[48], ${z}, ${z}\\], \"orientation\": \\[${z}, ${z}, ${z}, -?1\\]}")
+  set(want "^\\[{\"time\": 1, \"animations\": {\"flat\": \\[1, 0\\], \"p\": \\[2, 0, 0\\], \"q\": ${pose}}},\n")
+  string(APPEND want " {\"time\": 3, \"animations\": {\"flat\": \\[3, 0\\], \"p\": \\[6, 0, 0\\], \"q\": ${pose}}}\\]\n$")
+  message("expected:\n${want}")
+  if(NOT out MATCHES "${want}")
+    fail("not the 3-D positions and orientations derived by hand")
+  endif()
+  string(FIND "${out}" [=["q": {"position": [8, ]=] first)
+  string(FIND "${out}" [=["q": {"position": [4, ]=] second)
+  if(first EQUAL -1 OR second EQUAL -1)
+    fail("q is not at 8 after its delay and at 4 two seconds later")
+  endif()
+  # A 3-D animation named like a 2-D one: a JSON object cannot hold both.
+  file(READ "${work}/three_d.json" text)
+  string(REPLACE [=["name": "flat"]=] [=["name": "p"]=] text "${text}")
+  file(WRITE "${work}/three_d_dup.json" "${text}")
+  run(sample "${work}/three_d_dup.json" --at 0)
+  expect_error([=[/animations/0 and /animations3/0 are both named "p"]=])
 elseif(CASE STREQUAL "missing_file")
   run(sample "${work}/none.json" --at 0)
   expect_error("cannot read ${work}/none.json: no such file")

@@ -73,6 +73,11 @@ check("a colour property", tweens(props=({"name": "c", "type": "color", "value":
 check("a colour space on a number", tweens(props=({"name": "x", "value": 0, "space": "oklab"},)), False)
 check("a vec2 property holding a number", tweens(props=({"name": "p", "type": "vec2", "value": 0},)), False)
 check("a turn on a vec2", tweens(props=({"name": "p", "type": "vec2", "value": [0, 0], "turn": "every"},)), False)
+check("vec3 and quat properties with tweens", tweens({"property": "v", "from": [0, 0, 0], "to": [1, 2, 3], "duration": 1},
+      {"property": "v", "by": [1, 0, 0], "duration": 1}, {"property": "q", "to": [0, 0, 0, 1], "duration": 1},
+      props=({"name": "v", "type": "vec3", "value": [0, 0, 1]}, {"name": "q", "type": "quat", "value": [1, 0, 0, 0]})), True)
+check("a vec3 property holding a vec2", tweens(props=({"name": "v", "type": "vec3", "value": [0, 0]},)), False)
+check("a quat property holding three numbers", tweens(props=({"name": "q", "type": "quat", "value": [1, 0, 0]},)), False)
 # 3-D path objects (the schema's $defs/path3): the format's examples marked <!-- path3 -->.
 path3 = jsonschema.Draft202012Validator({"$schema": schema["$schema"], "$defs": schema["$defs"], "$ref": "#/$defs/path3"})
 for i, text in enumerate(blocks3):
@@ -97,5 +102,16 @@ check("a 2-D path name on a plane", {"kind": "on_plane", "path": "track", "origi
                                      "y_axis": [0, 0, 1]}, False, path3)
 check("a projectile without seconds", {"kind": "projectile", "position": [0, 0, 0], "velocity": [1, 0, 0],
                                        "acceleration": [0, 0, -9.8]}, False, path3)
+# 3-D animations: duration or speed, a frame, roll or bank, placed in timelines as animation3.
+anim3 = {"name": "c", "path": line3, "speed": 2, "align": "frame", "frame": {"mode": "up", "up": [0, 0, 1]}}
+check("a 3-D animation in a timeline", {"animations3": [anim3], "timelines": [{"name": "t", "children": [{"animation3": "c"}]}]}, True)
+check("a 3-D animation on a named 3-D path", {"paths3": [{"name": "l", "path": line3}],
+      "animations3": [dict(anim3, path="l", bank={"speed": 3})]}, True)
+check("a 3-D animation with duration and speed", {"animations3": [dict(anim3, duration=1)]}, False)
+check("a 3-D animation with neither duration nor speed", {"animations3": [{"path": line3}]}, False)
+check("a 3-D animation with roll and bank", {"animations3": [dict(anim3, roll=[[0, 1]], bank={"speed": 3})]}, False)
+check("a misspelt 3-D animation field", {"animations3": [dict(anim3, allign="frame")]}, False)
+check("a 3-D animation with an unknown axis", {"animations3": [dict(anim3, axes={"forward": "z"})]}, False)
+check("a 3-D animation with a 2-D path", {"animations3": [dict(anim3, path=line)]}, False)
 sys.exit(1 if failures else 0)
 PY

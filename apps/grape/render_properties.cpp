@@ -42,6 +42,24 @@ void draw_scene_properties(Canvas& canvas, const Scene& scene, const SceneTiming
             canvas.fill_rect({left, y - 9.0, 18.0, 11.0}, {.color = colors::black});
             canvas.fill_rect({left + 1.0, y - 8.0, 16.0, 9.0}, {.color = clamped});
             text += to_hex(*c);
+        } else if (const Vec3* p3 = std::get_if<Vec3>(&v)) {
+            text += '(';
+            text += number_text(p3->x);
+            text += ", ";
+            text += number_text(p3->y);
+            text += ", ";
+            text += number_text(p3->z);
+            text += ')';
+        } else if (const Quat* q = std::get_if<Quat>(&v)) {
+            text += "quat(";
+            text += number_text(q->w);
+            text += ", ";
+            text += number_text(q->x);
+            text += ", ";
+            text += number_text(q->y);
+            text += ", ";
+            text += number_text(q->z);
+            text += ')';
         } else if (const Vec2* p = std::get_if<Vec2>(&v)) {
             // Appended piece by piece: g++ 12 -O3 warns falsely (-Wrestrict) on "(" + string&&.
             text += '(';

@@ -63,6 +63,10 @@ void draw_timeline_strips(Canvas& canvas, const Scene& scene, const ScenePlayer&
                     canvas.fill_rect({a, y - 1.0, 1.0, 12.0}, {.color = colors::black});
                     break;
                 case SceneTimelineChildKind::gap: break;
+                case SceneTimelineChildKind::animation3:  // a 3-D animation (not drawn in the scene): a grey-blue bar with its name
+                    canvas.fill_rect({a, y + 1.0, std::max(b - a, 1.0), 9.0}, {.color = {0.3, 0.45, 0.7, 0.45}});
+                    canvas.text({a + 2.0, y + 8.5}, child.name, {.color = colors::black, .size = 8});
+                    break;
                 case SceneTimelineChildKind::tween:  // a property's tween: a pale bar with its name
                     canvas.fill_rect({a, y + 1.0, std::max(b - a, 1.0), 9.0}, {.color = {0.85, 0.6, 0.2, 0.45}});
                     canvas.text({a + 2.0, y + 8.5}, child.name, {.color = colors::black, .size = 8});

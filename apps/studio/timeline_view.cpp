@@ -68,6 +68,10 @@ void TimelineView::set_scene(const Scene& scene) {
                         bar.tick = true;
                         break;
                     case SceneTimelineChildKind::gap: break;
+                    case SceneTimelineChildKind::animation3:  // a 3-D animation
+                        bar.color = IM_COL32(80, 115, 180, 160);
+                        bar.text = child.name;
+                        break;
                     case SceneTimelineChildKind::tween:  // a property's tween
                         bar.color = IM_COL32(215, 150, 50, 160);
                         bar.text = child.name;

@@ -21,6 +21,7 @@
 #include <grape/export_scene.hpp>
 #include <grape/math.hpp>
 #include <grape/path.hpp>
+#include <grape/scene_animation3.hpp>
 #include <grape/timeline_layout.hpp>
 #include <grape/sprite.hpp>
 
@@ -84,10 +85,12 @@ enum class ScenePropertyType {
     angle,   ///< a double in radians (or degrees, SceneProperty::degrees), turning as `shortest` says
     vec2,    ///< a Vec2
     color,   ///< a Color (sRGB-encoded components), mixed in `space`
+    vec3,    ///< a Vec3, mixed by lerp
+    quat,    ///< a Quat (an orientation [w, x, y, z], not zero; evaluated normalized), mixed by slerp on the shortest arc
 };
 
-/// A property's value: a double (number, angle), a Vec2 or a Color, as its type says.
-using SceneValue = std::variant<double, Vec2, Color>;
+/// A property's value: a double (number, angle), a Vec2, a Color, a Vec3 or a Quat, as its type says.
+using SceneValue = std::variant<double, Vec2, Color, Vec3, Quat>;
 
 /// A typed value of the scene that tweens drive (a tint, an angle, a scale), like a member
 /// the engine's `animate` drives.
@@ -125,12 +128,19 @@ struct GRAPE_SCENE_API SceneTween {
 };
 
 /// What a child of a timeline is.
-enum class SceneTimelineChildKind { animation, timeline, label, gap, tween };
+enum class SceneTimelineChildKind {
+    animation,   ///< one of the scene's animations (JSON "animation")
+    timeline,    ///< a nested timeline
+    label,       ///< a named time
+    gap,         ///< seconds of nothing
+    tween,       ///< a property's tween
+    animation3,  ///< one of the scene's 3-D animations (JSON "animation3")
+};
 
 /// One child of a SceneTimeline, in the order placed.
 struct SceneTimelineChild {
     SceneTimelineChildKind kind = SceneTimelineChildKind::animation;  ///< what the child is
-    std::string name{};   ///< the animation's, tween's, nested timeline's or label's name (unused for gaps)
+    std::string name{};   ///< the animation's, 3-D animation's, tween's, nested timeline's or label's name (unused for gaps)
     double gap = 0.0;     ///< gap: seconds it occupies, ≥ 0
     TimelinePosition at{};  ///< where it goes; the default: after everything placed so far
 };
@@ -244,6 +254,8 @@ struct GRAPE_SCENE_API Scene {
     std::vector<SceneSprite> sprites;         ///< sprites from sprite sheets
     std::vector<SceneProperty> properties;    ///< typed values driven by tweens
     std::vector<SceneTween> tweens;           ///< tweens of the properties
+    std::vector<NamedPath3> paths3;           ///< named 3-D paths (JSON "paths3")
+    std::vector<SceneAnimation3> animations3; ///< 3-D animations (JSON "animations3")
     /// What loading forgave, one message each: SVG path data with a syntax error is read by
     /// SVG's error rule (the path before the command holding the error). Not saved.
     std::vector<std::string> warnings;
@@ -252,6 +264,8 @@ struct GRAPE_SCENE_API Scene {
     const NamedPath* find_path(std::string_view name) const noexcept;
     /// The named curve; nullptr when there is none.
     const NamedCurve* find_curve(std::string_view name) const noexcept;
+    /// The named 3-D path; nullptr when there is none.
+    const NamedPath3* find_path3(std::string_view name) const noexcept;
     /// The named property's index; −1 when there is none.
     std::ptrdiff_t find_property(std::string_view name) const noexcept;
 };
@@ -260,7 +274,7 @@ struct GRAPE_SCENE_API Scene {
 struct SceneTimelineLayout {
     std::vector<double> start;        ///< per child, seconds from the timeline's start
     std::vector<double> length;       ///< per child, seconds it lasts in the timeline (labels 0)
-    std::vector<std::ptrdiff_t> index;  ///< per child, the animation's, tween's or timeline's index (−1 for labels, gaps)
+    std::vector<std::ptrdiff_t> index;  ///< per child, the animation's, 3-D animation's, tween's or timeline's index (−1 for labels, gaps)
     double duration = 0.0;            ///< seconds of one play (the end of the last-ending child)
     double end_time = 0.0;            ///< seconds of its parent until its last play ends (+inf: forever)
     std::ptrdiff_t parent = -1;       ///< the timeline it is placed in (−1: it plays from scene time 0)
@@ -295,9 +309,21 @@ public:
     double animation_time(std::size_t animation, double t) const noexcept;
     /// Progress u of animation i at scene time t: progress_at(def, duration, animation_time).
     double progress(std::size_t animation, double t) const noexcept;
-    /// Scene seconds until every free animation, free tween and top-level timeline has ended
+    /// Scene seconds until every free animation (2-D or 3-D), free tween and top-level timeline has ended
     /// (+inf when one repeats forever).
     double end_time() const noexcept;
+
+    std::size_t animation3_count() const noexcept { return animations3_.size(); }  ///< the scene's 3-D animations, in file order
+    /// The timeline driving 3-D animation i (−1: it plays on its own from scene time 0).
+    std::ptrdiff_t animation3_driver(std::size_t animation) const noexcept { return animations3_[animation].driver; }
+    /// The time 3-D animation i plays at at scene time t (as animation_time).
+    double animation3_time(std::size_t animation, double t) const noexcept;
+    /// Progress of 3-D animation i at scene time t: progress_at(def, seconds, animation3_time);
+    /// SceneMotion3::position_at takes it.
+    double animation3_progress(std::size_t animation, double t) const noexcept;
+    /// 3-D animation i's current play runs backwards at scene time t (play_at's `backward`):
+    /// what SceneMotion3::orientation_at takes to face the way it goes.
+    bool animation3_backward(std::size_t animation, double t) const noexcept;
 
     std::size_t tween_count() const noexcept { return tweens_.size(); }  ///< the scene's tweens, in file order
     /// The timeline driving tween i (−1: it plays on its own from scene time 0).
@@ -338,6 +364,7 @@ private:
         double entry = 0.0;  // scene seconds of the first play's start
     };
     std::vector<Animation> animations_;
+    std::vector<Animation> animations3_;
     std::vector<Timeline> timelines_;
     std::vector<Tween> tweens_;
 };

@@ -1,5 +1,5 @@
-// grape — scene properties: the typed values of a scene (numbers, angles, Vec2, colours) as
-// their tweens drive them, evaluated at any scene time as a pure function of it.
+// grape — scene properties: the typed values of a scene (numbers, angles, Vec2, colours, Vec3,
+// quaternions) as their tweens drive them, evaluated at any scene time as a pure function of it.
 //
 // The rule (docs/scene-format.md, "Properties and tweens"): a property's tweens are ordered
 // by when their first play begins (SceneTiming::tween_entry; ties in the order of "tweens").
@@ -28,8 +28,9 @@ namespace grape {
 /// @{
 
 /// The value between a and b at curve progress u as the property mixes them: lerp for
-/// numbers and Vec2, AngleLerp (or its degrees form) for angles, grape::mix in the property's
-/// space for colours. a and b hold the property's type.
+/// numbers, Vec2 and Vec3, AngleLerp (or its degrees form) for angles, grape::mix in the
+/// property's space for colours, slerp of normalized(a) and normalized(b) on the shortest arc
+/// for quaternions. a and b hold the property's type.
 GRAPE_SCENE_API SceneValue interpolate(const SceneProperty& property, const SceneValue& a, const SceneValue& b,
                                        double u) noexcept;
 
@@ -42,7 +43,7 @@ public:
     /// Checks every tween against its property and resolves their starts. `timing` is
     /// SceneTiming(scene). Throws grape::Error "scene: POINTER: WHY" for a property name
     /// empty or repeated, a value of another type than its property's, an unknown property,
-    /// "by" on a colour, a bad duration, delay, repeat delay or time scale.
+    /// "by" on a colour or a quaternion, a bad duration, delay, repeat delay or time scale.
     SceneProperties(const Scene& scene, const SceneTiming& timing);
 
     std::size_t property_count() const noexcept { return properties_.size(); }  ///< the scene's properties, in file order

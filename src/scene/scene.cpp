@@ -46,7 +46,7 @@ void read_range_and_offset(const json& o, const std::string& p, SceneAnimation& 
 
 Scene read_scene(const json& root) {
     object(root, "", {"grape_scene", "name", "view", "paths", "curves", "animations", "simulations", "timelines", "sprites",
-                  "properties", "tweens"});
+                  "properties", "tweens", "paths3", "animations3"});
     if (const auto v = root.find("grape_scene"); v != root.end()) {
         if (integer(*v, "/grape_scene") != 1) fail("/grape_scene", "unsupported format version (this reader knows 1)");
     }
@@ -120,6 +120,8 @@ Scene read_scene(const json& root) {
             scene.animations.push_back(std::move(a));
         }
     }
+    if (const auto v = root.find("paths3"); v != root.end()) read_paths3(*v, scene);
+    if (const auto v = root.find("animations3"); v != root.end()) read_animations3(*v, scene);
     if (const auto v = root.find("properties"); v != root.end()) read_properties(*v, scene);
     if (const auto v = root.find("tweens"); v != root.end()) read_tweens(*v, scene);
     if (const auto v = root.find("simulations"); v != root.end()) {
@@ -177,6 +179,8 @@ ordered scene_json(const Scene& scene) {
         }
         j["animations"] = std::move(a);
     }
+    if (!scene.paths3.empty()) j["paths3"] = paths3_json(scene);
+    if (!scene.animations3.empty()) j["animations3"] = animations3_json(scene);
     if (!scene.properties.empty()) j["properties"] = properties_json(scene);
     if (!scene.tweens.empty()) j["tweens"] = tweens_json(scene);
     if (!scene.simulations.empty()) {
@@ -220,6 +224,12 @@ double SceneAnimation::end_time() const noexcept { return grape::end_time(def(),
 
 const NamedPath* Scene::find_path(std::string_view name) const noexcept {
     for (const NamedPath& p : paths)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+const NamedPath3* Scene::find_path3(std::string_view name) const noexcept {
+    for (const NamedPath3& p : paths3)
         if (p.name == name) return &p;
     return nullptr;
 }

@@ -86,6 +86,15 @@ Vec3 vec3(const json& j, const std::string& pointer);
 /// `depth` complex paths.
 Path3 read_path3(const json& j, const std::string& pointer, int depth);
 
+/// The scene's "paths3" and "animations3" (after its curves and its "paths3").
+void read_paths3(const json& j, Scene& scene);
+void read_animations3(const json& j, Scene& scene);
+ordered paths3_json(const Scene& scene);
+ordered animations3_json(const Scene& scene);
+/// A 3-D path as the JSON object read_path3 reads back to the same path; a reparametrized path
+/// or a slice has none (grape::Error at `pointer`).
+ordered path3_json(const Path3& path, const std::string& pointer);
+
 ordered point_json(Vec2 p);
 ordered points_json(std::span<const Vec2> points);
 /// A path as the JSON object PathReader reads back to the same path.

@@ -35,6 +35,8 @@ std::size_t index_of(ScenePropertyType type) noexcept {
         case ScenePropertyType::angle: return 0;
         case ScenePropertyType::vec2: return 1;
         case ScenePropertyType::color: return 2;
+        case ScenePropertyType::vec3: return 3;
+        case ScenePropertyType::quat: return 4;
     }
     return 0;
 }
@@ -45,18 +47,23 @@ const char* what_of(ScenePropertyType type) noexcept {
         case ScenePropertyType::angle: return "an angle (a number)";
         case ScenePropertyType::vec2: return "a vec2 [x, y]";
         case ScenePropertyType::color: return "a colour";
+        case ScenePropertyType::vec3: return "a vec3 [x, y, z]";
+        case ScenePropertyType::quat: return "a quat [w, x, y, z]";
     }
     return "a number";
 }
 
 SceneValue add(const SceneValue& a, const SceneValue& b) noexcept {
     if (const double* x = std::get_if<double>(&a)) return *x + std::get<double>(b);
+    if (const Vec3* p = std::get_if<Vec3>(&a)) return *p + std::get<Vec3>(b);
     return std::get<Vec2>(a) + std::get<Vec2>(b);
 }
 
 bool finite(const SceneValue& v) noexcept {
     if (const double* x = std::get_if<double>(&v)) return std::isfinite(*x);
     if (const Vec2* p = std::get_if<Vec2>(&v)) return std::isfinite(p->x) && std::isfinite(p->y);
+    if (const Vec3* p = std::get_if<Vec3>(&v)) return is_finite(*p);
+    if (const Quat* q = std::get_if<Quat>(&v)) return is_finite(*q);
     const Color& c = std::get<Color>(v);
     return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && std::isfinite(c.a);
 }
@@ -65,6 +72,15 @@ void check_value(const SceneValue& v, const SceneProperty& prop, const std::stri
     if (v.index() != index_of(prop.type))
         fail(pointer, std::string("expected ") + what_of(prop.type) + " (the type of property \"" + prop.name + "\")");
     if (!finite(v)) fail(pointer, "number out of range");
+    if (const Quat* q = std::get_if<Quat>(&v); q && !(length(*q) > 0.0))
+        fail(pointer, "a quaternion must not be zero (it is normalized to an orientation)");
+}
+
+// Quaternions are evaluated as the unit ones they stand for; the scene keeps them as written,
+// so that it saves what it read.
+SceneValue unit_value(const SceneValue& v) noexcept {
+    if (const Quat* q = std::get_if<Quat>(&v)) return normalized(*q);
+    return v;
 }
 
 // The progress a curve covers over t ∈ [0, 1]: the range of 257 samples and its ends, widened
@@ -113,6 +129,8 @@ SceneValue interpolate(const SceneProperty& property, const SceneValue& a, const
         }
         case ScenePropertyType::vec2: return grape::lerp(std::get<Vec2>(a), std::get<Vec2>(b), u);
         case ScenePropertyType::color: return mix(std::get<Color>(a), std::get<Color>(b), u, property.space);
+        case ScenePropertyType::vec3: return grape::lerp(std::get<Vec3>(a), std::get<Vec3>(b), u);
+        case ScenePropertyType::quat: return slerp(normalized(std::get<Quat>(a)), normalized(std::get<Quat>(b)), u);
     }
     return a;
 }
@@ -129,6 +147,7 @@ SceneProperties::SceneProperties(const Scene& scene, const SceneTiming& timing)
         if (prop.name.empty()) fail(child(p, "name"), "must not be empty");
         if (!by_name.emplace(prop.name, k).second) fail(child(p, "name"), "duplicate name \"" + prop.name + "\"");
         check_value(prop.value, prop, child(p, "value"));
+        properties_[k].value = unit_value(prop.value);
     }
     if (timing.tween_count() != scene.tweens.size())
         throw Error("scene: /tweens: the timing was built from another scene (" + std::to_string(timing.tween_count()) +
@@ -144,6 +163,8 @@ SceneProperties::SceneProperties(const Scene& scene, const SceneTiming& timing)
         if (tw.mode == ValueMode::from_to) check_value(tw.from, prop, child(p, "from"));
         if (tw.mode == ValueMode::relative && prop.type == ScenePropertyType::color)
             fail(child(p, "by"), "a colour cannot move by an amount (property \"" + prop.name + "\" is a color): give \"to\"");
+        if (tw.mode == ValueMode::relative && prop.type == ScenePropertyType::quat)
+            fail(child(p, "by"), "a quaternion cannot move by an amount (property \"" + prop.name + "\" is a quat): give \"to\"");
         check_value(tw.to, prop, child(p, tw.mode == ValueMode::relative ? "by" : "to"));
         if (!(tw.duration > 0.0) || !std::isfinite(tw.duration)) fail(child(p, "duration"), "must be positive and finite");
         if (!(tw.delay >= 0.0) || !std::isfinite(tw.delay)) fail(child(p, "delay"), "must be finite and ≥ 0");
@@ -151,7 +172,7 @@ SceneProperties::SceneProperties(const Scene& scene, const SceneTiming& timing)
         if (!(tw.time_scale > 0.0) || !std::isfinite(tw.time_scale)) fail(child(p, "time_scale"), "must be positive and finite");
         if (tw.repeat < -1) fail(child(p, "repeat"), "must be −1 (forever) or a count ≥ 0");
         const double u0 = tw.curve(tw.reversed ? 1.0 : 0.0);
-        tweens_.push_back({tw.mode == ValueMode::from_to ? tw.from : prop.value, tw.to, k, u0});
+        tweens_.push_back({unit_value(tw.mode == ValueMode::from_to ? tw.from : prop.value), unit_value(tw.to), k, u0});
         order_[k].push_back(i);
         entry_.push_back(timing.tween_entry(i));
     }

@@ -47,10 +47,11 @@ TimelinePosition read_position(const json& j, const std::string& pointer) {
 }
 
 SceneTimelineChild read_child(const json& j, const std::string& pointer) {
-    const json& o = object(j, pointer, {"animation", "tween", "timeline", "label", "gap", "at"});
+    const json& o = object(j, pointer, {"animation", "animation3", "tween", "timeline", "label", "gap", "at"});
     SceneTimelineChild c;
     int kinds = 0;
     for (const auto& [key, kind] : {std::pair{"animation", SceneTimelineChildKind::animation},
+                                    std::pair{"animation3", SceneTimelineChildKind::animation3},
                                     std::pair{"tween", SceneTimelineChildKind::tween},
                                     std::pair{"timeline", SceneTimelineChildKind::timeline},
                                     std::pair{"label", SceneTimelineChildKind::label},
@@ -68,7 +69,7 @@ SceneTimelineChild read_child(const json& j, const std::string& pointer) {
         if (kind == SceneTimelineChildKind::label) check_label_name(c.name, child(pointer, key));
     }
     if (kinds != 1)
-        fail(pointer, "expected exactly one of \"animation\", \"tween\", \"timeline\", \"label\" and \"gap\" (got " + std::to_string(kinds) + ")");
+        fail(pointer, "expected exactly one of \"animation\", \"animation3\", \"tween\", \"timeline\", \"label\" and \"gap\" (got " + std::to_string(kinds) + ")");
     if (const auto at = o.find("at"); at != o.end()) c.at = read_position(*at, child(pointer, "at"));
     return c;
 }
@@ -114,6 +115,7 @@ ordered timelines_json(const std::vector<SceneTimeline>& timelines) {
             ordered e;
             switch (c.kind) {
                 case SceneTimelineChildKind::animation: e["animation"] = c.name; break;
+                case SceneTimelineChildKind::animation3: e["animation3"] = c.name; break;
                 case SceneTimelineChildKind::tween: e["tween"] = c.name; break;
                 case SceneTimelineChildKind::timeline: e["timeline"] = c.name; break;
                 case SceneTimelineChildKind::label: e["label"] = c.name; break;
@@ -159,6 +161,8 @@ public:
             if (!scene.animations[i].name.empty()) animations_.emplace(scene.animations[i].name, i);
         for (std::size_t i = 0; i < scene.tweens.size(); ++i)
             if (!scene.tweens[i].name.empty()) tweens_.emplace(scene.tweens[i].name, i);
+        for (std::size_t i = 0; i < scene.animations3.size(); ++i)
+            if (!scene.animations3[i].name.empty()) animations3_.emplace(scene.animations3[i].name, i);
         for (std::size_t k = 0; k < scene.timelines.size(); ++k) {
             const std::string& name = scene.timelines[k].name;
             if (name.empty()) fail(child(child("/timelines", k), "name"), "must not be empty");
@@ -168,6 +172,8 @@ public:
         placed_animation_.assign(scene.animations.size(), std::string());
         placed_at_.assign(scene.animations.size(), {-1, 0});
         placed_tween_.assign(scene.tweens.size(), std::string());
+        placed_animation3_.assign(scene.animations3.size(), std::string());
+        placed_animation3_at_.assign(scene.animations3.size(), {-1, 0});
         placed_tween_at_.assign(scene.tweens.size(), {-1, 0});
         placed_timeline_.assign(scene.timelines.size(), std::string());
         layouts_.assign(scene.timelines.size(), {});
@@ -181,6 +187,11 @@ public:
     /// The tween named by child c of timeline k (its index).
     std::size_t tween(std::size_t k, std::size_t c, const std::string& name) {
         return place_unique(tweens_, placed_tween_, placed_tween_at_, k, c, "tween", name);
+    }
+
+    /// The 3-D animation named by child c of timeline k (its index).
+    std::size_t animation3(std::size_t k, std::size_t c, const std::string& name) {
+        return place_unique(animations3_, placed_animation3_, placed_animation3_at_, k, c, "animation3", name);
     }
 
     std::size_t timeline(std::size_t k, std::size_t c, const std::string& name) {
@@ -204,11 +215,17 @@ public:
             TimelineEntry e{.at = ch.at};
             switch (ch.kind) {
                 case SceneTimelineChildKind::animation:
+                case SceneTimelineChildKind::animation3:
                 case SceneTimelineChildKind::tween: {
                     const bool is_animation = ch.kind == SceneTimelineChildKind::animation;
-                    const std::size_t i = is_animation ? animation(k, c, ch.name) : tween(k, c, ch.name);
-                    e.duration = is_animation ? scene_.animations[i].end_time() : scene_.tweens[i].end_time();
-                    const char* what = is_animation ? "animation" : "tween";
+                    const bool is_animation3 = ch.kind == SceneTimelineChildKind::animation3;
+                    const std::size_t i = is_animation    ? animation(k, c, ch.name)
+                                          : is_animation3 ? animation3(k, c, ch.name)
+                                                          : tween(k, c, ch.name);
+                    e.duration = is_animation    ? scene_.animations[i].end_time()
+                                 : is_animation3 ? scene_.animations3[i].end_time()
+                                                 : scene_.tweens[i].end_time();
+                    const char* what = is_animation ? "animation" : is_animation3 ? "animation3" : "tween";
                     if (!std::isfinite(e.duration))
                         fail(child(pointer_of(k, c), what), std::string(what) + " \"" + ch.name + "\" repeats forever: a timeline can only hold what ends");
                     layout.index[c] = static_cast<std::ptrdiff_t>(i);
@@ -263,6 +280,13 @@ public:
         return {k, layouts_[static_cast<std::size_t>(k)].start[c]};
     }
 
+    /// Where each placed 3-D animation is: its timeline and start (−1 when free).
+    std::pair<std::ptrdiff_t, double> animation3_placement(std::size_t i) const {
+        const auto [k, c] = placed_animation3_at_[i];
+        if (k < 0) return {-1, 0.0};
+        return {k, layouts_[static_cast<std::size_t>(k)].start[c]};
+    }
+
     /// Where each placed tween is: its timeline and start (−1 when free).
     std::pair<std::ptrdiff_t, double> tween_placement(std::size_t i) const {
         const auto [k, c] = placed_tween_at_[i];
@@ -287,7 +311,7 @@ private:
                              std::vector<std::pair<std::ptrdiff_t, std::size_t>>& placed_at, std::size_t k, std::size_t c,
                              const std::string& what, const std::string& name) {
         const std::string p = child(pointer_of(k, c), what);
-        const std::string list = "/" + what + "s";
+        const std::string list = what == "animation3" ? std::string("/animations3") : "/" + what + "s";
         const auto [first, last] = names.equal_range(name);
         if (first == last) fail(p, "no " + what + " named \"" + name + "\" in " + list);
         if (std::next(first) != last)
@@ -324,6 +348,7 @@ private:
     std::vector<SceneTimelineLayout>& layouts_;
     std::multimap<std::string, std::size_t> animations_;
     std::multimap<std::string, std::size_t> tweens_;
+    std::multimap<std::string, std::size_t> animations3_;
     std::map<std::string, std::size_t> timelines_;
     std::vector<int> state_;  // 0 not yet laid out, 1 being laid out, 2 done
     std::vector<std::string> placed_animation_;  // where each is placed ("" : nowhere yet)
@@ -331,6 +356,8 @@ private:
     std::vector<std::pair<std::ptrdiff_t, std::size_t>> placed_at_;  // per animation: timeline and child (−1: free)
     std::vector<std::string> placed_tween_;
     std::vector<std::pair<std::ptrdiff_t, std::size_t>> placed_tween_at_;  // per tween
+    std::vector<std::string> placed_animation3_;
+    std::vector<std::pair<std::ptrdiff_t, std::size_t>> placed_animation3_at_;  // per 3-D animation
 };
 
 }  // namespace
@@ -344,6 +371,11 @@ SceneTiming::SceneTiming(const Scene& scene) {
         const SceneAnimation& a = scene.animations[i];
         const auto [driver, start] = resolver.placement(i);
         animations_.push_back({a.def(), a.duration, driver, start});
+    }
+    for (std::size_t i = 0; i < scene.animations3.size(); ++i) {
+        const SceneAnimation3& a = scene.animations3[i];
+        const auto [driver, start] = resolver.animation3_placement(i);
+        animations3_.push_back({a.def(), a.seconds(), driver, start});
     }
     std::vector<std::pair<std::ptrdiff_t, double>> placed;  // read before the layouts move
     for (std::size_t i = 0; i < scene.tweens.size(); ++i) placed.push_back(resolver.tween_placement(i));
@@ -422,9 +454,27 @@ double SceneTiming::progress(std::size_t i, double t) const noexcept {
     return progress_at(a.def, a.duration, animation_time(i, t));
 }
 
+double SceneTiming::animation3_time(std::size_t i, double t) const noexcept {
+    return driven_time(animations3_[i].driver, animations3_[i].start, t);
+}
+
+double SceneTiming::animation3_progress(std::size_t i, double t) const noexcept {
+    const Animation& a = animations3_[i];
+    if (!(a.duration > 0.0)) return a.def.curve(a.def.reversed ? 1.0 : 0.0);  // not playable: its start
+    return progress_at(a.def, a.duration, animation3_time(i, t));
+}
+
+bool SceneTiming::animation3_backward(std::size_t i, double t) const noexcept {
+    const Animation& a = animations3_[i];
+    if (!(a.duration > 0.0)) return a.def.reversed;
+    return play_at(a.def, a.duration, animation3_time(i, t)).backward;
+}
+
 double SceneTiming::end_time() const noexcept {
     double end = 0.0;
     for (const Animation& a : animations_)
+        if (a.driver < 0) end = std::max(end, a.duration > 0.0 ? grape::end_time(a.def, a.duration) : 0.0);
+    for (const Animation& a : animations3_)
         if (a.driver < 0) end = std::max(end, a.duration > 0.0 ? grape::end_time(a.def, a.duration) : 0.0);
     for (const Tween& tw : tweens_)
         if (tw.driver < 0) end = std::max(end, grape::end_time(tw.def, tw.duration));

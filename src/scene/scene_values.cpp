@@ -26,6 +26,8 @@ std::string_view type_name(ScenePropertyType type) noexcept {
         case ScenePropertyType::angle: return "angle";
         case ScenePropertyType::vec2: return "vec2";
         case ScenePropertyType::color: return "color";
+        case ScenePropertyType::vec3: return "vec3";
+        case ScenePropertyType::quat: return "quat";
     }
     return "number";
 }
@@ -67,6 +69,14 @@ SceneValue read_value(const json& j, const std::string& pointer, ScenePropertyTy
         }
         case ScenePropertyType::vec2: return vec2(j, pointer);
         case ScenePropertyType::color: return color_value(j, pointer);
+        case ScenePropertyType::vec3: return vec3(j, pointer);
+        case ScenePropertyType::quat: {
+            if (!j.is_array() || j.size() != 4) fail(pointer, "expected a quaternion [w, x, y, z], got " + type_of(j));
+            const Quat q{number(j[0], child(pointer, 0)), number(j[1], child(pointer, 1)), number(j[2], child(pointer, 2)),
+                         number(j[3], child(pointer, 3))};
+            if (!(length(q) > 0.0)) fail(pointer, "a quaternion must not be zero (it is normalized to an orientation)");
+            return q;
+        }
     }
     return 0.0;
 }
@@ -74,6 +84,8 @@ SceneValue read_value(const json& j, const std::string& pointer, ScenePropertyTy
 ordered value_json(const SceneValue& v) {
     if (const double* d = std::get_if<double>(&v)) return *d;
     if (const Vec2* p = std::get_if<Vec2>(&v)) return point_json(*p);
+    if (const Vec3* p = std::get_if<Vec3>(&v)) return ordered::array({p->x, p->y, p->z});
+    if (const Quat* q = std::get_if<Quat>(&v)) return ordered::array({q->w, q->x, q->y, q->z});
     const Color& c = std::get<Color>(v);
     // Hex when it reads back as these very doubles (any colour read from hex does), else the numbers.
     const std::string hex = to_hex(c);
@@ -89,10 +101,12 @@ void read_properties(const json& v, Scene& scene) {
         const json& o = object(v[i], p, {"name", "type", "value", "space", "turn", "unit"});
         SceneProperty prop;
         prop.name = name_field(o, p, &names);
-        const std::string type = one_of(o, p, "type", "number", {"number", "angle", "vec2", "color"});
+        const std::string type = one_of(o, p, "type", "number", {"number", "angle", "vec2", "color", "vec3", "quat"});
         prop.type = type == "angle"  ? ScenePropertyType::angle
                     : type == "vec2" ? ScenePropertyType::vec2
                     : type == "color" ? ScenePropertyType::color
+                    : type == "vec3" ? ScenePropertyType::vec3
+                    : type == "quat" ? ScenePropertyType::quat
                                       : ScenePropertyType::number;
         const auto only_for = [&](const char* key, ScenePropertyType t, const char* what) {
             if (o.contains(key) && prop.type != t)
@@ -148,6 +162,8 @@ void read_tweens(const json& v, Scene& scene) {
         if (has_from && has_by) fail(child(p, "by"), "\"by\" moves from the value when the tween begins; with \"from\", give \"to\"");
         if (has_by && prop.type == ScenePropertyType::color)
             fail(child(p, "by"), "a colour cannot move by an amount (property \"" + prop.name + "\" is a color): give \"to\"");
+        if (has_by && prop.type == ScenePropertyType::quat)
+            fail(child(p, "by"), "a quaternion cannot move by an amount (property \"" + prop.name + "\" is a quat): give \"to\"");
         tw.mode = has_from ? ValueMode::from_to : has_by ? ValueMode::relative : ValueMode::from_current;
         if (has_from) tw.from = read_value(o["from"], child(p, "from"), prop.type);
         else tw.from = prop.value;  // unused; of the property's type
