@@ -4,6 +4,7 @@
 #include "demo_track3.hpp"
 
 #include <grape/path3.hpp>
+#include <grape/view3.hpp>
 
 #include <algorithm>
 #include <array>
@@ -16,15 +17,9 @@ namespace {
 
 // Oblique projection, z up: x to the right, y receding at 40° above the horizontal at 0.8 scale
 // (steeper than cabinet, so that the helix's turns stand apart).
-constexpr double recede = 0.8;
-const double recede_x = recede * std::cos(40.0 * pi / 180.0);
-const double recede_y = recede * std::sin(40.0 * pi / 180.0);
+const View3 view = View3::oblique(40.0 * pi / 180.0, 0.8);
 
-Vec2 project3(Vec3 p) { return {p.x + recede_x * p.y, -(p.z + recede_y * p.y)}; }
-
-// What projects to a point: the viewer looks along +receding, so faces whose normal points the
-// other way are seen from their front.
-Vec3 view_direction3() { return {-recede_x, 1.0, -recede_y}; }
+Vec2 project3(Vec3 p) { return view.project(p).point; }
 
 Path3 demo_track() {
     // One and a quarter turns up a helix about z, then an S-bend in the plane of its end
@@ -82,8 +77,8 @@ Canvas track3_picture(std::string& figures) {
                 const Vec3 middle = (point + last_point) * 0.5;
                 ribbons[m].push_back({{project3(last_point + last_side * half_width), project3(point + side * half_width),
                                        project3(point - side * half_width), project3(last_point - last_side * half_width)},
-                                      dot(middle, view_direction3()),
-                                      dot(normal, view_direction3()) < 0.0});
+                                      view.project(middle).depth,
+                                      dot(normal, view.view_direction(middle)) < 0.0});
             }
             last_point = point;
             last_side = side;
