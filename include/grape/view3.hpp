@@ -9,7 +9,7 @@
 
 namespace grape {
 
-/// \addtogroup core
+/// \addtogroup math
 /// @{
 
 /// Where a world point lands on the picture plane.
