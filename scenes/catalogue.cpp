@@ -71,7 +71,7 @@ std::vector<Entry> build() {
     for (const char* file : {"seed_spiral.json", "seed_complex.json", "seed_bezier.json", "seed_splines.json",
                              "seed_nested_complex.json", "seed_parabola.json", "pendulum_chain.json",
                              "timeline_cutscene.json", "sprite_track.json", "typed_values.json", "camera_rail3d.json",
-                             "coaster_banked.json"})
+                             "coaster_banked.json", "glider_keys.json"})
         all.push_back({.name = file, .category = Category::scene_file, .summary = "scene file scenes/" + std::string(file),
                        .file = file});
 

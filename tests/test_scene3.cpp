@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -197,10 +198,58 @@ TEST(Scene3Files, CoasterBanksAndRolls) {
     EXPECT_EQ(timing.animation3_driver(stunt), -1);
 }
 
+// Orientation keys (scenes/glider_keys.json): the orientation is the keyed pose where the arc
+// length reaches a key, a C² spline between (against QuatSpline built here from the file's
+// numbers), constant outside the keys, and the position is the reparametrized path's point.
+TEST(Scene3Motion, OrientationKeysAreHitAtTheirArcLengths) {
+    const Scene scene = grape::load_scene_file(scenes_dir / "glider_keys.json");
+    const grape::SceneAnimation3& glider = scene.animations3.at(0);
+    ASSERT_TRUE(glider.keyed());
+    EXPECT_EQ(glider.align, Align3::none);
+    const SceneMotion3 m(glider);
+    EXPECT_TRUE(m.writes_orientation());
+    const double L = glider.path.length();
+    // The keys as the file writes them (docs: quaternions evaluated normalized).
+    const std::vector<double> s{0, 30, 60, 90, 120};
+    const std::vector<Quat> q{{0.98753537156, 0.007468793718, -0.049417957074, 0.149251373721},
+                              {0.963212416459, -0.238228008618, -0.096867373561, 0.078012618394},
+                              {0.934533169993, 0.294283380407, -0.035287559622, -0.196976735519},
+                              {0.764652135105, 0.309161527024, -0.154623960445, -0.543891251395},
+                              {0.529797130725, 0.116524770756, -0.043488325902, -0.838955149925}};
+    ASSERT_GT(L, 120.0);  // every key lies on the path
+    // The angle between two orientations from the chord between unit quaternions (q and −q
+    // alike): 4·asin(|a ∓ b|/2), accurate near 0 (acos of the dot product is not: one ulp of it
+    // is 3e-8 rad there).
+    const auto angle = [](Quat a, Quat b) {
+        const auto chord = [](Quat u, Quat v) {
+            return std::sqrt((u.w - v.w) * (u.w - v.w) + (u.x - v.x) * (u.x - v.x) + (u.y - v.y) * (u.y - v.y) +
+                             (u.z - v.z) * (u.z - v.z));
+        };
+        const double c = std::min(chord(a, b), chord(a, Quat{-b.w, -b.x, -b.y, -b.z}));
+        return 4.0 * std::asin(std::min(1.0, 0.5 * c));
+    };
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        // In speed mode the path played is reparametrized: arc length s at u = s / L, within
+        // the reparametrization's 1e-9·L; the spline turns below 0.1 rad per unit, so 1e-7 rad.
+        EXPECT_LT(angle(m.orientation_at(s[k] / L, false), grape::normalized(q[k])), 1e-7) << k;
+    }
+    const grape::QuatSpline spline(s, q);
+    const Path3 played = glider.path.reparametrized();
+    for (int i = 0; i <= 50; ++i) {
+        const double p = i / 50.0;
+        EXPECT_LT(angle(m.orientation_at(p, i % 2 == 0), spline.orientation(played.length_at(p))), 1e-12) << p;
+        EXPECT_LT(grape::distance(m.position_at(p), played.point(p)), 1e-12) << p;
+    }
+    // Past the last key (s = 120 < L) the pose holds.
+    EXPECT_LT(angle(m.orientation_at(1.0, false), grape::normalized(q.back())), 1e-12);
+    // The chase camera is an ordinary frame-aligned animation beside it.
+    EXPECT_FALSE(scene.animations3.at(1).keyed());
+}
+
 // save → load → save gives the same text, for the example scenes and a scene with every 3-D
 // path kind the format has and every field of a 3-D animation.
 TEST(Scene3Files, SaveLoadSaveIsBitForBit) {
-    for (const char* file : {"camera_rail3d.json", "coaster_banked.json"}) {
+    for (const char* file : {"camera_rail3d.json", "coaster_banked.json", "glider_keys.json"}) {
         const std::string once = grape::save_scene(grape::load_scene_file(scenes_dir / file));
         EXPECT_EQ(grape::save_scene(grape::load_scene(once)), once) << file;
     }
@@ -230,13 +279,15 @@ TEST(Scene3Files, SaveLoadSaveIsBitForBit) {
        "bank": {"speed": 3, "gravity": 1.62, "max_angle": 0.5, "smoothing": 0.25, "samples": 65}},
       {"name": "b", "path": {"kind": "line", "points": [[0, 0, 0], [0, 0, 5]]}, "speed": 0.3, "align": "world"},
       {"name": "c", "path": "cx", "duration": 2, "align": "frame", "frame": {"mode": "frenet"}},
-      {"name": "d", "path": "c", "duration": 2, "align": "frame", "roll": [[0, 0.1], [3.3, -1]]}
+      {"name": "d", "path": "c", "duration": 2, "align": "frame", "roll": [[0, 0.1], [3.3, -1]]},
+      {"name": "e", "path": "l", "duration": 2, "align": "keys", "offset": [0.5, 0],
+       "orientation": [[0, [2, 0, 0, 0]], [1.5, [0.5, 0.5, -0.5, 0.5]], [3, [0, 0, 1e-3, 1]]]}
     ],
     "timelines": [{"name": "t", "children": [{"animation3": "c"}, {"animation3": "d", "at": "<"}]}]
     })";
     const Scene scene = grape::load_scene(every);
     EXPECT_EQ(scene.paths3.size(), 11u);
-    EXPECT_EQ(scene.animations3.size(), 4u);
+    EXPECT_EQ(scene.animations3.size(), 5u);
     const std::string once = grape::save_scene(scene);
     const Scene back = grape::load_scene(once);
     EXPECT_EQ(grape::save_scene(back), once);
@@ -333,6 +384,15 @@ TEST(Scene3Errors, NameThePointer) {
         {anim(R"("duration": 1, "align": "frame", "frame": {"mode": "up"}, "bank": {"speed": 1, "max_angle": 2})"),
          "/animations3/0/bank/max_angle", "π/2"},
         {anim(R"("duration": 1, "align": "frame", "roll": [[0, 1]], "bank": {"speed": 1})"), "/animations3/0/bank", "not both"},
+        {anim(R"("duration": 1, "align": "keys")"), "/animations3/0/align", "needs \"orientation\""},
+        {anim(R"("duration": 1, "orientation": [[0, [1, 0, 0, 0]]])"), "/animations3/0/orientation", "\"align\": \"keys\""},
+        {anim(R"("duration": 1, "align": "keys", "orientation": [])"), "/animations3/0/orientation", "1 to 65536"},
+        {anim(R"("duration": 1, "align": "keys", "orientation": [[0, [0, 0, 0, 0]]])"), "/animations3/0/orientation/0/1", "zero"},
+        {anim(R"("duration": 1, "align": "keys", "orientation": [[0, [1, 0, 0]]])"), "/animations3/0/orientation/0/1", "[w, x, y, z]"},
+        {anim(R"("duration": 1, "align": "keys", "orientation": [[1, [1, 0, 0, 0]], [1, [0, 1, 0, 0]]])"),
+         "/animations3/0/orientation/1/0", "increasing"},
+        {anim(R"("duration": 1, "align": "keys", "orientation": [[-1, [1, 0, 0, 0]]])"), "/animations3/0/orientation/0/0", "≥ 0"},
+        {anim(R"("duration": 1, "align": "keys", "orientation": [[0, [1, 0, 0, 0]]], "roll": [[0, 1]])"), "/animations3/0/roll", ""},
         {R"({"animations3": [{"path": )" + up_line + R"(, "duration": 1, "align": "frame", "frame": {"up": [0, 0, 2]}}]})",
          "/animations3/0/frame", ""},
         {R"({"animations3": [{"path": {"kind": "line", "points": [[1, 1, 1], [1, 1, 1]]}, "speed": 1}]})",

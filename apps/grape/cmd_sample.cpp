@@ -136,7 +136,7 @@ void run_sample(const SampleOptions& o) {
             const double progress = timing.animation3_progress(i, times[k]);
             out += (n || !named.empty() ? ", " : "") + nlohmann::json(scene.animations3[i].name).dump() + ": ";
             const std::string position = vec3_text(m.position_at(progress));
-            if (m.align() == Align3::none) {
+            if (!m.writes_orientation()) {
                 out += position;
             } else {
                 const Quat q = m.orientation_at(progress, timing.animation3_backward(i, times[k]));

@@ -18,6 +18,7 @@
 #include <grape/frames3.hpp>
 #include <grape/path3.hpp>
 #include <grape/quat.hpp>
+#include <grape/quat_spline.hpp>
 #include <grape/roll3.hpp>
 #include <grape/vec3.hpp>
 
@@ -55,6 +56,13 @@ struct SceneBank {
     std::size_t samples = 513;  ///< keys of the track, in [2, 2^20]
 };
 
+/// An orientation key of a 3-D animation (JSON "orientation": [[s, [w, x, y, z]], ...]): the
+/// target's orientation at arc length s of the path played.
+struct SceneOrientationKey {
+    double s = 0.0;  ///< arc length from the path's start: finite, ≥ 0, increasing along the keys
+    Quat q{};        ///< as written (finite, not zero); evaluated normalized
+};
+
 /// A 3-D animation: a 3-D path, a curve and its timing, the orientation written and offsets
 /// along the frame, as Engine::create_3d_animation plays them, plus an optional roll about the
 /// tangent (keys in arc length, or automatic banking) on top of the frame.
@@ -89,6 +97,14 @@ struct GRAPE_SCENE_API SceneAnimation3 {
     std::vector<RollKey> roll{};
     bool banked = false;       ///< automatic banking (`bank`) instead of roll keys; needs frame mode up
     SceneBank bank{};          ///< banking, when `banked`
+    /// Orientation keys (JSON "align": "keys"): the orientation itself, keyed by arc length and
+    /// joined by a C² QuatSpline (constant before the first key and after the last), in place
+    /// of a frame's; `align` is then Align3::none, the axes, face_travel and the roll do not
+    /// apply, and the offsets still follow the frame. Empty: the orientation follows `align`.
+    std::vector<SceneOrientationKey> orientation{};
+
+    /// True when the orientation comes from keys (`orientation` not empty).
+    bool keyed() const noexcept { return !orientation.empty(); }
 
     /// Seconds per play: path.length() / speed in speed mode, else duration.
     double seconds() const noexcept;
@@ -108,7 +124,7 @@ class GRAPE_SCENE_API SceneMotion3 {
 public:
     SceneMotion3() = default;
     /// Builds the tables. Throws grape::Error naming the field ("frame: up: ...", "bank: speed:
-    /// ...", "roll: ...") for what Frames3, RollTrack or bank_track refuse, and "speed" for a
+    /// ...", "roll: ...", "orientation: ...") for what Frames3, RollTrack or bank_track refuse, and "speed" for a
     /// path of length 0 in speed mode.
     explicit SceneMotion3(const SceneAnimation3& animation);
 
@@ -123,10 +139,13 @@ public:
     /// The orientation at curve progress p on a play running `backward`
     /// (SceneTiming::animation3_backward): the model's axes `forward` and `model_up` on the
     /// frame's tangent and normal (align frame) or upright (align world), turned by π about the
-    /// normal when face_travel and the play runs against the path's direction; the identity for
+    /// normal when face_travel and the play runs against the path's direction; the orientation
+    /// keys' spline at the arc length reached (keyed; `backward` unused); the identity for
     /// align none.
     Quat orientation_at(double p, bool backward) const noexcept;
-    Align3 align() const noexcept { return align_; }  ///< the orientation written
+    Align3 align() const noexcept { return align_; }  ///< the orientation written (none when keyed)
+    /// True when an orientation is written: align frame or world, or orientation keys.
+    bool writes_orientation() const noexcept { return align_ != Align3::none || keys_; }
     const Path3& path() const noexcept { return path_; }  ///< the path played
 
 private:
@@ -139,6 +158,7 @@ private:
     std::array<std::int8_t, 3> pick_{1, 2, 3};  // model axis i takes ±(T, N, B)[|pick| − 1]
     std::shared_ptr<const Frames3> frames_;       // null when nothing needs a frame
     std::shared_ptr<const RolledFrames3> rolled_;  // null without roll or bank
+    std::shared_ptr<const QuatSpline> keys_;       // null without orientation keys
 };
 
 /// @}

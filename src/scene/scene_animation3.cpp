@@ -155,6 +155,38 @@ void read_roll3(const json& o, const std::string& p, SceneAnimation3& a) {
     }
 }
 
+// Orientation keys bound the spline's solve: O(n) a Newton step, at most QuatSpline::max_iterations.
+constexpr std::size_t max_orientation_keys = 65536;
+
+void read_orientation3(const json& o, const std::string& p, SceneAnimation3& a, bool keyed) {
+    const auto r = o.find("orientation");
+    if (r == o.end()) {
+        if (keyed) fail(child(p, "align"), "\"keys\" needs \"orientation\": [[s, [w, x, y, z]], ...]");
+        return;
+    }
+    const std::string rp = child(p, "orientation");
+    if (!keyed) fail(rp, "gives the orientation itself: it needs \"align\": \"keys\"");
+    if (!r->is_array() || r->empty() || r->size() > max_orientation_keys)
+        fail(rp, "expected an array of 1 to 65536 [s, [w, x, y, z]] keys, got " + type_of(*r));
+    for (std::size_t k = 0; k < r->size(); ++k) {
+        const std::string kp = child(rp, k);
+        const json& key = (*r)[k];
+        if (!key.is_array() || key.size() != 2) fail(kp, "expected a key [s, [w, x, y, z]], got " + type_of(key));
+        const double s = number(key[0], child(kp, 0));
+        if (s < 0.0) fail(child(kp, 0), "arc length must be ≥ 0 (got " + number_text(s) + ")");
+        if (!a.orientation.empty() && !(s > a.orientation.back().s))
+            fail(child(kp, 0), "keys must be in increasing arc length (" + number_text(s) + " after " +
+                                   number_text(a.orientation.back().s) + ")");
+        const json& q = key[1];
+        const std::string qp = child(kp, 1);
+        if (!q.is_array() || q.size() != 4) fail(qp, "expected a quaternion [w, x, y, z], got " + type_of(q));
+        const Quat value{number(q[0], child(qp, 0)), number(q[1], child(qp, 1)), number(q[2], child(qp, 2)),
+                         number(q[3], child(qp, 3))};
+        if (!(length(value) > 0.0) || !std::isfinite(length(value))) fail(qp, "must not be the zero quaternion");
+        a.orientation.push_back({s, value});
+    }
+}
+
 // Building the evaluator checks what only the path can tell (a frame's up along the tangent, a
 // path of length 0 in speed mode); its messages name the field, placed under the animation.
 void check_motion3(const SceneAnimation3& a, const std::string& p) {
@@ -164,7 +196,7 @@ void check_motion3(const SceneAnimation3& a, const std::string& p) {
         const std::string what = e.what();
         const std::size_t colon = what.find(": ");
         const std::string field = colon == std::string::npos ? std::string() : what.substr(0, colon);
-        for (const char* key : {"speed", "frame", "axes", "roll", "bank"})
+        for (const char* key : {"speed", "frame", "axes", "roll", "bank", "orientation"})
             if (field == key) fail(child(p, key), what.substr(colon + 2));
         fail(p, what);
     }
@@ -172,7 +204,7 @@ void check_motion3(const SceneAnimation3& a, const std::string& p) {
 
 SceneAnimation3 read_animation3(const json& j, const std::string& p, const Scene& scene) {
     const json& o = object(j, p, {"name", "path", "curve", "duration", "speed", "delay", "repeat", "yoyo", "reversed",
-                                  "repeat_delay", "range", "align", "frame", "axes", "face_travel", "offset", "roll", "bank"});
+                                  "repeat_delay", "range", "align", "frame", "axes", "face_travel", "offset", "roll", "bank", "orientation"});
     SceneAnimation3 a;
     a.name = name_field(o, p, nullptr);
     const json& path = required(o, p, "path");
@@ -205,8 +237,9 @@ SceneAnimation3 read_animation3(const json& j, const std::string& p, const Scene
             (k == 0 ? a.range_start : a.range_end) = u;
         }
     }
-    const std::string align = one_of(o, p, "align", "none", {"none", "frame", "world"});
+    const std::string align = one_of(o, p, "align", "none", {"none", "frame", "world", "keys"});
     a.align = align == "frame" ? Align3::frame : align == "world" ? Align3::world : Align3::none;
+    read_orientation3(o, p, a, align == "keys");
     read_frame3(o, p, a);
     if (const auto ax = o.find("axes"); ax != o.end()) {
         const std::string ap = child(p, "axes");
@@ -284,7 +317,7 @@ ordered animations3_json(const Scene& scene) {
         o["reversed"] = a.reversed;
         if (a.repeat_delay != 0.0) o["repeat_delay"] = a.repeat_delay;
         if (a.range_start != 0.0 || a.range_end != 1.0) o["range"] = {a.range_start, a.range_end};
-        o["align"] = align3_name(a.align);
+        o["align"] = a.keyed() ? "keys" : align3_name(a.align);
         ordered frame = {{"mode", frame_mode_name(a.frame)}, {"up", vec3_json(a.up)}};
         if (a.frame == SceneFrameMode::up) frame["cone"] = a.cone;
         o["frame"] = std::move(frame);
@@ -296,6 +329,11 @@ ordered animations3_json(const Scene& scene) {
             ordered keys = ordered::array();
             for (const RollKey& k : a.roll) keys.push_back({k.s, k.roll});
             o["roll"] = std::move(keys);
+        }
+        if (a.keyed()) {
+            ordered keys = ordered::array();
+            for (const SceneOrientationKey& k : a.orientation) keys.push_back({k.s, {k.q.w, k.q.x, k.q.y, k.q.z}});
+            o["orientation"] = std::move(keys);
         }
         if (a.banked)
             o["bank"] = {{"speed", a.bank.speed}, {"gravity", a.bank.gravity}, {"max_angle", a.bank.max_angle},

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace grape {
 
@@ -90,6 +91,23 @@ SceneMotion3::SceneMotion3(const SceneAnimation3& a) {
         throw Error(std::string(a.banked ? "bank" : "roll") + ": rolls the frame the target is turned by: it needs \"align\": \"frame\"");
     if (a.banked && a.frame != SceneFrameMode::up)
         throw Error("bank: banking tilts an upright frame: it needs \"frame\": {\"mode\": \"up\"}");
+    if (a.keyed()) {
+        if (a.align != Align3::none) throw Error("orientation: keys give the orientation themselves: they need \"align\": \"keys\"");
+        if (rolled) throw Error(std::string(a.banked ? "bank" : "roll") + ": rolls a frame, and orientation keys replace it");
+        std::vector<double> at;
+        std::vector<Quat> q;
+        at.reserve(a.orientation.size());
+        q.reserve(a.orientation.size());
+        for (const SceneOrientationKey& k : a.orientation) {
+            at.push_back(k.s);
+            q.push_back(k.q);
+        }
+        try {
+            keys_ = std::make_shared<const QuatSpline>(std::move(at), std::move(q));
+        } catch (const Error& e) {
+            throw Error(std::string("orientation: ") + e.what());
+        }
+    }
     if (!(a.align == Align3::frame || a.normal_offset != 0.0 || a.binormal_offset != 0.0 || rolled)) return;
     try {
         frames_ = std::make_shared<const Frames3>(path_, a.motion().frames);
@@ -136,8 +154,10 @@ Vec3 SceneMotion3::position_at(double p) const noexcept {
 }
 
 Quat SceneMotion3::orientation_at(double p, bool backward) const noexcept {
-    if (align_ == Align3::none) return Quat{};
     const double at = u_at(p);
+    // The path played has the length of the path written (reparametrizing keeps it).
+    if (keys_) return keys_->orientation(path_.length_at(at));
+    if (align_ == Align3::none) return Quat{};
     Vec3 tangent, normal, binormal;
     if (align_ == Align3::frame) {
         const Frame3 fr = rolled_ ? rolled_->frame(at) : frames_->frame(at);
