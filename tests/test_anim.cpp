@@ -298,6 +298,55 @@ TEST(Engine, ReversedPlaysTheSameStatesBackwards) {
     }
 }
 
+// Running back with reverse(): on_reverse_complete fires once at the first play's start, also
+// when a tick lands exactly on it (0.5 s forward, then 0.25 + 0.25 s back: both exact in
+// binary), and again after running forward and back a second time.
+TEST(Engine, ReverseCompleteFiresWhenATickLandsExactlyOnTheStart) {
+    const auto bez = unit_bezier();
+    Engine engine;
+    Point p;
+    int back = 0;
+    Animation a = engine.create_2d_animation(p, bez, 1.0);
+    a.on_reverse_complete([&] { ++back; });
+    engine.tick(0.5);
+    a.reverse();
+    engine.tick(0.25);
+    EXPECT_EQ(back, 0);
+    engine.tick(0.25);
+    EXPECT_EQ(back, 1);
+    EXPECT_EQ(p.x, bez.point(0.0).x);
+    EXPECT_EQ(p.y, bez.point(0.0).y);
+    engine.tick(0.25);  // held at the start: no second event
+    EXPECT_EQ(back, 1);
+    EXPECT_TRUE(a.alive());
+    a.play();
+    engine.tick(0.5);
+    a.reverse();
+    engine.tick(0.125);
+    engine.tick(0.375);
+    EXPECT_EQ(back, 2);
+
+    // Many alike records go through the engine's lean runs (four at a time where the CPU has
+    // the lanes): each fires once all the same.
+    Engine many;
+    std::vector<Point> points(600);  // more than the lanes look ahead (hot_ahead, 256)
+    std::vector<int> fired(points.size(), 0);
+    std::vector<Animation> all;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        all.push_back(many.create_2d_animation(points[i], bez, 1.0));
+        all.back().on_reverse_complete([&fired, i] { ++fired[i]; });
+    }
+    many.tick(0.5);
+    for (const Animation& r : all) r.reverse();
+    many.tick(0.25);
+    many.tick(0.25);
+    many.tick(0.25);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        EXPECT_EQ(fired[i], 1) << i;
+        EXPECT_EQ(points[i].x, bez.point(0.0).x) << i;
+    }
+}
+
 TEST(Engine, YoyoAndLoopsAcrossOneLargeTick) {
     const auto bez = unit_bezier();
     Engine engine;

@@ -87,7 +87,8 @@ inline bool EngineImpl::plain_advance(Hot* hot, Cold* cold, std::size_t i, doubl
     Hot& h = hot[i];
     double phase = h.phase + dt * h.rate;
     if ((h.flags & (flag_paused | flag_dead | flag_custom)) || !(phase >= 0.0) || !h.target ||
-        (h.phase < 0.0 && (h.flags & flag_listens)))  // the first play begins: on_start
+        (h.phase < 0.0 && (h.flags & flag_listens)) ||  // the first play begins: on_start
+        (phase == 0.0 && h.rate < 0.0))  // back at the start: on_reverse_complete
         return false;
     if (phase1 && curve_kind(h) == CurveKind::function) return false;  // user code: the calling thread
     if (phase >= play_end) {

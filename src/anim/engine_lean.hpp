@@ -84,8 +84,9 @@ inline bool lean_step(Hot& h, const LineFast* lines, const PathFast* fast, doubl
     constexpr std::uint16_t want = run_want<K, lane_kernel(P), F>;
     const double phase = h.phase + dt * h.rate;
     // started before this tick and still inside the play (either way: the rate is < 0
-    // when reversed at run time)
-    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || !(phase < play_end))
+    // when reversed at run time); landing back on 0 is reaching the start (on_reverse_complete)
+    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || (phase == 0.0 && h.rate < 0.0) ||
+        !(phase < play_end))
         return false;
     const double u = detail::ease_formula(K, (h.flags & flag_backward) ? 1.0 - phase : phase);
     if constexpr (!stays_on_path(K))

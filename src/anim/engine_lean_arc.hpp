@@ -56,7 +56,8 @@ inline bool arc_advance(Hot* hot, const ArcFast* arcs, const Cold* cold, std::si
     Hot& h = hot[i];
     double phase = h.phase + dt * h.rate;
     // the arc lane kernel in `want`: the path has a table (reparametrized kernels exist only with one)
-    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0)) return false;
+    if ((kind_and_flags(h) & lean_mask) != want || !(std::min(h.phase, phase) >= 0.0) || (phase == 0.0 && h.rate < 0.0))
+        return false;  // landing back on 0 is reaching the start: the general path's
     std::uint8_t flags = h.flags;
     const bool loops = !(phase < play_end);
     if (loops) {

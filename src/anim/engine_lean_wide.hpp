@@ -158,7 +158,9 @@ GRAPE_AVX2 inline bool lanes_step(const Hot* h, const LaneConsts& c, __m256d& ph
     const __m256i kind_ok = _mm256_cmpeq_epi64(_mm256_and_si256(q.rest, c.flags_mask), c.flags_want);
     // min(phase before, after) ≥ 0 as lean_step has it: both ≥ 0 (a NaN fails either way)
     const __m256d started = _mm256_and_pd(_mm256_cmp_pd(q.phase, c.zero, _CMP_GE_OQ), _mm256_cmp_pd(phase, c.zero, _CMP_GE_OQ));
-    const __m256d inside = _mm256_and_pd(started, _mm256_cmp_pd(phase, c.end, _CMP_LT_OQ));
+    // and not landing back on 0 (phase > 0 or rate ≥ 0): reaching the start is the general path's
+    const __m256d not_home = _mm256_or_pd(_mm256_cmp_pd(phase, c.zero, _CMP_GT_OQ), _mm256_cmp_pd(q.rate, c.zero, _CMP_GE_OQ));
+    const __m256d inside = _mm256_and_pd(_mm256_and_pd(started, not_home), _mm256_cmp_pd(phase, c.end, _CMP_LT_OQ));
     const __m256d ok = _mm256_and_pd(inside, _mm256_castsi256_pd(kind_ok));
     if (_mm256_movemask_pd(ok) != 0xF) return false;
     // 1 − phase where the play runs backward: the flag's bit moved to the sign, which blendv reads

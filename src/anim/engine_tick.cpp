@@ -238,7 +238,8 @@ void EngineImpl::advance_back(std::uint32_t dense, double phase) {
     Hot& h = hot_[dense];
     Cold& c = cold_[dense];
     if (h.phase < 0.0) return;  // reversed inside its delay: it waits
-    if (phase >= 0.0) {
+    // Landing exactly on the first play's start is reaching it (below), not a phase of 0.
+    if (phase > 0.0 || (phase == 0.0 && c.play() != 0)) {
         h.phase = phase;
         write_state(dense);
         return;
