@@ -76,6 +76,15 @@ bad_view)
     grep -qF "render: --view: " "$work/err" && grep -qF "has no 3-D paths or animations (paths3, animations3) to project" "$work/err" ||
         fail "a 2-D scene with --view: stderr is '$(cat "$work/err")'"
     ;;
+long_paths)
+    # A helix of 10⁵ turns of radius 10 is 6.3·10⁶ long: on a 640×480 picture of its 20 × 20 ×
+    # 100 box it is far over the budget of 10⁶ output units, refused before it is flattened.
+    printf '{"grape_scene": 1, "paths3": [{"name": "coil", "path": {"kind": "helix", "center": [0, 0, 0], "axis": [0, 0, 1], "start": [1, 0, 0], "radius": 10, "rise_per_turn": 0.001, "turns": 100000}}]}\n' >"$work/coil.json"
+    "$grape" render "$work/coil.json" -o "$work/coil.png" --view perspective >"$work/out" 2>"$work/err"
+    [ $? = 2 ] || fail "the coil was not refused"
+    grep -qF "units long on the picture (3-D path 'coil': " "$work/err" || fail "stderr is '$(cat "$work/err")'"
+    [ ! -e "$work/coil.png" ] || fail "a picture was written"
+    ;;
 *)
     fail "unknown case $case_name"
     ;;
