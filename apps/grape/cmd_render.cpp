@@ -9,6 +9,7 @@
 #include "atomic_file.hpp"
 #include "progress.hpp"
 #include "scene_draw.hpp"
+#include "scene_draw3.hpp"
 #include "scene_player.hpp"
 #include "render_sprites.hpp"
 
@@ -54,6 +55,8 @@ struct RenderOptions {
     bool force = false;
     bool strict = false;  // the scene's warnings are errors
     double simulation_budget = max_simulation_work;
+    std::string view;  // --view SPEC ("": oblique, for a scene with 3-D content)
+    bool view_given = false;
 };
 
 
@@ -116,7 +119,10 @@ void run_render(const RenderOptions& o) {
     std::error_code ec;
     if (std::filesystem::is_directory(out, ec)) throw Error("cannot write " + o.out + ": it is a folder");
     current_activity() = "reading " + o.scene;
+    const ViewSpec view_spec = o.view_given ? parse_view_spec(o.view) : ViewSpec{};
     const Scene scene = load_scene_file(o.scene);
+    if (o.view_given && !has_3d_content(scene))
+        throw Error("render: --view: " + o.scene + " has no 3-D paths or animations (paths3, animations3) to project");
     report_scene_warnings(scene, o.scene, o.strict);
     load_sprite_pictures(scene);
     const int frames = o.frames_given ? o.frames : 1;
@@ -143,14 +149,25 @@ void run_render(const RenderOptions& o) {
     for (const NamedPath& p : scene.paths) count(p.path, "path '" + p.name + "'");
     for (std::size_t i = 0; i < scene.animations.size(); ++i)
         if (scene.animations[i].path_name.empty()) count(scene.animations[i].path, "the path of animation " + std::to_string(i));
+    // The 3-D paths count at the most their projection can stretch them on the picture.
+    std::unique_ptr<Scene3Picture> picture3;
+    if (has_3d_content(scene)) {
+        picture3 = std::make_unique<Scene3Picture>(scene, view_spec, scene.view.width, scene.view.height);
+        drawn += picture3->drawn_length_bound(longest, longest_name);
+    }
     if (drawn > max_drawn_length && !o.force)
         throw Error("render: the scene's paths are " + format("%.3g", drawn) + " units long on the picture (" + longest_name +
                     ": " + format("%.3g", longest) + "), more than the budget of " + format("%.0g", max_drawn_length) +
                     " units a picture (use --force to render them anyway)");
 
+    if (picture3) {
+        current_activity() = "projecting the 3-D paths of " + o.scene;
+        picture3->prepare();
+    }
+
     if (o.frames_given && ext == ".svg") {
         current_activity() = "building the animated SVG " + o.out;
-        detail::write_file_atomically(out, scene_animated_svg(scene, world, o.time, frames, o.fps));
+        detail::write_file_atomically(out, scene_animated_svg(scene, world, o.time, frames, o.fps, picture3.get()));
         std::cout << "wrote " << out.string() << " (" << frames << " frames at " << o.fps << " fps, animated SVG)\n";
         return;
     }
@@ -167,6 +184,7 @@ void run_render(const RenderOptions& o) {
                              format("%.0f", scene.view.height) + ")";
         Canvas canvas(scene.view.width, scene.view.height);
         draw_scene(canvas, scene, world, player);
+        if (picture3) picture3->draw(canvas, player.timing(), t);
         // A single picture replaces its file only when complete (an old one survives a failure).
         // A frame is registered once written: one that fails leaves what was at its name (an
         // interruption while it is written removes its temporary, never the file it would replace).
@@ -218,6 +236,13 @@ void register_render_command(CLI::App& app) {
     cmd->add_option("--simulation-budget", options->simulation_budget,
                     "Force evaluations × (particles + constraints) the scene's simulations may take, counted before "
                     "they run (default 5e7, about 10 s; --force lifts the budget)");
+    cmd->add_option_function<std::string>(
+        "--view", [options](const std::string& v) { options->view = v, options->view_given = true; },
+        "How the scene's 3-D paths and animations are projected: oblique[:ANGLE_DEG,RECEDE] (the y axis receding "
+        "at ANGLE_DEG above the horizontal, scaled by RECEDE in (0, 1]; default oblique:40,0.8, also used without "
+        "--view) or perspective[:AZIMUTH_DEG,ELEVATION_DEG[,FOV_DEG]] (a camera orbiting the 3-D content's centre "
+        "at a distance that fits it; default perspective:-60,30,45; elevation in [-89, 89], field of view in "
+        "[5, 120]). 2-D content is drawn as without it");
     cmd->add_flag("--strict", options->strict,
                   "Refuse a scene that loads with warnings (SVG path data with a syntax error, read by SVG's error "
                   "rule) instead of printing them on stderr and rendering");

@@ -1,6 +1,6 @@
 // The demo's pictures (`grape demo`, render module): every path kind, the seed's splines,
 // the arc-length comparison, the complex paths, a tile-sheet sprite, the parabola and a 3-D
-// track with its frames. The scenes come from the catalogue by name (scenes/catalogue.hpp),
+// track with its frames, a banked coaster and a camera rail. The scenes come from the catalogue by name (scenes/catalogue.hpp),
 // as the tests take them.
 #include "commands.hpp"
 
@@ -10,6 +10,7 @@
 #include <grape/sprite.hpp>
 
 #include "catalogue.hpp"
+#include "demo_rides3.hpp"
 #include "demo_track3.hpp"
 #include "scene_draw.hpp"
 #include "seed_paths.hpp"
@@ -245,6 +246,20 @@ void demo_pictures(const DemoContext& context) {
         std::string figures;
         const Canvas canvas = track3_picture(figures);
         save(canvas, "track3d.png", "3-D track: RMF and Frenet ribbons", figures);
+    }
+
+    // 8. A coaster with a loop, banked for its speed by bank_track: the rolled ribbon.
+    {
+        std::string figures;
+        const Canvas canvas = coaster_picture(figures);
+        save(canvas, "coaster3d.png", "3-D coaster: banked for 12 units/s", figures);
+    }
+
+    // 9. A camera on a rail: its frames along the rail, and what it sees from one of them.
+    {
+        std::string figures;
+        const Canvas canvas = camera_rail_picture(figures);
+        save(canvas, "camera_rail3d.png", "3-D camera rail and its view", figures);
     }
 
     std::ostream& out = context.out;

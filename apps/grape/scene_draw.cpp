@@ -2,6 +2,7 @@
 
 #include "render_properties.hpp"
 #include "render_sprites.hpp"
+#include "scene_draw3.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -173,18 +174,31 @@ void draw_scene(Canvas& canvas, const Scene& scene, const Bounds& world, const S
     canvas.text({10, canvas.height() - 10}, format("t = %.3f s", player.time()), {.color = colors::grey, .size = 11});
 }
 
-std::string scene_animated_svg(const Scene& scene, const Bounds& world, double t0, int frames, double fps) {
+std::string scene_animated_svg(const Scene& scene, const Bounds& world, double t0, int frames, double fps,
+                               const Scene3Picture* picture3) {
     const Affine t = fit(world, {0, 0, scene.view.width, scene.view.height}, 30);
     std::vector<Path> paths;
     for (const NamedPath& p : scene.paths) paths.push_back(p.path);
     for (const SceneAnimation& a : scene.animations)
         if (a.path_name.empty()) paths.push_back(a.path);
+    // The 3-D picture is in output units: back to the 2-D world's through the fit (a uniform
+    // scale and a move).
+    const auto world_of = [&t](Vec2 q) { return Vec2{(q.x - t.x0) / t.xx, (q.y - t.y0) / t.yy}; };
+    if (picture3)
+        for (const auto& line : picture3->polylines()) {
+            std::vector<Vec2> points;
+            for (Vec2 q : line) points.push_back(world_of(q));
+            if (points.size() >= 2) paths.push_back(LinearSplinePath(points));
+        }
     std::vector<SvgMover> movers;
     for (std::size_t i = 0; i < scene.animations.size(); ++i)
         movers.push_back({.color = palette_color(i + 1), .label = scene.animations[i].name});
     for (std::size_t i = 0; i < scene.simulations.size(); ++i)
         for (std::size_t k = 0; k < scene.simulations[i].particles.size(); ++k)
             movers.push_back({.color = palette_color(i), .label = scene.simulations[i].name});
+    if (picture3)
+        for (std::size_t i = 0; i < scene.animations3.size(); ++i)
+            movers.push_back({.color = follower_colour(i), .label = scene.animations3[i].name});
     ScenePlayer player(scene);
     for (int f = 0; f < frames; ++f) {
         player.advance_to(t0 + f / fps);
@@ -192,6 +206,9 @@ std::string scene_animated_svg(const Scene& scene, const Bounds& world, double t
         for (std::size_t i = 0; i < scene.animations.size(); ++i) movers[m++].positions.push_back(player.animation_position(i));
         for (std::size_t i = 0; i < scene.simulations.size(); ++i)
             for (Vec2 p : player.particle_positions(i)) movers[m++].positions.push_back(p);
+        if (picture3)
+            for (std::size_t i = 0; i < scene.animations3.size(); ++i)
+                movers[m++].positions.push_back(world_of(picture3->follower(player.timing(), i, player.time())));
     }
     return animated_svg(scene.view.width, scene.view.height, t, paths, palette, movers, frames / fps, scene.name);
 }

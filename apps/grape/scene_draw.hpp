@@ -13,6 +13,8 @@
 
 namespace grape::tool {
 
+class Scene3Picture;
+
 /// Colour i of the palette the scene's paths and animations cycle through.
 Color palette_color(std::size_t i);
 
@@ -28,7 +30,9 @@ Bounds scene_bounds(const Scene& scene, double t_end);
 void draw_scene(Canvas& canvas, const Scene& scene, const Bounds& world, const ScenePlayer& player);
 
 /// The animated SVG of `frames` frames from scene time t0 at `fps`: the paths once, every
-/// animation and particle as a marker stepping through its positions.
-std::string scene_animated_svg(const Scene& scene, const Bounds& world, double t0, int frames, double fps);
+/// animation and particle as a marker stepping through its positions; with PICTURE3 (prepared)
+/// the 3-D paths as their projected polylines and the 3-D followers as markers too.
+std::string scene_animated_svg(const Scene& scene, const Bounds& world, double t0, int frames, double fps,
+                               const Scene3Picture* picture3 = nullptr);
 
 }  // namespace grape::tool
