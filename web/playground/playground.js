@@ -563,17 +563,17 @@ function coasterDemo(g) {
   const track = g.Path3.catmullRom(knots.flat(), 'centripetal', true);
   const even = track.reparametrized();  // u proportional to arc length: the engine plays it as it is
   const length = even.length();
-  const center = (() => { const b = even.bounds(); return V((b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2, (b.min.z + b.max.z) / 2); })();
+  const center = (() => { const b = even.bounds(); return V((b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2, b.min.z + 4); })();  // aimed low: most of the track is near the ground
   const railUs = Float64Array.from({ length: 721 }, (_, i) => i / 720);
   const tieUs = Float64Array.from({ length: Math.round(length / 1.5) }, (_, i) => i / Math.round(length / 1.5));
   const engine = new g.Engine(0, 1);
   const select = $('coaster-mode');
   let frames = null, roll = null, rolled = null, rails = null, ties = null;
-  let azimuth = -1.1, elevation = 0.45, view = null, drag = null, time = 0;
+  let azimuth = -1.25, elevation = 0.38, view = null, drag = null, time = 0;
   const modes = { banked: 'reference_up', reference_up: 'reference_up', rmf: 'rmf', closed: 'closed', frenet: 'frenet' };
   function orbit() {
     if (view) view.delete();
-    view = g.View3.orbit(center, 70, azimuth, elevation, 0.75);
+    view = g.View3.orbit(center, 52, azimuth, elevation, 0.75);
   }
   function build() {
     for (const o of [frames, roll, rolled]) if (o) o.delete();
