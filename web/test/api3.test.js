@@ -173,7 +173,12 @@ test('grape-wasm 3-D API', async (t) => {
     const loop = g.Path3.catmullRom([0, 0, 0, 10, 0, 3, 10, 10, 0, 0, 10, 5], 'centripetal', true);
     const closed = new g.Frames3(loop, { mode: 'closed' });
     assert.ok(dist(closed.frame(0).normal, closed.frame(1).normal) <= 1e-8);
-    for (const o of [rmf, frenet, upright, helix, loop, closed]) o.delete();
+    // Mode ends: twisted so that the normal at u = 1 is endUp without its part along the
+    // tangent; there T = (0, ·, ·) so +x is already perpendicular (1e-8 rad, as above).
+    const ends = new g.Frames3(helix, { mode: 'ends', up: V(0, 0, 1), endUp: V(1, 0, 0) });
+    assert.ok(Math.abs(helix.tangent(1).x) <= 1e-15 && dist(ends.frame(1).normal, V(1, 0, 0)) <= 1e-8);
+    assert.ok(dist(ends.frame(0).normal, rmf.frame(0).normal) <= 1e-15 && ends.twist() !== 0);
+    for (const o of [rmf, frenet, upright, helix, loop, closed, ends]) o.delete();
   });
 
   await t.test('roll and bank: keys, linear fill, the banking formula', () => {
@@ -359,6 +364,10 @@ test('grape-wasm 3-D API', async (t) => {
     assert.throws(() => engine.add3(path, { speed: 0 }), Error);
     assert.throws(() => engine.add3(path, 1, {}, { align: 'sideways' }), /'align' must be none, frame or world/);
     assert.throws(() => engine.add3(path, 1, {}, { forward: '+w' }), /'forward' must be \+x/);
+    const frames = new g.Frames3(path);
+    assert.throws(() => engine.add3(path, { speed: 1 }, {}, { align: 'frame', sharedFrames: frames }),
+      /shared_frames must frame the path played \(in speed mode: path.reparametrized\(\)\)/);
+    frames.delete();
     engine.add3(path, 1);
     assert.throws(() => engine.add3(path, 1), /all 1 3-D slots are used/);
     assert.throws(() => engine.animation3(1), /no 3-D slot 1/);
