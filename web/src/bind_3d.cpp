@@ -167,6 +167,7 @@ FramesDef frames_def(const val& o) {
     def.mode = frame_mode(string_or(o, "mode", "rmf", where));
     def.up = vec3_or(o, "up", def.up, where);
     def.end_up = vec3_or(o, "endUp", def.end_up, where);
+    // An int field: whole numbers within ±10⁶ (a million turns is already no frame to look at).
     const double turns = number_or(o, "extraTurns", def.extra_turns, where);
     if (!(turns >= -1e6 && turns <= 1e6) || turns != std::floor(turns))
         throw Error("frames options: 'extraTurns' must be an integer within ±10⁶ (got " + detail::number_text(turns) + ")");
@@ -240,6 +241,7 @@ BankDef bank_def(const val& o) {
     def.max_angle = number_or(o, "maxAngle", def.max_angle, where);
     def.up = vec3_or(o, "up", def.up, where);
     def.smoothing = number_or(o, "smoothing", def.smoothing, where);
+    // BankDef's own range, checked here before the conversion to size_t.
     const double samples = number_or(o, "samples", double(def.samples), where);
     if (!(samples >= 2 && samples <= double(std::size_t{1} << 20)) || samples != std::floor(samples))
         throw Error("bank options: 'samples' must be an integer in [2, 2^20] (got " + detail::number_text(samples) + ")");
