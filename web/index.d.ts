@@ -137,6 +137,8 @@ export interface Animation extends Deletable {
   waiting(): boolean;
   paused(): boolean;
   value(): Vec2;
+  /** A 3-D animation's position (offsets included); {0, 0, 0} for others. */
+  value3(): Vec3;
   heading(): number;
   progress(): number;
   time(): number;
@@ -177,9 +179,21 @@ export interface Engine extends Deletable {
   clear(): void;
   onTick(listener: (dt: number) => void): number;
   removeTickListener(id: number): void;
+  /** A 3-D animation writing slot k = the returned index of positions3(): x, y, z at [7k, 7k + 2],
+   *  the orientation w, x, y, z at [7k + 3, 7k + 6]. `timing` is seconds per play or {speed}
+   *  (constant speed in units per second: plays the path reparametrized, length / speed per play);
+   *  the options' heading and offset are 2-D only and refused. */
+  add3(path: Path3, timing: number | { speed: number }, options?: AnimationOptions, motion?: Motion3Options): number;
+  /** The handle of 3-D slot k's animation (its value3() is the slot's position). */
+  animation3(slot: number): Animation;
+  /** x, y, z, w, qx, qy, qz of every used 3-D slot (7·used3() numbers, a view: see the note at the top). */
+  positions3(): Float64Array;
+  used3(): number;
+  capacity3(): number;
 }
 export interface EngineStatic {
-  new(capacity: number): Engine;
+  /** `capacity` 2-D slots and `capacity3` 3-D slots (default 0), fixed. */
+  new(capacity: number, capacity3?: number): Engine;
   bytesPerAnimation(): number;
 }
 
@@ -342,6 +356,250 @@ export interface TileSheetOptions {
 export interface TileSheet extends Deletable { width(): number; height(): number; frameCount(): number; frame(k: number): FrameRect; }
 export interface TileSheetStatic { new(options: TileSheetOptions): TileSheet; }
 
+// ---- 3-D (web/src/bind_3d.cpp) ------------------------------------------------------------
+
+/** A 3-D point or vector in world units (right-handed, z up for View3). */
+export interface Vec3 { x: number; y: number; z: number; }
+/** A quaternion w + xi + yj + zk; as an orientation a unit one, q and −q the same rotation. */
+export interface Quat { w: number; x: number; y: number; z: number; }
+/** Where a rotation takes the world axes (the columns of its matrix). */
+export interface Basis { x: Vec3; y: Vec3; z: Vec3; }
+/** A unit axis and an angle in [0, π] radians. */
+export interface AxisAngle { axis: Vec3; angle: number; }
+/** Three angles in radians, in the order of an EulerOrder name. */
+export interface EulerAngles { first: number; second: number; third: number; }
+/** Tait–Bryan orders, intrinsic: 'zyx' is yaw, pitch, roll about z, y, x. */
+export type EulerOrder = 'xyz' | 'xzy' | 'yxz' | 'yzx' | 'zxy' | 'zyx';
+export interface Bounds3 { min: Vec3; max: Vec3; }
+/** The nearest point of a 3-D path; no point of it is nearer than distance − gap. */
+export interface Closest3 { u: number; point: Vec3; distance: number; gap: number; }
+/** Frenet data at u: unit tangent, normal, binormal; curvature and torsion per world unit.
+ *  normalDefined is false where the curvature is 0 (the normal is then any perpendicular). */
+export interface Frenet3 {
+  point: Vec3; tangent: Vec3; normal: Vec3; binormal: Vec3; curvature: number; torsion: number; normalDefined: boolean;
+}
+/** A moving frame: unit tangent, normal ⟂ tangent, binormal = tangent × normal. */
+export interface Frame3 { point: Vec3; tangent: Vec3; normal: Vec3; binormal: Vec3; }
+
+/** 3-D path kinds as Path3.kind() names them. */
+export type Path3Kind = 'line' | 'quadratic_bezier' | 'cubic_bezier' | 'catmull_rom' | 'helix' | 'complex' | 'hermite' |
+  'linear_spline' | 'arc' | 'projectile' | 'on_plane' | 'reparametrized' | 'slice';
+
+/** Flat x, y, z triples. */
+export type Points3 = ArrayLike<number>;
+
+/** A 3-D path over u in [0, 1], an immutable value; extends along its end tangents outside [0, 1]. */
+export interface Path3 extends Deletable {
+  /** Position at u. */
+  point(u: number): Vec3;
+  /** dpoint/du, d²point/du², d³point/du³. */
+  d1(u: number): Vec3;
+  d2(u: number): Vec3;
+  d3(u: number): Vec3;
+  /** Unit tangent at u (never NaN: at zero speed the direction of d2, else d3). */
+  tangent(u: number): Vec3;
+  /** Tangent, normal, binormal, curvature and torsion at u (clamped to [0, 1]). */
+  frenet(u: number): Frenet3;
+  /** Arc length over [0, 1] (~1e-14 relative, or the closed form). */
+  length(): number;
+  /** Arc length over [0, u]. */
+  lengthAt(u: number): number;
+  /** The u where lengthAt(u) == s (s clamped to [0, length()]). */
+  uAtLength(s: number): number;
+  /** point(uAtLength(s)). */
+  pointAtLength(s: number): Vec3;
+  /** The u values, 0 and 1 included, where pieces meet (derivatives may jump there only). */
+  breaks(): Float64Array;
+  /** Tight axis-aligned box over [0, 1]. */
+  bounds(): Bounds3;
+  /** A polyline within `tolerance` of the path, as x, y, z triples. */
+  flatten(tolerance: number): Float64Array;
+  /** point(u) for each u, as x, y, z triples. */
+  sample(us: ArrayLike<number>): Float64Array;
+  /** The same shape at constant speed (arc length within 1e-9·length of exact). */
+  reparametrized(): Path3;
+  /** The part between u0 and u1 (0 ≤ u0 < u1 ≤ 1) as a path of its own. */
+  slice(u0: number, u1: number): Path3;
+  /** The globally nearest point to p (u in [0, 1]). */
+  closestPoint(p: Vec3): Closest3;
+  kind(): Path3Kind;
+  /** A complex path's parts (0 for other kinds). */
+  partCount(): number;
+  part(i: number): Path3;
+}
+
+/** An exact helix about `axis` through `center`, from center + radius·start, rising `rise` per turn. */
+export interface HelixOptions { center?: Vec3; axis?: Vec3; start?: Vec3; radius?: number; rise?: number; turns?: number; }
+/** An exact circular arc from startAngle (u = 0) to endAngle (u = 1), radians, counter-clockwise about `axis`. */
+export interface Arc3Options { center?: Vec3; axis?: Vec3; start?: Vec3; radius?: number; startAngle?: number; endAngle?: number; }
+
+export interface Path3Static {
+  /** A line of length 0 at the origin. */
+  new(): Path3;
+  line(a: Vec3, b: Vec3): Path3;
+  quadraticBezier(p0: Vec3, p1: Vec3, p2: Vec3): Path3;
+  cubicBezier(p0: Vec3, p1: Vec3, p2: Vec3, p3: Vec3): Path3;
+  /** Through ≥ 2 points (closed: ≥ 3, joined back to the first); type default 'uniform'. */
+  catmullRom(xyz: Points3, type?: 'uniform' | 'centripetal' | 'chordal', closed?: boolean): Path3;
+  /** Cubic Hermite through ≥ 2 points with one tangent per point (d/dt of each segment's t in [0, 1]). */
+  hermite(xyz: Points3, tangents: Points3, closed?: boolean): Path3;
+  linearSpline(xyz: Points3, closed?: boolean): Path3;
+  /** Defaults: centre 0, axis +z, start +x, radius 1, rise 0, one turn. */
+  helix(options: HelixOptions): Path3;
+  /** Defaults: centre 0, axis +z, start +x, radius 1, from 0 to 2π. */
+  arc(options: Arc3Options): Path3;
+  /** position + velocity·t + ½·acceleration·t², t = u·seconds. */
+  projectile(position: Vec3, velocity: Vec3, acceleration: Vec3, seconds: number): Path3;
+  /** A 2-D path on the plane origin + xAxis·x + yAxis·y (axes orthogonal, of equal length). */
+  onPlane(path: Path, origin: Vec3, xAxis: Vec3, yAxis: Vec3): Path3;
+  /** Part i spans u in [cues[i], cues[i+1]). */
+  complex(parts: Path3[], cues: ArrayLike<number>): Path3;
+  complexByLength(parts: Path3[]): Path3;
+  /** Cubic Béziers through sampled points, each within `tolerance` (default 1); corners kept
+   *  where chords turn by more than cornerAngle radians (default π/3). */
+  fit(xyz: Points3, options?: { tolerance?: number; cornerAngle?: number }): Path3;
+}
+
+/** Frame modes: rotation-minimizing from `up`; twisted to meet `endUp`; closed up on a loop;
+ *  world up with blends near the vertical (a camera, a coaster); Frenet. */
+export type FrameModeName = 'rmf' | 'ends' | 'closed' | 'reference_up' | 'frenet';
+/** How a Frames3 table is built (all optional; default an RMF from +z). */
+export interface FramesOptions {
+  mode?: FrameModeName;
+  /** The normal at u = 0 (rmf, ends, closed) or the world up (reference_up). */
+  up?: Vec3;
+  /** Mode ends: the normal at u = 1. */
+  endUp?: Vec3;
+  /** Modes ends and closed: whole turns of twist added (an integer, either sign). */
+  extraTurns?: number;
+  /** Mode reference_up: half-angle of the cone about ±up where the frame leaves the world up, radians in [0.05, 1.5]. */
+  cone?: number;
+  /** Radians over the whole path, in [1e-13, 0.1] (default 1e-9). */
+  tolerance?: number;
+}
+/** Frames along one path, built once; frame(u) is orthonormal within a few ulp. */
+export interface Frames3 extends Deletable {
+  /** The frame at u (clamped to [0, 1]). */
+  frame(u: number): Frame3;
+  /** The frame's rotation: +x to the tangent, +y to the normal, +z to the binormal. */
+  orientation(u: number): Quat;
+  /** Frames at many u: point, tangent, normal, binormal (12 numbers) per u. */
+  sample(us: ArrayLike<number>): Float64Array;
+  path(): Path3;
+  mode(): FrameModeName;
+  /** Modes ends and closed: the twist added from u = 0 to 1, radians; 0 otherwise. */
+  twist(): number;
+  /** Mode reference_up: stretches found inside the cone. */
+  coneCount(): number;
+  /** Arc length over [0, u] from the table (within ~1e-15 relative of Path3.lengthAt). */
+  lengthAt(u: number): number;
+}
+export interface Frames3Static { new(path: Path3, options?: FramesOptions): Frames3; }
+
+/** How a RollTrack fills between keys (all optional). */
+export interface RollOptions {
+  interpolation?: 'curves' | 'natural_spline' | 'clamped_spline';
+  /** Mode curves: one curve (name or Curve) per interval, or none for linear. */
+  curves?: (string | Curve)[];
+  /** Mode clamped_spline: droll/ds at the first and last keys, radians per world unit. */
+  startSlope?: number;
+  endSlope?: number;
+}
+/** Roll angles (radians) keyed by arc length; each key's roll exactly at its s, held outside the keys. */
+export interface RollTrack extends Deletable { rollAt(s: number): number; }
+export interface RollTrackStatic {
+  /** keys: flat s, roll pairs, s strictly increasing from ≥ 0. */
+  new(keys: ArrayLike<number>, options?: RollOptions): RollTrack;
+}
+/** Frames rolled about the tangent by a RollTrack (normal toward binormal for a positive roll). */
+export interface RolledFrames3 extends Deletable {
+  frame(u: number): Frame3;
+  /** The frame at arc length s (slower: a u_at_length solve). */
+  frameAtLength(s: number): Frame3;
+  /** The roll added at u, radians. */
+  roll(u: number): number;
+  orientation(u: number): Quat;
+  /** 12 numbers per u, as Frames3.sample. */
+  sample(us: ArrayLike<number>): Float64Array;
+}
+export interface RolledFrames3Static { new(frames: Frames3, roll: RollTrack): RolledFrames3; }
+/** Automatic banking: atan(v²κ/g) clamped to maxAngle (all optional). */
+export interface BankOptions {
+  /** v, units per second (default 10). */
+  speed?: number;
+  /** g, units per second² (default 9.81). */
+  gravity?: number;
+  /** Radians in [0, π/2] (default π/4). */
+  maxAngle?: number;
+  /** World up (default +z). */
+  up?: Vec3;
+  /** Arc length of the averaging window (default 0: none). */
+  smoothing?: number;
+  /** bankTrack: keys evenly spaced in arc length, ≥ 2 (default 513). */
+  samples?: number;
+}
+
+/** Where a world point lands: picture coordinates (y down), depth (larger is farther), and
+ *  false visible behind a perspective camera's near plane. */
+export interface Projected { point: Vec2; depth: number; visible: boolean; }
+/** A projection of 3-D points (z up) to an unscaled picture plane. */
+export interface View3 extends Deletable {
+  project(p: Vec3): Projected;
+  /** x, y, z triples in, x, y, depth triples out (x, y NaN where not visible). */
+  projectMany(xyz: Points3): Float64Array;
+  /** Unit direction from the viewer toward p. */
+  viewDirection(p: Vec3): Vec3;
+  /** The camera's position (perspective), or a point far back along the view (oblique). */
+  eye(): Vec3;
+  isPerspective(): boolean;
+}
+export interface View3Static {
+  /** oblique(40°, 0.8). */
+  new(): View3;
+  /** Parallel, z up: y recedes at `angle` radians, scaled by recede in (0, 1]. */
+  oblique(angle?: number, recede?: number): View3;
+  /** A camera at eye looking at target; a point at depth d and lateral offset h lands at h / (d·tan(fovY/2)). */
+  perspective(eye: Vec3, target: Vec3, up?: Vec3, fovY?: number): View3;
+  /** A camera orbiting target: azimuth about z from +x, elevation above the xy plane, radians. */
+  orbit(target: Vec3, distance: number, azimuth: number, elevation: number, fovY?: number): View3;
+}
+
+/** A C² orientation curve through keys at strictly increasing parameters (clamped outside). */
+export interface QuatSpline extends Deletable {
+  orientation(t: number): Quat;
+  /** World axes, radians per unit of t. */
+  angularVelocity(t: number): Vec3;
+  size(): number;
+  parameter(i: number): number;
+  /** Key i as held: normalized and turned to the side of key i − 1. */
+  key(i: number): Quat;
+  keyAngularVelocity(i: number): Vec3;
+  iterations(): number;
+}
+export interface QuatSplineStatic { new(params: ArrayLike<number>, keys: Quat[]): QuatSpline; }
+
+/** A model axis: forward and up of a 3-D animation's orientation. */
+export type Axis3Name = '+x' | '-x' | '+y' | '-y' | '+z' | '-z';
+/** How a 3-D animation turns its slot's orientation (all optional). */
+export interface Motion3Options {
+  /** none: identity; frame: the path's moving frame; world: upright (yaw only) about worldUp. */
+  align?: 'none' | 'frame' | 'world';
+  /** The frame for align frame and the offsets, built at creation on the path played. */
+  frames?: FramesOptions;
+  /** A Frames3 of the path played (the reparametrized one with {speed}), used instead of `frames`. */
+  sharedFrames?: Frames3;
+  worldUp?: Vec3;
+  /** The model's axis along the tangent (default '+z'). */
+  forward?: Axis3Name;
+  /** The model's axis on the frame's normal, ⟂ forward (default '+y'). */
+  up?: Axis3Name;
+  /** Turn by π about the normal on backward plays (default true). */
+  faceTravel?: boolean;
+  /** World units along the frame's normal and binormal. */
+  normalOffset?: number;
+  binormalOffset?: number;
+}
+
 export interface Grape {
   Path: PathStatic;
   ComplexPath: { prototype: ComplexPath };
@@ -363,6 +621,39 @@ export interface Grape {
   KeyState: KeyStateStatic;
   SpritePlayer: SpritePlayerStatic;
   TileSheet: TileSheetStatic;
+  Path3: Path3Static;
+  Frames3: Frames3Static;
+  RollTrack: RollTrackStatic;
+  RolledFrames3: RolledFrames3Static;
+  /** The bank at u, radians (positive leans into the curve on a frame whose normal is up). */
+  bankAngle(path: Path3, u: number, options: BankOptions): number;
+  /** A RollTrack of the bank at evenly spaced arc lengths: use it on reference_up frames with the same up. */
+  bankTrack(path: Path3, options?: BankOptions): RollTrack;
+  View3: View3Static;
+  QuatSpline: QuatSplineStatic;
+  /** The rotation by angle radians about axis (right-handed). */
+  quatFromAxisAngle(axis: Vec3, angle: number): Quat;
+  quatAxisAngle(q: Quat): AxisAngle;
+  /** The rotation taking the world axes to a right-handed orthonormal basis (within 1e-5). */
+  quatFromBasis(x: Vec3, y: Vec3, z: Vec3): Quat;
+  quatToBasis(q: Quat): Basis;
+  /** +x to the tangent, +y to the normal, +z to the binormal. */
+  quatFromFrame(frame: Frame3): Quat;
+  quatFromEuler(angles: EulerAngles, order: EulerOrder): Quat;
+  quatToEuler(q: Quat, order: EulerOrder): EulerAngles;
+  /** exp of half the rotation vector (axis × angle). */
+  quatFromRotationVector(r: Vec3): Quat;
+  quatRotationVector(q: Quat): Vec3;
+  /** (w, x, y, z) normalized; all zero or not finite throws. */
+  unitQuat(w: number, x: number, y: number, z: number): Quat;
+  /** The Hamilton product a·b: the rotation b, then a. */
+  quatMultiply(a: Quat, b: Quat): Quat;
+  quatConjugate(q: Quat): Quat;
+  quatNormalized(q: Quat): Quat;
+  /** v rotated by the unit quaternion q. */
+  quatRotate(q: Quat, v: Vec3): Vec3;
+  /** Shortest-arc slerp: the angle from a grows linearly in t. */
+  quatSlerp(a: Quat, b: Quat, t: number): Quat;
 }
 
 /** Loads the module: `const grape = await require('grape-wasm')();`. */

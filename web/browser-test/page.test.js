@@ -3,6 +3,8 @@
 //  - a scripted drag moves a Bézier control point and the marker follows the new shape;
 //  - 10 simulated seconds of the parabola give the figures `grape simulate parabola` prints;
 //  - the chain at 200 particles: the page's own frame-time counter, reported;
+//  - the 3-D coaster draws its track, its car rides the engine's slot in the banked frame, and
+//    dragging the view or choosing another frame mode changes the picture;
 //  - a screenshot for the guide (docs/images/web-playground.png).
 // Environment: CHROMIUM (default: chromium on PATH), GRAPE_TOOL (the native tool),
 // GRAPE_WEB_SHOTS (folder for screenshots, default build-web/browser-check).
@@ -72,11 +74,11 @@ test('the playground in chromium', { timeout: 180000 }, async (t) => {
         }
         return out;
       });
-      assert.deepStrictEqual(Object.keys(canvases).sort(), ['chain', 'keys', 'parabola', 'paths', 'sprites', 'svg']);
+      assert.deepStrictEqual(Object.keys(canvases).sort(), ['chain', 'coaster', 'keys', 'parabola', 'paths', 'sprites', 'svg']);
       // 0.2 %: the thinnest picture, a chain hanging at rest, covers about 0.5 % of its canvas.
       for (const [name, c] of Object.entries(canvases)) assert.ok(c.inked > 0.002, `${name} draws on ${(100 * c.inked).toFixed(2)} % of its canvas`);
       const hashes = new Set(Object.values(canvases).map((c) => c.hash));
-      assert.strictEqual(hashes.size, 6, 'six different pictures');
+      assert.strictEqual(hashes.size, 7, 'seven different pictures');
     });
 
     await t.test('dragging a control point moves the path and the marker follows', async () => {
@@ -155,6 +157,71 @@ test('the playground in chromium', { timeout: 180000 }, async (t) => {
       assert.ok(Number.isFinite(f.median) && f.median > 0);
       assert.ok(await page.evaluate(() => playground.chain.linkError()) < 1e-9, 'projection holds the links');
       await page.evaluate(() => playground.stop());
+    });
+
+    await t.test('the 3-D coaster: track drawn, car banked on the engine\'s slot, drag and frame mode change the picture', async () => {
+      // A hash of the coaster's pixels, and whether each sampled track point has ink within 2 px.
+      const picture = () => page.evaluate(() => {
+        const c = playground.coaster.canvas;
+        const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let hash = 2166136261;
+        for (let i = 0; i < data.length; i += 4) hash = Math.imul(hash ^ data[i] ^ (data[i + 1] << 8) ^ (data[i + 2] << 16) ^ (data[i + 3] << 24), 16777619);
+        const s = playground.coaster.state();
+        const onTrack = s.track.map(([x, y]) => {
+          let ink = false;
+          for (let dy = -2; dy <= 2; ++dy) for (let dx = -2; dx <= 2; ++dx) {
+            const px = Math.round(x) + dx, py = Math.round(y) + dy;
+            if (px >= 0 && py >= 0 && px < c.width && py < c.height && data[4 * (py * c.width + px) + 3] > 0) ink = true;
+          }
+          return ink;
+        });
+        return { hash: hash >>> 0, onTrack, state: s };
+      });
+      await page.evaluate(() => { playground.coaster.select('banked'); playground.coaster.pause(3.1); });
+      const before = await picture();
+      // The track lies inside the picture and every sampled vertex of a rail is inked (the rail
+      // is stroked 2.5 px wide through it: 2 px either side finds it).
+      assert.ok(before.onTrack.length >= 20, `${before.onTrack.length} of 24 track points in view`);
+      assert.ok(before.onTrack.every((x) => x), `track points without ink: ${before.onTrack.map((x, i) => x ? -1 : i).filter((i) => i >= 0)}`);
+      const s = before.state;
+      // The car is where the engine put it: the path at the animation's progress (the same
+      // evaluation: to rounding), and its banked axes are the rolled frame's (a product of two
+      // unit quaternions and a rotation: 1e-14).
+      assert.ok(Math.hypot(s.position.x - s.expected.x, s.position.y - s.expected.y, s.position.z - s.expected.z) <= 1e-12, 'car on the path');
+      assert.strictEqual(s.frameMode, 'reference_up');
+      assert.ok(Math.abs(s.roll) > 0.05, `banked by ${s.roll} rad at u ${s.u}`);
+      const axes = await page.evaluate(() => {
+        const g = playground.grape, s = playground.coaster.state();
+        return { n: g.quatRotate(s.orientation, { x: 0, y: 1, z: 0 }), t: g.quatRotate(s.orientation, { x: 1, y: 0, z: 0 }), f: s.rolledFrame };
+      });
+      const d = (a, b) => Math.hypot(a.x - b.x, a.y - b.y, a.z - b.z);
+      assert.ok(d(axes.n, axes.f.normal) <= 1e-14 && d(axes.t, axes.f.tangent) <= 1e-14, 'banked orientation = rolled frame');
+      // Drag the view: the azimuth follows the mouse (0.01 rad per canvas pixel) and the picture changes.
+      const box = await page.evaluate(() => {
+        const c = document.getElementById('coaster');
+        c.scrollIntoView();
+        const r = c.getBoundingClientRect();
+        return { x: r.left + c.clientLeft, y: r.top + c.clientTop, s: c.clientWidth / c.width };
+      });
+      await page.mouse.move(box.x + 300 * box.s, box.y + 200 * box.s);
+      await page.mouse.down();
+      for (let k = 1; k <= 10; ++k) await page.mouse.move(box.x + (300 + 8 * k) * box.s, box.y + 200 * box.s);
+      await page.mouse.up();
+      const dragged = await picture();
+      assert.ok(Math.abs(dragged.state.azimuth - (s.azimuth - 0.8)) <= 0.02, `azimuth ${s.azimuth} → ${dragged.state.azimuth}`);
+      assert.notStrictEqual(dragged.hash, before.hash, 'dragging turned the picture');
+      assert.ok(dragged.onTrack.filter((x) => x).length >= 20, 'the track is still drawn');
+      // Another frame mode: the rails and the car turn, the car stays on the path.
+      await page.select('#coaster-mode', 'rmf');
+      await page.evaluate(() => playground.coaster.pause(3.1));
+      const rmf = await picture();
+      assert.strictEqual(rmf.state.frameMode, 'rmf');
+      assert.strictEqual(rmf.state.roll, 0);
+      assert.notStrictEqual(rmf.hash, dragged.hash, 'the frame mode changed the picture');
+      assert.ok(Math.abs(rmf.state.u - s.u) <= 1e-12, 'the car kept its time');
+      const nb = dragged.state.rolledFrame.normal, nr = rmf.state.rolledFrame.normal;
+      assert.ok(d(nb, nr) > 0.05, 'the car\'s up changed with the mode');
+      await page.evaluate(() => playground.coaster.select('banked'));
     });
 
     await t.test('screenshot for the guide', async () => {

@@ -545,10 +545,172 @@ function keysDemo(g) {
   };
 }
 
+// ---- 3-D: a banked coaster -------------------------------------------------------------------
+
+function coasterDemo(g) {
+  const canvas = $('coaster');
+  const ctx = canvas.getContext('2d');
+  const V = (x, y, z) => ({ x, y, z });
+  const speed = 14, gauge = 0.9;  // m/s along the track, half the distance between the rails (m)
+  // A closed track (z up, metres): a straight, a vertical loop that drifts sideways by 3 m so
+  // that it clears itself, a climbing turn and a descent back to the start.
+  const knots = [[-24, -10, 2], [-8, -10, 2]];
+  for (let k = 0; k <= 8; ++k) {
+    const phi = (k * Math.PI) / 4;  // round the loop, 7 m in radius, centre 9 m up
+    knots.push([4 + 7 * Math.sin(phi), -10 + (3 * k) / 8, 9 - 7 * Math.cos(phi)]);
+  }
+  knots.push([18, -7, 2], [30, -2, 5], [32, 8, 9], [20, 14, 10], [0, 13, 7], [-16, 10, 4], [-30, 2, 2]);
+  const track = g.Path3.catmullRom(knots.flat(), 'centripetal', true);
+  const even = track.reparametrized();  // u proportional to arc length: the engine plays it as it is
+  const length = even.length();
+  const center = (() => { const b = even.bounds(); return V((b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2, b.min.z + 4); })();  // aimed low: most of the track is near the ground
+  const railUs = Float64Array.from({ length: 721 }, (_, i) => i / 720);
+  const tieUs = Float64Array.from({ length: Math.round(length / 1.5) }, (_, i) => i / Math.round(length / 1.5));
+  const engine = new g.Engine(0, 1);
+  const select = $('coaster-mode');
+  let frames = null, roll = null, rolled = null, rails = null, ties = null;
+  let azimuth = -1.25, elevation = 0.38, view = null, drag = null, time = 0;
+  const modes = { banked: 'reference_up', reference_up: 'reference_up', rmf: 'rmf', closed: 'closed', frenet: 'frenet' };
+  function orbit() {
+    if (view) view.delete();
+    view = g.View3.orbit(center, 52, azimuth, elevation, 0.75);
+  }
+  function build() {
+    for (const o of [frames, roll, rolled]) if (o) o.delete();
+    frames = new g.Frames3(even, { mode: modes[select.value] });
+    // Banked: the roll a rider at `speed` leans by in each turn (atan v²κ/g, up to 60°),
+    // averaged over 6 m so that it eases in and out; the other modes are the frames as they are.
+    roll = select.value === 'banked' ? g.bankTrack(even, { speed, maxAngle: Math.PI / 3, smoothing: 6 }) : new g.RollTrack([0, 0]);
+    rolled = new g.RolledFrames3(frames, roll);
+    // Rails: the track's centre line ± gauge along the banked binormal; ties across every 1.5 m.
+    const side = (f, us, s) => { const xyz = new Float64Array(3 * us.length); for (let i = 0; i < us.length; ++i) for (let c = 0; c < 3; ++c) xyz[3 * i + c] = f[12 * i + c] + s * f[12 * i + 9 + c]; return xyz; };
+    const railFrames = rolled.sample(railUs), tieFrames = rolled.sample(tieUs);
+    rails = [side(railFrames, railUs, gauge), side(railFrames, railUs, -gauge)];
+    ties = [side(tieFrames, tieUs, gauge), side(tieFrames, tieUs, -gauge)];
+    const keep = engine.used3() > 0 ? (() => { const a = engine.animation3(0); const t = a.time(); a.delete(); return t; })() : time;
+    engine.clear();
+    // The car: constant speed, its orientation the frame's (+x forward, +y up); the bank is
+    // added below as a turn about the forward axis.
+    engine.add3(even, { speed }, { repeat: -1 }, { align: 'frame', sharedFrames: frames, forward: '+x', up: '+y' });
+    const a = engine.animation3(0); a.seek(keep); a.delete();
+  }
+  // Picture coordinates (half height 1) to canvas pixels.
+  const scale = canvas.height * 0.5, cx = canvas.width / 2, cy = canvas.height / 2;
+  const toCanvas = (x, y) => [cx + x * scale, cy + y * scale];
+  function strokeProjected(xyz) {
+    const p = view.projectMany(xyz);
+    ctx.beginPath();
+    let pen = false;
+    for (let i = 0; i < p.length; i += 3) {
+      if (Number.isNaN(p[i])) { pen = false; continue; }
+      const [x, y] = toCanvas(p[i], p[i + 1]);
+      if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+      pen = true;
+    }
+    ctx.stroke();
+  }
+  // The car in its banked frame: slot orientation (the frame) times the roll about +x.
+  function car() {
+    const xyz = engine.positions3();
+    const a = engine.animation3(0);
+    const u = a.progress();
+    a.delete();
+    const frame = { w: xyz[3], x: xyz[4], y: xyz[5], z: xyz[6] };
+    const banked = g.quatMultiply(frame, g.quatFromAxisAngle(V(1, 0, 0), rolled.roll(u)));
+    return { u, position: V(xyz[0], xyz[1], xyz[2]), orientation: banked, roll: rolled.roll(u) };
+  }
+  function draw() {
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    // The ground: a grid on z = 0.
+    ctx.lineWidth = 1;
+    ctx.strokeStyle = '#ddd';
+    for (let k = -40; k <= 40; k += 8) {
+      strokeProjected([k, -24, 0, k, 24, 0]);
+      if (Math.abs(k) <= 24) strokeProjected([-40, k, 0, 40, k, 0]);
+    }
+    // Supports from the centre line down to the ground every few ties.
+    ctx.strokeStyle = '#ccc';
+    const centre = even.sample(tieUs);
+    for (let i = 0; i < centre.length; i += 3 * 6) strokeProjected([centre[i], centre[i + 1], centre[i + 2], centre[i], centre[i + 1], 0]);
+    ctx.strokeStyle = '#b5651d';
+    ctx.lineWidth = 1.5;
+    const [a, b] = [view.projectMany(ties[0]), view.projectMany(ties[1])];
+    ctx.beginPath();
+    for (let i = 0; i < a.length; i += 3) {
+      if (Number.isNaN(a[i]) || Number.isNaN(b[i])) continue;
+      ctx.moveTo(...toCanvas(a[i], a[i + 1]));
+      ctx.lineTo(...toCanvas(b[i], b[i + 1]));
+    }
+    ctx.stroke();
+    ctx.lineWidth = 2.5;
+    ctx.strokeStyle = colour.path;
+    for (const r of rails) strokeProjected(r);
+    // The car: a box 3 m long, 1.6 m wide, 1 m tall in its banked frame, and its up as a mast.
+    const c = car();
+    const T = g.quatRotate(c.orientation, V(1, 0, 0)), N = g.quatRotate(c.orientation, V(0, 1, 0)), B = g.quatRotate(c.orientation, V(0, 0, 1));
+    const at = (f, n, s) => V(c.position.x + f * T.x + n * N.x + s * B.x, c.position.y + f * T.y + n * N.y + s * B.y, c.position.z + f * T.z + n * N.z + s * B.z);
+    const box = [at(-1.5, 0.2, -0.8), at(1.5, 0.2, -0.8), at(1.5, 0.2, 0.8), at(-1.5, 0.2, 0.8),
+      at(-1.5, 1.2, -0.8), at(1.5, 1.2, -0.8), at(1.5, 1.2, 0.8), at(-1.5, 1.2, 0.8)];
+    const pts = view.projectMany(box.flatMap((p) => [p.x, p.y, p.z]));
+    const corner = (k) => toCanvas(pts[3 * k], pts[3 * k + 1]);
+    ctx.fillStyle = 'rgba(192,57,43,0.85)';
+    ctx.strokeStyle = colour.ink;
+    ctx.lineWidth = 1;
+    for (const face of [[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 5, 4], [3, 2, 6, 7], [1, 2, 6, 5]]) {
+      if (face.some((k) => Number.isNaN(pts[3 * k]))) continue;
+      ctx.beginPath();
+      face.forEach((k, i) => { const [x, y] = corner(k); if (i === 0) ctx.moveTo(x, y); else ctx.lineTo(x, y); });
+      ctx.closePath();
+      ctx.fill();
+      ctx.stroke();
+    }
+    ctx.strokeStyle = colour.handle;
+    ctx.lineWidth = 2;
+    const top = at(0, 4, 0);
+    strokeProjected([c.position.x, c.position.y, c.position.z, top.x, top.y, top.z]);
+    ctx.fillStyle = colour.ink;
+    ctx.font = '13px sans-serif';
+    ctx.fillText('drag to turn the view', 10, 18);
+    $('coaster-info').textContent = `track ${length.toFixed(2)} m · ${speed} m/s · u ${c.u.toFixed(4)} · roll ${(c.roll * 180 / Math.PI).toFixed(1)}° · ` +
+      `frame ${frames.mode()}${frames.mode() === 'reference_up' ? ` (${frames.coneCount()} vertical stretches)` : ''} · view azimuth ${azimuth.toFixed(2)}, elevation ${elevation.toFixed(2)}`;
+  }
+  canvas.addEventListener('pointerdown', (e) => { drag = canvasPoint(canvas, e); canvas.setPointerCapture(e.pointerId); });
+  canvas.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    const [x, y] = canvasPoint(canvas, e);
+    azimuth -= (x - drag[0]) * 0.01;
+    elevation = Math.max(-0.3, Math.min(1.4, elevation + (y - drag[1]) * 0.01));
+    drag = [x, y];
+    orbit();
+    draw();
+  });
+  canvas.addEventListener('pointerup', () => { drag = null; });
+  select.addEventListener('input', () => { build(); draw(); });
+  orbit();
+  build();
+  return {
+    canvas,
+    frame(dt) { engine.tick(dt); const a = engine.animation3(0); time = a.time(); a.delete(); draw(); },
+    select(mode) { select.value = mode; build(); draw(); },
+    pause(seconds) { const a = engine.animation3(0); a.seek(seconds); a.pause(); a.delete(); draw(); },
+    /** The car (engine slot, banked), the path and rolled frame at its progress, and where
+     *  24 vertices of a rail, evenly spaced along the track, land on the canvas. */
+    state() {
+      const c = car();
+      const f = rolled.frame(c.u);
+      const projected = view.projectMany(Float64Array.from({ length: 72 }, (_, k) => rails[0][3 * 30 * Math.floor(k / 3) + (k % 3)]));
+      const track = [];
+      for (let i = 0; i < projected.length; i += 3) if (!Number.isNaN(projected[i])) track.push(toCanvas(projected[i], projected[i + 1]));
+      return { mode: select.value, frameMode: frames.mode(), azimuth, elevation, u: c.u, position: c.position, expected: even.point(c.u),
+        orientation: c.orientation, roll: c.roll, rolledFrame: f, track };
+    },
+  };
+}
+
 // ---- start -----------------------------------------------------------------------------------
 
 createGrape().then((g) => {
-  const demos = { parabola: parabolaDemo(g), paths: pathsDemo(g), svg: svgDemo(g), chain: chainDemo(g), sprites: spritesDemo(g), keys: keysDemo(g) };
+  const demos = { parabola: parabolaDemo(g), paths: pathsDemo(g), svg: svgDemo(g), chain: chainDemo(g), sprites: spritesDemo(g), keys: keysDemo(g), coaster: coasterDemo(g) };
   let last = performance.now();
   let running = true;
   function loop(now) {

@@ -1,8 +1,9 @@
 // The engine for JavaScript. Animations made with `add` write x, y into slots of one array
 // that JavaScript reads as a single Float64Array view (slot k at [2k, 2k + 1]) after each
-// tick: one call per tick, none per animation. `animate` writes into a JavaScript object
-// instead (one call into JavaScript per update: for a few objects, not for thousands).
-#include "web_util.hpp"
+// tick: one call per tick, none per animation; `add3` does the same for 3-D animations
+// (web_engine.hpp, bind_3d.cpp). `animate` writes into a JavaScript object instead (one call
+// into JavaScript per update: for a few objects, not for thousands).
+#include "web_engine.hpp"
 
 #include <grape/anim.hpp>
 
@@ -14,7 +15,6 @@
 #include <string>
 
 namespace grape::web {
-namespace {
 
 AnimationDef animation_def(const val& o) {
     const char* where = "animation options";
@@ -39,66 +39,7 @@ AnimationDef animation_def(const val& o) {
     return def;
 }
 
-struct Slot {
-    double x = 0.0;
-    double y = 0.0;
-};
-static_assert(sizeof(Slot) == 2 * sizeof(double), "slots are viewed as 2n doubles");
-
-class WebEngine {
-public:
-    explicit WebEngine(unsigned capacity) : capacity_(capacity), slots_(new Slot[capacity]) {}
-
-    // A new animation writing into the next free slot; returns the slot index.
-    unsigned add(const Path& path, double duration, val options) {
-        if (used_ >= capacity_)
-            throw Error("Engine.add: all " + std::to_string(capacity_) + " slots are used (capacity is fixed at construction)");
-        Slot& slot = slots_[used_];
-        handles_.push_back(engine_.create_2d_animation(slot, path, duration, animation_def(options)));
-        return used_++;
-    }
-    Animation animation(unsigned slot) const {
-        if (slot >= used_) throw Error("Engine.animation: no slot " + std::to_string(slot) + " (" + std::to_string(used_) + " in use)");
-        return handles_[slot];
-    }
-    // An animation bound to a JavaScript object: target.x, target.y (and target.rotation with
-    // the heading option) after every change.
-    Animation animate(val target, const Path& path, double duration, val options) {
-        const AnimationDef def = animation_def(options);
-        const bool heading = def.heading;
-        return engine_.create_animation(path, duration, def, [target, heading](Vec2 p, double h) mutable {
-            target.set("x", p.x);
-            target.set("y", p.y);
-            if (heading) target.set("rotation", h);
-        });
-    }
-    // One callback per update: fn(x, y, heading).
-    Animation on_update(const Path& path, double duration, val options, val fn) {
-        return engine_.create_animation(path, duration, animation_def(options),
-                                        [fn](Vec2 p, double h) { fn(p.x, p.y, h); });
-    }
-    void tick(double dt) { engine_.tick(dt); }
-    val positions() const { return val(emscripten::typed_memory_view(2 * std::size_t(used_), &slots_[0].x)); }
-    unsigned used() const noexcept { return used_; }
-    unsigned capacity() const noexcept { return capacity_; }
-    double size() const noexcept { return double(engine_.size()); }
-    double storage_bytes() const noexcept { return double(engine_.storage_bytes()); }
-    // Kills every animation and frees every slot.
-    void clear() noexcept {
-        engine_.kill_all();
-        handles_.clear();
-        used_ = 0;
-    }
-    double on_tick(val fn) { return double(engine_.on_tick([fn](double dt) { fn(dt); })); }
-    void remove_tick_listener(double id) noexcept { engine_.remove_tick_listener(std::size_t(id)); }
-
-private:
-    unsigned capacity_;
-    unsigned used_ = 0;
-    std::unique_ptr<Slot[]> slots_;  // fixed: the engine holds pointers into it
-    std::vector<Animation> handles_;
-    Engine engine_;  // declared last: destroyed first, while its targets still exist
-};
+namespace {
 
 // Guarded members (C++ errors as JavaScript Errors).
 unsigned add(WebEngine& e, const Path& p, double d, val o) { return e.add(p, d, o); }
@@ -108,6 +49,10 @@ Animation animation(const WebEngine& e, unsigned slot) { return e.animation(slot
 Animation animate(WebEngine& e, val t, const Path& p, double d, val o) { return e.animate(t, p, d, o); }
 Animation on_update(WebEngine& e, const Path& p, double d, val o, val fn) { return e.on_update(p, d, o, fn); }
 void tick(WebEngine& e, double dt) { e.tick(dt); }
+unsigned add3(WebEngine& e, const Path3& p, val timing, val o, val m) { return e.add3(p, timing, o, m); }
+unsigned add3_timing(WebEngine& e, const Path3& p, val timing) { return e.add3(p, timing, val::undefined(), val::undefined()); }
+unsigned add3_options(WebEngine& e, const Path3& p, val timing, val o) { return e.add3(p, timing, o, val::undefined()); }
+Animation animation3(const WebEngine& e, unsigned slot) { return e.animation3(slot); }
 double bytes_per_animation() { return double(Engine::bytes_per_animation()); }
 
 void on_complete(const Animation& a, val fn) { a.on_complete([fn] { fn(); }); }
@@ -119,12 +64,20 @@ EMSCRIPTEN_BINDINGS(grape_anim) {
     using namespace emscripten;
     class_<WebEngine>("Engine")
         .constructor<unsigned>()
+        .constructor<unsigned, unsigned>()
         .function("add", guarded<&add>)
         .function("add", guarded<&add_default>)
         .function("animation", guarded<&animation>)
         .function("animate", guarded<&animate>)
         .function("animate", guarded<&animate_default>)
         .function("onUpdate", guarded<&on_update>)
+        .function("add3", guarded<&add3>)
+        .function("add3", guarded<&add3_timing>)
+        .function("add3", guarded<&add3_options>)
+        .function("animation3", guarded<&animation3>)
+        .function("positions3", method<&WebEngine::positions3>)
+        .function("used3", method<&WebEngine::used3>)
+        .function("capacity3", method<&WebEngine::capacity3>)
         .function("tick", guarded<&tick>)
         .function("positions", method<&WebEngine::positions>)
         .function("used", method<&WebEngine::used>)
@@ -140,6 +93,7 @@ EMSCRIPTEN_BINDINGS(grape_anim) {
         .function("waiting", method<&Animation::waiting>)
         .function("paused", method<&Animation::paused>)
         .function("value", method<&Animation::value>)
+        .function("value3", method<&Animation::value3>)
         .function("heading", method<&Animation::heading>)
         .function("progress", method<&Animation::progress>)
         .function("time", method<&Animation::time>)
