@@ -52,6 +52,7 @@ std::vector<std::unique_ptr<Tab>> make_tabs([[maybe_unused]] const Options& opti
     tabs.push_back(make_sprites_tab(options.sheet));
     tabs.push_back(make_keys_tab());
     tabs.push_back(make_draw_tab());
+    tabs.push_back(make_track3d_tab());
     return tabs;
 }
 

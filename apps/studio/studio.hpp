@@ -133,6 +133,7 @@ std::unique_ptr<Tab> make_paths_tab(const std::string& initial_path);
 std::unique_ptr<Tab> make_sprites_tab(const std::string& sheet_file);
 std::unique_ptr<Tab> make_keys_tab();
 std::unique_ptr<Tab> make_draw_tab();
+std::unique_ptr<Tab> make_track3d_tab();
 #ifdef GRAPE_STUDIO_DYNAMICS
 std::unique_ptr<Tab> make_constraint_tab();
 std::unique_ptr<Tab> make_chain_tab(int particles);

@@ -2,6 +2,7 @@
 //   png-check stats A.png                 size, distinct colours, share of the most common colour
 //   png-check diff A.png B.png [x0 y0 x1 y1]  share of pixels that differ (in the box), and their bounding box
 //   png-check pixel A.png X Y             the pixel's colour as RRGGBB
+//   png-check count A.png RRGGBB [x0 y0 x1 y1]  share of pixels of exactly that colour (in the box)
 // Exit status 0, or 2 with a message naming the file and the reason.
 #include <cairo.h>
 
@@ -109,6 +110,28 @@ int main(int argc, char** argv) {
         std::printf("%06X\n", unsigned(a.at(x, y)));
         return 0;
     }
-    std::fprintf(stderr, "usage: png-check stats A.png | diff A.png B.png [x0 y0 x1 y1] | pixel A.png X Y\n");
+    if (command == "count" && (argc == 4 || argc == 8)) {
+        const Png a(argv[2]);
+        char* end = nullptr;
+        const unsigned long colour = std::strtoul(argv[3], &end, 16);
+        if (std::string(argv[3]).size() != 6 || *end != '\0') {
+            std::fprintf(stderr, "png-check: colour must be RRGGBB in hexadecimal (got '%s')\n", argv[3]);
+            return 2;
+        }
+        int x0 = 0, y0 = 0, x1 = a.width, y1 = a.height;
+        if (argc == 8) {
+            x0 = std::clamp(number(argv[4], "x0"), 0, a.width);
+            y0 = std::clamp(number(argv[5], "y0"), 0, a.height);
+            x1 = std::clamp(number(argv[6], "x1"), x0, a.width);
+            y1 = std::clamp(number(argv[7], "y1"), y0, a.height);
+        }
+        long n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) n += a.at(x, y) == colour ? 1 : 0;
+        std::printf("share %.6f pixels %ld\n", double(n) / std::max(1.0, double(x1 - x0) * double(y1 - y0)), n);
+        return 0;
+    }
+    std::fprintf(stderr, "usage: png-check stats A.png | diff A.png B.png [x0 y0 x1 y1] | pixel A.png X Y | "
+                         "count A.png RRGGBB [x0 y0 x1 y1]\n");
     return 2;
 }
